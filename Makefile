@@ -1,0 +1,69 @@
+# ilahrs: the one entry point.
+#
+#   make              set up, regenerate, build every binding, run the conformance suite
+#   make test         every test (on a fresh clone: sets up and builds first)
+#   make generate     regenerate generated/ from spec/ilahrs.yaml
+#   make check        fail if generated/ differs from what the spec produces, or lint fails
+#   make conformance  run every binding against conformance/vectors (VECTORS=dir BINDINGS=a,b)
+#   make bench        benchmarks (timings live here, never in tests)
+#   make footprint    code and RAM size on a Cortex-M4
+#   make fuzz         longer fuzzing runs
+#
+# Each binding adds its own rules in mk/<name>.mk and appends to the lists below.
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := all
+
+ROOT := $(CURDIR)
+VENV := .venv
+PY := $(VENV)/bin/python
+PIP := $(VENV)/bin/pip
+PYTHON ?= python3
+BUILD := build
+
+SETUP_TARGETS :=
+BUILD_TARGETS :=
+LINT_TARGETS :=
+TEST_TARGETS :=
+BENCH_TARGETS :=
+FOOTPRINT_TARGETS :=
+FUZZ_TARGETS :=
+
+.PHONY: all setup generate build check lint test conformance bench footprint fuzz clean
+
+all: setup generate build conformance
+
+# --- Python environment: pinned packages in .venv -----------------------------------
+$(VENV)/.stamp: requirements.txt
+	$(PYTHON) -m venv $(VENV)
+	$(PIP) install --quiet --disable-pip-version-check -r requirements.txt
+	touch $@
+
+SETUP_TARGETS += $(VENV)/.stamp
+
+include $(sort $(wildcard mk/*.mk))
+
+setup: $(SETUP_TARGETS)
+
+generate: setup
+	$(PY) -m generator
+
+build: setup $(BUILD_TARGETS)
+
+lint: setup $(LINT_TARGETS)
+
+check: setup
+	$(PY) -m generator --check
+	$(MAKE) --no-print-directory lint
+
+test: setup build check conformance $(TEST_TARGETS)
+
+bench: setup build $(BENCH_TARGETS)
+
+footprint: setup $(FOOTPRINT_TARGETS)
+
+fuzz: setup build $(FUZZ_TARGETS)
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,118 @@
+"""Step 1 of the pipeline: read a spec file into plain data, remembering where each value was.
+
+The result is the parsed YAML (dicts, lists, scalars) plus a map from every path in it
+(a tuple of keys and list indices) to the line it starts on, so that validation errors
+can name file, line and path.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
+
+PathKey = tuple[str | int, ...]
+
+
+class SpecError(Exception):
+    """A spec that cannot be used: names the file, line and path of the problem."""
+
+    def __init__(self, file: str, line: int | None, path: PathKey, message: str) -> None:
+        self.file = file
+        self.line = line
+        self.path = path
+        self.message = message
+        super().__init__(str(self))
+
+    def __str__(self) -> str:
+        where = self.file if self.line is None else f"{self.file}:{self.line}"
+        return f"{where}: {format_path(self.path)}: {self.message}"
+
+
+def format_path(path: PathKey) -> str:
+    """Render a path as `payloads[3].fields[0].type`."""
+    text = ""
+    for part in path:
+        if isinstance(part, int):
+            text += f"[{part}]"
+        else:
+            text += f".{part}" if text else part
+    return text or "(top)"
+
+
+@dataclass(frozen=True)
+class LoadedSpec:
+    """A spec file as data, with its source name, hash and line map."""
+
+    data: dict[str, Any]
+    file: str
+    sha256: str
+    lines: dict[PathKey, int]
+
+    def line_of(self, path: PathKey) -> int | None:
+        """The line where `path`, or the nearest enclosing value, starts."""
+        while True:
+            if path in self.lines:
+                return self.lines[path]
+            if not path:
+                return None
+            path = path[:-1]
+
+    def error(self, path: PathKey, message: str) -> SpecError:
+        return SpecError(self.file, self.line_of(path), path, message)
+
+
+class _Loader(yaml.SafeLoader):
+    """SafeLoader whose scalars are plain YAML 1.1 values (no dates)."""
+
+
+# Keep "2014-03-11" a string: dates have no meaning in the spec.
+_Loader.yaml_implicit_resolvers = {
+    key: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:timestamp"]
+    for key, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+
+
+def _convert(node: Node, path: PathKey, lines: dict[PathKey, int], loader: _Loader, file: str) -> Any:
+    lines[path] = node.start_mark.line + 1
+    if isinstance(node, MappingNode):
+        result: dict[str, Any] = {}
+        for key_node, value_node in node.value:
+            key = loader.construct_object(key_node, deep=True)
+            if not isinstance(key, str):
+                raise SpecError(file, key_node.start_mark.line + 1, path, f"mapping key {key!r} is not a string")
+            if key in result:
+                raise SpecError(file, key_node.start_mark.line + 1, path, f"duplicate key {key!r}")
+            result[key] = _convert(value_node, (*path, key), lines, loader, file)
+        return result
+    if isinstance(node, SequenceNode):
+        return [_convert(item, (*path, index), lines, loader, file) for index, item in enumerate(node.value)]
+    assert isinstance(node, ScalarNode)
+    return loader.construct_object(node, deep=True)
+
+
+def load(path: Path, display_name: str | None = None) -> LoadedSpec:
+    """Read and parse `path`. `display_name` is what messages call the file."""
+    raw = path.read_bytes()
+    name = display_name if display_name is not None else path.as_posix()
+    loader = _Loader(raw.decode("utf-8"))
+    try:
+        try:
+            root = loader.get_single_node()
+        except yaml.MarkedYAMLError as exc:
+            mark = exc.problem_mark
+            line = mark.line + 1 if mark is not None else None
+            raise SpecError(name, line, (), f"not valid YAML: {exc.problem}") from exc
+        if root is None:
+            raise SpecError(name, 1, (), "the file is empty")
+        lines: dict[PathKey, int] = {}
+        data = _convert(root, (), lines, loader, name)
+    finally:
+        loader.dispose()
+    if not isinstance(data, dict):
+        raise SpecError(name, 1, (), "the top level must be a mapping")
+    return LoadedSpec(data=data, file=name, sha256=hashlib.sha256(raw).hexdigest(), lines=lines)

@@ -1,0 +1,706 @@
+"""Step 3 of the pipeline: the validated spec as typed, immutable objects.
+
+The model holds what the spec says, nothing computed about placement: offsets and sizes
+derived from declaration order are the layout step's (generator/layout.py), which returns
+the same objects with `offset` filled in. Templates read the laid-out model and never
+change it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from .load import LoadedSpec, PathKey
+
+
+@dataclass(frozen=True)
+class Primitive:
+    """A wire type a field may have."""
+
+    name: str
+    size: int | None  # None: the field's `length` gives it
+    kind: str  # "unsigned", "signed", "float", "char", "reserved"
+    min: int | None = None
+    max: int | None = None
+
+
+PRIMITIVES: dict[str, Primitive] = {
+    "u8": Primitive("u8", 1, "unsigned", 0, 0xFF),
+    "s8": Primitive("s8", 1, "signed", -0x80, 0x7F),
+    "u16": Primitive("u16", 2, "unsigned", 0, 0xFFFF),
+    "s16": Primitive("s16", 2, "signed", -0x8000, 0x7FFF),
+    "u32": Primitive("u32", 4, "unsigned", 0, 0xFFFFFFFF),
+    "s32": Primitive("s32", 4, "signed", -0x80000000, 0x7FFFFFFF),
+    "f32": Primitive("f32", 4, "float"),
+    "char": Primitive("char", None, "char"),
+    "reserved": Primitive("reserved", None, "reserved"),
+}
+
+FLOAT32_MAX = 3.4028234663852886e38
+
+
+@dataclass(frozen=True)
+class ErrorKind:
+    name: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Mode:
+    name: str
+    doc: str
+    icd: str = ""
+
+
+@dataclass(frozen=True)
+class Unit:
+    key: str
+    suffix: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Variant:
+    name: str
+    part_number: str
+    icd: str
+    values: tuple[tuple[str, int], ...]
+    erratum: str | None
+
+    def value(self, parameter: str) -> int:
+        value: int = dict(self.values)[parameter]
+        return value
+
+
+@dataclass(frozen=True)
+class VariantParameter:
+    name: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Scale:
+    """Engineering value = raw * multiplier / divisor; the divisor may be a variant parameter."""
+
+    multiplier: int
+    divisor: int | None
+    divisor_parameter: str | None
+
+    @property
+    def variant_dependent(self) -> bool:
+        return self.divisor_parameter is not None
+
+
+@dataclass(frozen=True)
+class Field:
+    name: str
+    icd_name: str
+    type: Primitive
+    size: int
+    doc: str
+    path: PathKey
+    unit: Unit | None = None
+    scale: Scale | None = None
+    range: tuple[float, float] | None = None
+    default: float | str | None = None
+    enum: str | None = None
+    encoding: str | None = None
+    multiplexed_count: int | None = None
+    multiplexed_quantities: tuple[str, ...] = ()
+    erratum: str | None = None
+    declared_offset: int | None = None
+    offset: int = -1  # filled in by layout
+
+    @property
+    def kind(self) -> str:
+        return self.type.kind
+
+    @property
+    def is_integer(self) -> bool:
+        return self.type.kind in ("unsigned", "signed")
+
+    @property
+    def is_float(self) -> bool:
+        return self.type.kind == "float"
+
+    @property
+    def is_numeric(self) -> bool:
+        return self.is_integer or self.is_float
+
+    @property
+    def is_bytes(self) -> bool:
+        return self.type.kind in ("char", "reserved")
+
+    @property
+    def end(self) -> int:
+        return self.offset + self.size
+
+    @property
+    def bounds(self) -> tuple[float, float] | None:
+        """The values a builder accepts: the declared range, or what the type holds."""
+        if self.range is not None:
+            return self.range
+        if self.is_integer:
+            assert self.type.min is not None and self.type.max is not None
+            return (self.type.min, self.type.max)
+        if self.is_float:
+            return (-FLOAT32_MAX, FLOAT32_MAX)
+        return None
+
+
+@dataclass(frozen=True)
+class Payload:
+    name: str
+    icd: str
+    title: str
+    direction: str
+    size: int
+    doc: str
+    fields: tuple[Field, ...]
+    path: PathKey
+    erratum: str | None = None
+
+    @property
+    def variant_dependent(self) -> bool:
+        return any(f.scale is not None and f.scale.variant_dependent for f in self.fields)
+
+    @property
+    def scaled_fields(self) -> tuple[Field, ...]:
+        return tuple(f for f in self.fields if f.scale is not None)
+
+    @property
+    def value_fields(self) -> tuple[Field, ...]:
+        """Fields that are not reserved: what a user sets and reads."""
+        return tuple(f for f in self.fields if f.kind != "reserved")
+
+    def field(self, name: str) -> Field:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        raise KeyError(name)
+
+
+@dataclass(frozen=True)
+class FormerName:
+    name: str
+    until_firmware: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Command:
+    name: str  # ICD spelling, e.g. "AHRScont1"
+    id: str  # lower_snake identifier, e.g. "ahrs_cont1"
+    code: int
+    icd: str
+    group: str
+    purpose: str
+    valid_in: tuple[str, ...]
+    response_kind: str  # ack, data, output, none
+    response_payloads: tuple[str, ...]
+    path: PathKey
+    starts_mode: str | None = None
+    starts_output: str | None = None
+    parameter_block: str | None = None
+    shares_code_with: str | None = None
+    former_names: tuple[FormerName, ...] = ()
+    erratum: str | None = None
+
+
+@dataclass(frozen=True)
+class MessageType:
+    name: str
+    value: int
+    doc: str
+
+
+@dataclass(frozen=True)
+class Frame:
+    icd: str
+    header: tuple[int, ...]
+    fields: tuple[Field, ...]  # the fields between header and payload
+    checksum: Field
+    checksum_doc: str
+    message_types: tuple[MessageType, ...]
+    min_length: int  # bounds of the message_length field a decoder accepts
+    max_length: int
+    path: PathKey
+    # Filled in by layout:
+    payload_offset: int = -1
+
+    def field(self, name: str) -> Field:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        raise KeyError(name)
+
+    def message_type(self, name: str) -> MessageType:
+        for t in self.message_types:
+            if t.name == name:
+                return t
+        raise KeyError(name)
+
+    @property
+    def header_size(self) -> int:
+        return len(self.header)
+
+    @property
+    def overhead(self) -> int:
+        """Bytes in a frame besides the payload."""
+        return self.payload_offset + self.checksum.size
+
+    @property
+    def length_bias(self) -> int:
+        """message_length minus payload size: the bytes after the header besides the payload."""
+        return self.overhead - self.header_size
+
+    @property
+    def min_payload(self) -> int:
+        return self.min_length - self.length_bias
+
+    @property
+    def max_payload(self) -> int:
+        return self.max_length - self.length_bias
+
+    @property
+    def min_frame_size(self) -> int:
+        return self.header_size + self.min_length
+
+    @property
+    def max_frame_size(self) -> int:
+        return self.header_size + self.max_length
+
+
+@dataclass(frozen=True)
+class EnumValue:
+    name: str
+    value: int
+    doc: str
+
+
+@dataclass(frozen=True)
+class Enum:
+    name: str
+    icd: str
+    values: tuple[EnumValue, ...]
+    external_above: int | None = None
+
+
+@dataclass(frozen=True)
+class DateTerm:
+    part: str
+    offset: int
+    divisor: int
+
+
+@dataclass(frozen=True)
+class DateEncoding:
+    doc: str
+    icd: str
+    terms: tuple[DateTerm, ...]
+    year_min: int
+    year_max: int
+
+
+@dataclass(frozen=True)
+class DeclinationEncoding:
+    doc: str
+    icd: str
+    min: float
+    max: float
+    compute_above: float
+    compute_value: float
+
+
+@dataclass(frozen=True)
+class CalibrationSuccessEncoding:
+    doc: str
+    icd: str
+    failed: int
+    no_estimate: int
+    accuracy_divisor: int
+
+
+@dataclass(frozen=True)
+class StatusFlag:
+    bit: int
+    name: str
+    icd_name: str
+    byte: str
+    doc: str
+
+    @property
+    def mask(self) -> int:
+        return 1 << self.bit
+
+
+@dataclass(frozen=True)
+class StatusMode:
+    name: str
+    bits: tuple[int, ...]  # one value per mode bit, in the order of StatusWord.mode_bits
+    doc: str
+
+
+@dataclass(frozen=True)
+class StatusWord:
+    icd: str
+    flags: tuple[StatusFlag, ...]
+    mode_bits: tuple[int, ...]
+    modes: tuple[StatusMode, ...]
+    other_mode: str
+    failure_mask: int
+    warning_mask: int
+
+    @property
+    def mode_mask(self) -> int:
+        mask = 0
+        for bit in self.mode_bits:
+            mask |= 1 << bit
+        return mask
+
+    def mode_pattern(self, mode: StatusMode) -> int:
+        """The USW bits (masked by mode_mask) that mean `mode`."""
+        value = 0
+        for bit, on in zip(self.mode_bits, mode.bits, strict=True):
+            if on:
+                value |= 1 << bit
+        return value
+
+
+@dataclass(frozen=True)
+class NmeaField:
+    name: str
+    icd_name: str
+    format: str  # decimal or hex
+    width: int
+    decimals: int
+    unit: str
+    min: int  # bounds of the scaled integer value
+    max: int
+    doc: str
+
+    @property
+    def divisor(self) -> int:
+        return int(10**self.decimals)
+
+
+@dataclass(frozen=True)
+class Nmea:
+    icd: str
+    identifier: str
+    template: str
+    max_rate_hz: int
+    max_length: int
+    fields: tuple[NmeaField, ...]
+    checksum_doc: str
+
+
+@dataclass(frozen=True)
+class Erratum:
+    id: str
+    where: str
+    says: str
+    chosen: str
+    why: str
+
+
+@dataclass(frozen=True)
+class Spec:
+    name: str
+    version: str
+    icd_title: str
+    icd_revision: str
+    icd_date: str
+    file: str
+    sha256: str
+    errors: tuple[ErrorKind, ...]
+    modes: tuple[Mode, ...]
+    units: tuple[Unit, ...]
+    variant_parameters: tuple[VariantParameter, ...]
+    variants: tuple[Variant, ...]
+    frame: Frame
+    commands: tuple[Command, ...]
+    ack_payload: str | None
+    ack_doc: str
+    payloads: tuple[Payload, ...]
+    enums: tuple[Enum, ...]
+    date: DateEncoding | None
+    declination: DeclinationEncoding | None
+    calibration_success: CalibrationSuccessEncoding | None
+    status_word: StatusWord | None
+    nmea: Nmea | None
+    errata: tuple[Erratum, ...]
+    state_machine: dict[str, Any] = field(default_factory=dict)
+
+    def payload(self, name: str) -> Payload:
+        for p in self.payloads:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+    def command(self, name: str) -> Command:
+        for c in self.commands:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+    def enum(self, name: str) -> Enum:
+        for e in self.enums:
+            if e.name == name:
+                return e
+        raise KeyError(name)
+
+    @property
+    def codes(self) -> tuple[int, ...]:
+        """Distinct command codes, ascending."""
+        return tuple(sorted({c.code for c in self.commands}))
+
+    def commands_with_code(self, code: int) -> tuple[Command, ...]:
+        """Commands sharing `code`, sorted by ICD name."""
+        return tuple(sorted((c for c in self.commands if c.code == code), key=lambda c: c.name))
+
+    @property
+    def parameter_blocks(self) -> tuple[Payload, ...]:
+        names: list[str] = []
+        for c in self.commands:
+            if c.parameter_block is not None and c.parameter_block not in names:
+                names.append(c.parameter_block)
+        return tuple(self.payload(n) for n in names)
+
+    @property
+    def max_message_size(self) -> int:
+        """The longest message a stream decoder must hold: a frame or a sentence."""
+        size = self.frame.max_frame_size
+        if self.nmea is not None:
+            size = max(size, self.nmea.max_length)
+        return size
+
+    @property
+    def short_hash(self) -> str:
+        return self.sha256[:16]
+
+
+def _field(raw: dict[str, Any], path: PathKey, units: dict[str, Unit]) -> Field:
+    primitive = PRIMITIVES[raw["type"]]
+    size = primitive.size if primitive.size is not None else int(raw["length"])
+    scale = None
+    if "scale" in raw:
+        divisor = raw["scale"].get("divisor", 1)
+        scale = Scale(
+            multiplier=int(raw["scale"].get("multiplier", 1)),
+            divisor=divisor if isinstance(divisor, int) else None,
+            divisor_parameter=divisor if isinstance(divisor, str) else None,
+        )
+    value_range = None
+    if "range" in raw:
+        value_range = (raw["range"][0], raw["range"][1])
+    multiplexed = raw.get("multiplexed")
+    return Field(
+        name=raw["name"],
+        icd_name=raw.get("icd_name", raw["name"]),
+        type=primitive,
+        size=size,
+        doc=" ".join(str(raw.get("doc", "")).split()),
+        path=path,
+        unit=units[raw["unit"]] if "unit" in raw else None,
+        scale=scale,
+        range=value_range,
+        default=raw.get("default"),
+        enum=raw.get("enum"),
+        encoding=raw.get("encoding"),
+        multiplexed_count=multiplexed["count"] if multiplexed else None,
+        multiplexed_quantities=tuple(multiplexed.get("quantities", ())) if multiplexed else (),
+        erratum=raw.get("erratum"),
+        declared_offset=raw.get("offset"),
+    )
+
+
+def _doc(value: Any) -> str:
+    return " ".join(str(value or "").split())
+
+
+def build(loaded: LoadedSpec) -> Spec:
+    """Turn validated data into the model. Call generator.validate.validate first."""
+    d = loaded.data
+    units = {key: Unit(key=key, suffix=u["suffix"], doc=_doc(u["doc"])) for key, u in d.get("units", {}).items()}
+    fr = d["frame"]
+    frame_fields = tuple(_field(f, ("frame", "fields", i), units) for i, f in enumerate(fr["fields"]))
+    checksum = _field(
+        {"name": "checksum", "icd_name": fr["checksum"].get("icd_name", "checksum"), "type": fr["checksum"]["type"]},
+        ("frame", "checksum"),
+        units,
+    )
+    frame = Frame(
+        icd=fr.get("icd", ""),
+        header=tuple(fr["header"]),
+        fields=frame_fields,
+        checksum=checksum,
+        checksum_doc=_doc(fr["checksum"].get("doc")),
+        message_types=tuple(MessageType(t["name"], t["value"], _doc(t.get("doc"))) for t in fr["message_types"]),
+        min_length=fr["message_length"]["min"],
+        max_length=fr["message_length"]["max"],
+        path=("frame",),
+    )
+    commands = tuple(
+        Command(
+            name=c["name"],
+            id=c["id"],
+            code=c["code"],
+            icd=str(c["icd"]),
+            group=c["group"],
+            purpose=_doc(c["purpose"]),
+            valid_in=tuple(c["valid_in"]),
+            response_kind=c["response"]["kind"],
+            response_payloads=tuple(c["response"].get("payloads", ())),
+            path=("commands", i),
+            starts_mode=c["starts"]["mode"] if "starts" in c else None,
+            starts_output=c["starts"]["output"] if "starts" in c else None,
+            parameter_block=c.get("parameter_block"),
+            shares_code_with=c.get("shares_code_with"),
+            former_names=tuple(
+                FormerName(f["name"], f.get("until_firmware", ""), _doc(f["doc"])) for f in c.get("former_names", ())
+            ),
+            erratum=c.get("erratum"),
+        )
+        for i, c in enumerate(d["commands"])
+    )
+    payloads = tuple(
+        Payload(
+            name=p["name"],
+            icd=p["icd"],
+            title=p["title"],
+            direction=p["direction"],
+            size=p["size"],
+            doc=_doc(p.get("doc")),
+            fields=tuple(_field(f, ("payloads", i, "fields", j), units) for j, f in enumerate(p["fields"])),
+            path=("payloads", i),
+            erratum=p.get("erratum"),
+        )
+        for i, p in enumerate(d["payloads"])
+    )
+    variants_raw = d.get("variants", {"parameters": {}, "list": []})
+    enc = d.get("encodings", {})
+    date = None
+    if "date" in enc:
+        e = enc["date"]
+        date = DateEncoding(
+            doc=_doc(e["doc"]),
+            icd=e.get("icd", ""),
+            terms=tuple(DateTerm(t["part"], t["offset"], t["divisor"]) for t in e["terms"]),
+            year_min=e["year_range"][0],
+            year_max=e["year_range"][1],
+        )
+    declination = None
+    if "declination" in enc:
+        e = enc["declination"]
+        declination = DeclinationEncoding(
+            doc=_doc(e["doc"]),
+            icd=e.get("icd", ""),
+            min=e["range"][0],
+            max=e["range"][1],
+            compute_above=e["compute_above"],
+            compute_value=e["compute_value"],
+        )
+    success = None
+    if "calibration_success" in enc:
+        e = enc["calibration_success"]
+        success = CalibrationSuccessEncoding(
+            doc=_doc(e["doc"]),
+            icd=e.get("icd", ""),
+            failed=e["failed"],
+            no_estimate=e["no_estimate"],
+            accuracy_divisor=e["accuracy_divisor"],
+        )
+    status_word = None
+    if "status_word" in d:
+        sw = d["status_word"]
+        flags = tuple(
+            StatusFlag(f["bit"], f["name"], f.get("icd_name", f["name"]), f["byte"], _doc(f.get("doc")))
+            for f in sw["flags"]
+        )
+        byte_masks = {
+            b["name"]: sum(1 << i for i in range(b["bits"][0], b["bits"][1] + 1)) for b in sw.get("bytes", [])
+        }
+        status_word = StatusWord(
+            icd=sw.get("icd", ""),
+            flags=flags,
+            mode_bits=tuple(sw["mode"]["bits"]),
+            modes=tuple(StatusMode(m["name"], tuple(m["bits"]), _doc(m.get("doc"))) for m in sw["mode"]["values"]),
+            other_mode=sw["mode"]["other"],
+            failure_mask=byte_masks.get("failure", 0),
+            warning_mask=byte_masks.get("warning", 0),
+        )
+    nmea = None
+    if "nmea" in d:
+        n = d["nmea"]
+        nmea = Nmea(
+            icd=n.get("icd", ""),
+            identifier=n["identifier"],
+            template=n.get("template", ""),
+            max_rate_hz=n["max_rate_hz"],
+            max_length=n["max_length"],
+            fields=tuple(
+                NmeaField(
+                    name=f["name"],
+                    icd_name=f.get("icd_name", f["name"]),
+                    format=f["format"],
+                    width=f["width"],
+                    decimals=f.get("decimals", 0),
+                    unit=f.get("unit", ""),
+                    min=int(f["range"][0]),
+                    max=int(f["range"][1]),
+                    doc=_doc(f.get("doc")),
+                )
+                for f in n["fields"]
+            ),
+            checksum_doc=_doc(n["checksum"].get("doc")),
+        )
+    ack = d.get("acknowledgement", {})
+    return Spec(
+        name=d["spec"]["name"],
+        version=d["spec"]["version"],
+        icd_title=d["spec"]["icd"]["title"],
+        icd_revision=str(d["spec"]["icd"]["revision"]),
+        icd_date=str(d["spec"]["icd"]["date"]),
+        file=loaded.file,
+        sha256=loaded.sha256,
+        errors=tuple(ErrorKind(e["name"], _doc(e["doc"])) for e in d["errors"]),
+        modes=tuple(Mode(m["name"], _doc(m["doc"]), m.get("icd", "")) for m in d.get("modes", [])),
+        units=tuple(units.values()),
+        variant_parameters=tuple(VariantParameter(k, _doc(v["doc"])) for k, v in variants_raw["parameters"].items()),
+        variants=tuple(
+            Variant(
+                name=v["name"],
+                part_number=v["part_number"],
+                icd=v.get("icd", ""),
+                values=tuple(sorted(v["values"].items())),
+                erratum=v.get("erratum"),
+            )
+            for v in variants_raw["list"]
+        ),
+        frame=frame,
+        commands=commands,
+        ack_payload=ack.get("payload"),
+        ack_doc=_doc(ack.get("doc")),
+        payloads=payloads,
+        enums=tuple(
+            Enum(
+                name=k,
+                icd=v.get("icd", ""),
+                values=tuple(EnumValue(x["name"], x["value"], _doc(x.get("doc"))) for x in v["values"]),
+                external_above=v.get("external_above"),
+            )
+            for k, v in d.get("enums", {}).items()
+        ),
+        date=date,
+        declination=declination,
+        calibration_success=success,
+        status_word=status_word,
+        nmea=nmea,
+        errata=tuple(
+            Erratum(e["id"], _doc(e["where"]), _doc(e["says"]), _doc(e["chosen"]), _doc(e["why"]))
+            for e in d.get("errata", [])
+        ),
+        state_machine=d.get("state_machine", {}),
+    )
