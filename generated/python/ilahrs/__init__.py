@@ -1,0 +1,121 @@
+# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""ilahrs: the Inertial Labs AHRS protocol (Inertial Labs AHRS Interface Control Document, rev 1.7).
+
+Frames, the commands of Table C.1, every payload table, the Unit Status Word, the $PAHR sentence
+and a sans-I/O stream decoder, generated from spec/ilahrs.yaml (spec 1.0.0).
+Standard library only.
+
+>>> import ilahrs
+>>> ilahrs.build_command("AHRScont3").hex(" ")
+'aa 55 00 00 07 00 83 8a 00'
+>>> ilahrs.decode_command(bytes.fromhex("AA 55 00 00 07 00 FE 05 01"))
+(254, ('ExitClb', 'Stop'))
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from .commands import (
+    CODES,
+    COMMANDS,
+    CommandInfo,
+    ack_for,
+    build_command,
+    build_parameter_block,
+    command_names,
+    decode_command,
+)
+from .encodings import (
+    DECLINATION_COMPUTE,
+    VARIANTS,
+    CalibrationStatusType,
+    CalibrationType,
+    Variant,
+    calibration_accuracy_deg,
+    calibration_succeeded,
+    declination_is_computed,
+    decode_date,
+    encode_date,
+)
+from .errors import ErrorKind, IlahrsError
+from .frame import MAX_FRAME_SIZE, Frame, MessageType, checksum
+from .nmea import PahrSentence
+from .payloads import (
+    PAYLOADS,
+    Acknowledgement,
+    AhrsParametersLoad,
+    AhrsParametersRead,
+    BitResult,
+    CalibrationParameters,
+    CalibrationResult,
+    CalibrationRunParameters,
+    CalibrationRunResult,
+    CalibrationStatus,
+    FieldInfo,
+    FirmwareVersion,
+    FullOutput,
+    InitialAlignment,
+    OrientationSensors,
+    Payload,
+    Quaternion,
+)
+from .status import UnitStatusWord, UswFlag, UswMode
+from .stream import MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
+
+SPEC_VERSION: Final = '1.0.0'
+SPEC_SHA256: Final = '40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d'
+
+__all__ = [
+    "CODES",
+    "COMMANDS",
+    "DECLINATION_COMPUTE",
+    "MAX_FRAME_SIZE",
+    "MAX_MESSAGE_SIZE",
+    "PAYLOADS",
+    "SPEC_SHA256",
+    "SPEC_VERSION",
+    "VARIANTS",
+    "Acknowledgement",
+    "AhrsParametersLoad",
+    "AhrsParametersRead",
+    "BitResult",
+    "CalibrationParameters",
+    "CalibrationResult",
+    "CalibrationRunParameters",
+    "CalibrationRunResult",
+    "CalibrationStatus",
+    "CalibrationStatusType",
+    "CalibrationType",
+    "CommandInfo",
+    "ErrorKind",
+    "FieldInfo",
+    "FirmwareVersion",
+    "Frame",
+    "FullOutput",
+    "IlahrsError",
+    "InitialAlignment",
+    "MessageType",
+    "OrientationSensors",
+    "PahrSentence",
+    "Payload",
+    "Quaternion",
+    "StreamDecoder",
+    "StreamEvent",
+    "UnitStatusWord",
+    "UswFlag",
+    "UswMode",
+    "Variant",
+    "ack_for",
+    "build_command",
+    "build_parameter_block",
+    "calibration_accuracy_deg",
+    "calibration_succeeded",
+    "checksum",
+    "command_names",
+    "declination_is_computed",
+    "decode_command",
+    "decode_date",
+    "encode_date",
+]

@@ -1,0 +1,155 @@
+# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""The binary frame (Table 6.2, Table 6.3) and its checksum.
+
+A frame is the header 0xAA 0x55, then message type, reserved byte and message
+length, then the payload, then the checksum. The message length counts every byte after the
+header; the checksum is the sum, modulo 2**16, of the bytes from the message type through the
+payload. Every multi-byte value is little-endian.
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass
+from enum import IntEnum
+from typing import Final
+
+from .errors import ErrorKind, IlahrsError
+
+__all__ = [
+    "CHECKSUM_SIZE",
+    "FRAME_OVERHEAD",
+    "HEADER",
+    "HEADER_SIZE",
+    "LENGTH_BIAS",
+    "MAX_FRAME_SIZE",
+    "MAX_MESSAGE_LENGTH",
+    "MAX_PAYLOAD_SIZE",
+    "MESSAGE_LENGTH_OFFSET",
+    "MESSAGE_TYPE_OFFSET",
+    "MIN_FRAME_SIZE",
+    "MIN_MESSAGE_LENGTH",
+    "MIN_PAYLOAD_SIZE",
+    "PAYLOAD_OFFSET",
+    "RESERVED_OFFSET",
+    "Frame",
+    "MessageType",
+    "checksum",
+]
+
+HEADER: Final = bytes((0xAA, 0x55,))
+"""The two bytes every frame starts with."""
+HEADER_SIZE: Final = 2
+MESSAGE_TYPE_OFFSET: Final = 2
+RESERVED_OFFSET: Final = 3
+MESSAGE_LENGTH_OFFSET: Final = 4
+PAYLOAD_OFFSET: Final = 6
+CHECKSUM_SIZE: Final = 2
+FRAME_OVERHEAD: Final = 8
+"""Bytes in a frame besides the payload."""
+LENGTH_BIAS: Final = 6
+"""message_length = payload size + LENGTH_BIAS."""
+MIN_MESSAGE_LENGTH: Final = 7
+"""Smallest message length a decoder accepts (E17)."""
+MAX_MESSAGE_LENGTH: Final = 58
+"""Largest message length a decoder accepts (E17)."""
+MIN_PAYLOAD_SIZE: Final = 1
+MAX_PAYLOAD_SIZE: Final = 52
+MIN_FRAME_SIZE: Final = 9
+MAX_FRAME_SIZE: Final = 60
+
+_LENGTH: Final = struct.Struct("<H")
+_PREFIX: Final = struct.Struct("<BBH")
+"""The fields between header and payload: message_type, reserved, message_length."""
+
+
+class MessageType(IntEnum):
+    """The message type byte (Table 6.2, Table 6.3)."""
+
+    COMMAND = 0
+    """A command from the host (one-byte payload holding the command code)."""
+    DATA = 1
+    """Data: every AHRS output, and the parameter blocks the host sends (E5)."""
+
+
+_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
+
+
+def checksum(data: bytes | bytearray | memoryview) -> int:
+    """The frame checksum of `data`: the sum of its bytes modulo 2**16 (E28)."""
+    return sum(data) & 0xFFFF
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """One frame: message type, payload and the reserved byte (E6: any value is accepted).
+
+    `build()` fills the length and the checksum; `Frame.parse()` checks them.
+    """
+
+    message_type: int
+    payload: bytes
+    reserved: int = 0
+
+    @classmethod
+    def parse(cls, data: bytes | bytearray | memoryview) -> Frame:
+        """Decode exactly one frame; raise IlahrsError (see spec/README.md for the order of checks)."""
+        data = bytes(data)
+        size = len(data)
+        for index, expected in enumerate(HEADER):
+            if size <= index:
+                raise IlahrsError(ErrorKind.TRUNCATED, size, None, "input ends inside the header")
+            if data[index] != expected:
+                detail = f"byte {data[index]:#04x}, expected {expected:#04x}"
+                raise IlahrsError(ErrorKind.BAD_HEADER, index, "header", detail)
+        if size < PAYLOAD_OFFSET:
+            raise IlahrsError(ErrorKind.TRUNCATED, size, None, "input ends before the message length")
+        message_type = data[MESSAGE_TYPE_OFFSET]
+        if message_type not in _MESSAGE_TYPES:
+            detail = f"message type {message_type}"
+            raise IlahrsError(ErrorKind.BAD_MESSAGE_TYPE, MESSAGE_TYPE_OFFSET, "message_type", detail)
+        (length,) = _LENGTH.unpack_from(data, MESSAGE_LENGTH_OFFSET)
+        if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH:
+            raise IlahrsError(
+                ErrorKind.BAD_LENGTH,
+                MESSAGE_LENGTH_OFFSET,
+                "message_length",
+                f"message length {length} outside {MIN_MESSAGE_LENGTH}..{MAX_MESSAGE_LENGTH}",
+            )
+        end = HEADER_SIZE + length
+        if size < end:
+            raise IlahrsError(ErrorKind.TRUNCATED, size, None, f"the frame needs {end} bytes")
+        at = end - CHECKSUM_SIZE
+        (sent,) = _LENGTH.unpack_from(data, at)
+        computed = sum(data[HEADER_SIZE:at]) & 0xFFFF
+        if sent != computed:
+            raise IlahrsError(ErrorKind.BAD_CHECKSUM, at, "checksum", f"sent {sent:#06x}, computed {computed:#06x}")
+        if size > end:
+            raise IlahrsError(ErrorKind.TRAILING_DATA, end, None, f"{size - end} bytes after the frame")
+        return cls(message_type, data[PAYLOAD_OFFSET:at], data[RESERVED_OFFSET])
+
+    def build(self) -> bytes:
+        """Encode the frame, filling in message length and checksum."""
+        if self.message_type not in _MESSAGE_TYPES:
+            raise IlahrsError(ErrorKind.BAD_MESSAGE_TYPE, None, "message_type", f"message type {self.message_type}")
+        if not 0 <= self.reserved <= 0xFF:
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "reserved", f"reserved byte {self.reserved}")
+        if not MIN_PAYLOAD_SIZE <= len(self.payload) <= MAX_PAYLOAD_SIZE:
+            raise IlahrsError(
+                ErrorKind.BAD_LENGTH,
+                None,
+                "payload",
+                f"payload of {len(self.payload)} bytes outside {MIN_PAYLOAD_SIZE}..{MAX_PAYLOAD_SIZE}",
+            )
+        body = self._body()
+        return HEADER + body + _LENGTH.pack(sum(body) & 0xFFFF)
+
+    def _body(self) -> bytes:
+        """The checksummed bytes: the fields between header and payload, then the payload."""
+        return _PREFIX.pack(self.message_type, self.reserved, len(self.payload) + LENGTH_BIAS) + self.payload
+
+    @property
+    def checksum(self) -> int:
+        """The checksum this frame carries on the wire."""
+        return sum(self._body()) & 0xFFFF

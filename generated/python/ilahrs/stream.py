@@ -1,0 +1,168 @@
+# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
+
+At each position a valid frame or a valid sentence is accepted and consumed; otherwise one byte
+is discarded and scanning resumes at the next byte. So a false header, an absurd length or a
+corrupted frame never costs a following good message, and the decoder never holds more than
+MAX_MESSAGE_SIZE bytes. See spec/README.md for the exact rules every binding follows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Final
+
+from .errors import IlahrsError
+from .frame import (
+    CHECKSUM_SIZE,
+    HEADER,
+    HEADER_SIZE,
+    MAX_MESSAGE_LENGTH,
+    MESSAGE_LENGTH_OFFSET,
+    MESSAGE_TYPE_OFFSET,
+    MIN_MESSAGE_LENGTH,
+    PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    Frame,
+    MessageType,
+)
+from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
+
+__all__ = ["MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+
+MAX_MESSAGE_SIZE: Final = 82
+"""The most bytes the decoder ever holds: the longest frame or sentence."""
+
+_NEED_MORE: Final = -1
+_INVALID: Final = 0
+_FRAME_START: Final = HEADER[0]
+_SENTENCE_START: Final = PREFIX[0]
+_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
+_CR: Final = 0x0D
+_LF: Final = 0x0A
+
+
+@dataclass(frozen=True, slots=True)
+class StreamEvent:
+    """An accepted message: its bytes as received, and the decoded frame or sentence."""
+
+    raw: bytes
+    frame: Frame | None = None
+    sentence: PahrSentence | None = None
+
+
+class StreamDecoder:
+    """Feed bytes in chunks of any size; get accepted messages back in order.
+
+    >>> decoder = StreamDecoder()
+    >>> [e.frame.payload for e in decoder.feed(bytes.fromhex("00 AA 55 00 00 07 00 80 87 00"))]
+    [b'\\x80']
+    >>> decoder.discarded
+    1
+    """
+
+    __slots__ = ("_buffer", "discarded")
+
+    def __init__(self) -> None:
+        self._buffer = bytearray()
+        self.discarded = 0
+        """Input bytes that belong to no accepted message."""
+
+    @property
+    def pending(self) -> int:
+        """Bytes held while waiting to decide on a possible message."""
+        return len(self._buffer)
+
+    def feed(self, data: bytes | bytearray | memoryview) -> list[StreamEvent]:
+        """Add bytes; return the messages they complete, in order."""
+        self._buffer += data
+        return self._scan(final=False)
+
+    def finish(self) -> list[StreamEvent]:
+        """The input has ended: decide on every byte still held."""
+        return self._scan(final=True)
+
+    def _scan(self, final: bool) -> list[StreamEvent]:
+        buffer = self._buffer
+        events: list[StreamEvent] = []
+        size = len(buffer)
+        pos = 0
+        while pos < size:
+            first = buffer[pos]
+            if first == _FRAME_START:
+                used, event = _frame_at(buffer, pos, size)
+            elif first == _SENTENCE_START:
+                used, event = _sentence_at(buffer, pos, size)
+            else:
+                following = _next_start(buffer, pos + 1, size)
+                self.discarded += following - pos
+                pos = following
+                continue
+            if event is not None:
+                events.append(event)
+                pos += used
+            elif used == _INVALID or final:
+                self.discarded += 1
+                pos += 1
+            else:
+                break
+        del buffer[:pos]
+        return events
+
+
+def _next_start(buffer: bytearray, pos: int, size: int) -> int:
+    """The next position that may start a message, or `size`."""
+    frame = buffer.find(_FRAME_START, pos)
+    sentence = buffer.find(_SENTENCE_START, pos)
+    candidates = [p for p in (frame, sentence) if p >= 0]
+    return min(candidates) if candidates else size
+
+
+def _frame_at(buffer: bytearray, pos: int, size: int) -> tuple[int, StreamEvent | None]:
+    available = size - pos
+    for index in range(1, HEADER_SIZE):
+        if available <= index:
+            return _NEED_MORE, None
+        if buffer[pos + index] != HEADER[index]:
+            return _INVALID, None
+    if available < PAYLOAD_OFFSET:
+        return _NEED_MORE, None
+    if buffer[pos + MESSAGE_TYPE_OFFSET] not in _MESSAGE_TYPES:
+        return _INVALID, None
+    length = buffer[pos + MESSAGE_LENGTH_OFFSET] | buffer[pos + MESSAGE_LENGTH_OFFSET + 1] << 8
+    if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH:
+        return _INVALID, None
+    total = HEADER_SIZE + length
+    if available < total:
+        return _NEED_MORE, None
+    at = pos + total - CHECKSUM_SIZE
+    if sum(buffer[pos + HEADER_SIZE : at]) & 0xFFFF != buffer[at] | buffer[at + 1] << 8:
+        return _INVALID, None
+    raw = bytes(buffer[pos : pos + total])
+    frame = Frame(raw[MESSAGE_TYPE_OFFSET], raw[PAYLOAD_OFFSET : total - CHECKSUM_SIZE], raw[RESERVED_OFFSET])
+    return total, StreamEvent(raw, frame=frame)
+
+
+def _sentence_at(buffer: bytearray, pos: int, size: int) -> tuple[int, StreamEvent | None]:
+    limit = min(size, pos + MAX_SENTENCE_LENGTH)
+    end = buffer.find(_LF, pos, limit)
+    if end < 0:
+        if size - pos >= MAX_SENTENCE_LENGTH:
+            return _INVALID, None
+        # Reject early what can never become a sentence: a wrong identifier or a byte that
+        # is not printable (CR only directly before LF). Waiting would reach the same answer.
+        head = bytes(buffer[pos : min(limit, pos + len(PREFIX))])
+        if not PREFIX.startswith(head):
+            return _INVALID, None
+        for index in range(pos + 1, limit):
+            byte = buffer[index]
+            if not 0x20 <= byte <= 0x7E and not (byte == _CR and index == limit - 1):
+                return _INVALID, None
+        return _NEED_MORE, None
+    raw = bytes(buffer[pos : end + 1])
+    try:
+        sentence = PahrSentence.parse(raw)
+    except IlahrsError:
+        return _INVALID, None
+    return len(raw), StreamEvent(raw, sentence=sentence)
