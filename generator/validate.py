@@ -306,7 +306,7 @@ def validate(spec: LoadedSpec) -> None:
                 raise spec.error((*path, "shares_code_with"), f"{partner!r} must declare shares_code_with: {c['name']}")
         for k in others:
             other = d["commands"][k]
-            if partner != other["name"]:
+            if k < i and partner != other["name"]:
                 raise spec.error(
                     (*path, "code"),
                     f"duplicate command code {c['code']:#04x} ({c['name']} and {other['name']})"

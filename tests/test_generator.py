@@ -1,0 +1,82 @@
+"""The generator: invalid specs are rejected with file, line and path; output is reproducible."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from generator import ROOT, build_spec, naming
+from generator.load import SpecError
+from generator.render import render, target_names
+from generator.targets.python import filters as py_filters
+
+INVALID = sorted((ROOT / "spec" / "invalid").glob("*.yaml"))
+
+
+def test_the_spec_is_valid() -> None:
+    spec = build_spec()
+    assert len(spec.commands) == 26
+    assert len(spec.payloads) == 14
+    assert spec.frame.max_frame_size == 60
+    assert spec.max_message_size == 82
+
+
+def test_there_are_invalid_specs() -> None:
+    assert len(INVALID) >= 15
+
+
+@pytest.mark.parametrize("path", INVALID, ids=[p.stem for p in INVALID])
+def test_invalid_spec_is_rejected_with_location(path: Path) -> None:
+    first = path.read_text(encoding="utf-8").splitlines()[0]
+    assert first.startswith("# expect: "), f"{path.name} must start with '# expect: <message>'"
+    expected = first.removeprefix("# expect: ")
+    with pytest.raises(SpecError) as info:
+        build_spec(path)
+    message = str(info.value)
+    assert expected in message
+    match = re.match(r"^spec/invalid/[a-z_]+\.yaml:(\d+): ", message)
+    assert match, f"no file:line in {message!r}"
+    line = int(match.group(1))
+    lines = path.read_text(encoding="utf-8").splitlines()
+    assert 1 <= line <= len(lines)
+    # The line named is where the offending value (or its enclosing item) is written.
+    last = info.value.path[-1] if info.value.path else None
+    if isinstance(last, str) and last not in ("name",):
+        assert last in lines[line - 1] or last in " ".join(lines[line - 2 : line + 1]), (line, lines[line - 1])
+
+
+def test_output_is_reproducible_and_names_the_spec() -> None:
+    spec = build_spec()
+    first = render(spec)
+    second = render(build_spec())
+    assert first == second
+    for path, text in first.items():
+        assert str(ROOT) not in text, f"{path} contains an absolute path"
+        if path.endswith((".py", ".h", ".c", ".rs", ".ksy", ".toml", ".md", ".txt")):
+            assert spec.sha256 in text, f"{path} does not carry the spec hash"
+
+
+def test_every_target_renders() -> None:
+    spec = build_spec()
+    for target in target_names():
+        assert render(spec, [target]), target
+
+
+def test_naming() -> None:
+    assert naming.pascal("orientation_sensors") == "OrientationSensors"
+    assert naming.upper("bad_checksum") == "BAD_CHECKSUM"
+    assert naming.hex_byte(0xFE) == "0xFE"
+    assert naming.wrap("a b c", 3) == ["a b", "c"]
+
+
+def test_python_filters() -> None:
+    spec = build_spec()
+    payload = spec.payload("orientation_sensors")
+    assert py_filters.struct_format(payload.fields) == "<Hhhhhhhhhhhh4sHHh"
+    assert py_filters.accessor(payload.field("gyro_x")) == "gyro_x_dps"
+    assert py_filters.scale_expr(payload.field("gyro_x"), "r") == "r / variant.kg"
+    assert py_filters.scale_expr(payload.field("mag_x"), "r") == "float(r * 10)"
+    assert py_filters.all_sorted(["b", "A_B", "Cls", "a2", "a10"]) == ["A_B", "Cls", "a2", "a10", "b"]
+    assert py_filters.tuple_literal(["x"]) == "('x',)"
