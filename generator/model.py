@@ -137,6 +137,19 @@ class Field:
         return self.offset + self.size
 
     @property
+    def default_value(self) -> float | str | None:
+        """What a builder uses when no value is given: the spec's default, else 0 (or zeros,
+        or empty text) if that is allowed, else the lowest allowed value."""
+        if self.default is not None:
+            return self.default
+        if not self.is_numeric:
+            return None
+        bounds = self.bounds
+        if bounds is not None and not bounds[0] <= 0 <= bounds[1]:
+            return bounds[0]
+        return 0
+
+    @property
     def bounds(self) -> tuple[float, float] | None:
         """The values a builder accepts: the declared range, or what the type holds."""
         if self.range is not None:
@@ -481,7 +494,9 @@ class Spec:
         return self.sha256[:16]
 
 
-def _field(raw: dict[str, Any], path: PathKey, units: dict[str, Unit]) -> Field:
+def _field(
+    raw: dict[str, Any], path: PathKey, units: dict[str, Unit], date_years: tuple[int, int] | None = None
+) -> Field:
     primitive = PRIMITIVES[raw["type"]]
     size = primitive.size if primitive.size is not None else int(raw["length"])
     scale = None
@@ -495,6 +510,9 @@ def _field(raw: dict[str, Any], path: PathKey, units: dict[str, Unit]) -> Field:
     value_range = None
     if "range" in raw:
         value_range = (raw["range"][0], raw["range"][1])
+    elif raw.get("encoding") == "date" and date_years is not None:
+        # A date float lies between the first and the day after the last year of the encoding.
+        value_range = (float(date_years[0]), float(date_years[1] + 1))
     multiplexed = raw.get("multiplexed")
     return Field(
         name=raw["name"],
@@ -565,6 +583,8 @@ def build(loaded: LoadedSpec) -> Spec:
         )
         for i, c in enumerate(d["commands"])
     )
+    date_raw = d.get("encodings", {}).get("date")
+    date_years = (date_raw["year_range"][0], date_raw["year_range"][1]) if date_raw else None
     payloads = tuple(
         Payload(
             name=p["name"],
@@ -573,7 +593,7 @@ def build(loaded: LoadedSpec) -> Spec:
             direction=p["direction"],
             size=p["size"],
             doc=_doc(p.get("doc")),
-            fields=tuple(_field(f, ("payloads", i, "fields", j), units) for j, f in enumerate(p["fields"])),
+            fields=tuple(_field(f, ("payloads", i, "fields", j), units, date_years) for j, f in enumerate(p["fields"])),
             path=("payloads", i),
             erratum=p.get("erratum"),
         )

@@ -19,8 +19,6 @@ from types import MappingProxyType
 from typing import Any, ClassVar, Final, Protocol, Self
 
 from .encodings import (
-    DATE_YEAR_MAX,
-    DATE_YEAR_MIN,
     Variant,
     calibration_accuracy_deg,
     declination_is_computed,
@@ -121,10 +119,6 @@ def _check_declination(value: object, name: str, offset: int) -> None:
     if not declination_is_valid(value):
         detail = f"{value!r} is neither a declination nor the compute request"
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, detail)
-
-
-def _check_date(value: object, name: str, offset: int) -> None:
-    _check_float(value, float(DATE_YEAR_MIN), float(DATE_YEAR_MAX + 1), name, offset)
 
 
 def _check_text(value: object, size: int, name: str, offset: int) -> None:
@@ -927,8 +921,9 @@ class AhrsParametersLoad:
     """Longitude. (f32, at offset 12, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 16, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 0.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, ICD: Date (Year, Month, Day))"""
+    date: float = 1900.0
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range 1900.0..2200.0, ICD:
+    Date (Year, Month, Day))"""
     alignment_angle_a1: float = 0.0
     """Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane,
     clockwise positive (Appendix B). (f32, at offset 24, unit deg, range -360..360, ICD: Alignment angle
@@ -963,7 +958,7 @@ class AhrsParametersLoad:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_date(self.date, 'date', 20)
+        _check_float(self.date, 1900.0, 2200.0, 'date', 20)
         _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
         _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
         _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
@@ -1047,9 +1042,9 @@ class AhrsParametersRead:
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<HHffffffff8s6s")
 
-    update_rate: int = 0
+    update_rate: int = 1
     """Output data rate. (u16, at offset 0, unit Hz, range 1..100, ICD: Measurement rate; erratum E24)"""
-    alignment_time: int = 0
+    alignment_time: int = 1
     """Initial alignment duration. (u16, at offset 2, unit s, range 1..65535, ICD: Initial alignment time;
     erratum E30)"""
     declination: float = 0.0
@@ -1061,8 +1056,9 @@ class AhrsParametersRead:
     """Longitude. (f32, at offset 12, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 16, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 0.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, ICD: Date (Year, Month, Day))"""
+    date: float = 1900.0
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range 1900.0..2200.0, ICD:
+    Date (Year, Month, Day))"""
     alignment_angle_a1: float = 0.0
     """Mounting angle 1 (Appendix B). (f32, at offset 24, unit deg, range -360..360, ICD: Alignment angle A1;
     erratum E31)"""
@@ -1100,7 +1096,7 @@ class AhrsParametersRead:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_date(self.date, 'date', 20)
+        _check_float(self.date, 1900.0, 2200.0, 'date', 20)
         _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
         _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
         _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
@@ -1318,7 +1314,7 @@ class CalibrationParameters:
     reference_azimuth: float = 0.0
     """Reference azimuth (6.4.8); no influence on 2D calibration. (f32, at offset 0, unit deg, range
     -360..360, ICD: Reserved; erratum E8)"""
-    accumulation_time: int = 0
+    accumulation_time: int = 1
     """Data accumulation time of one run. (u16, at offset 4, unit s, range 1..65535, ICD: Time of data
     accumulation in one run; erratum E30)"""
     latitude: float = 0.0
@@ -1327,8 +1323,9 @@ class CalibrationParameters:
     """Longitude. (f32, at offset 10, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 14, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 0.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, ICD: Date (Year, Month, Day))"""
+    date: float = 1900.0
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, range 1900.0..2200.0, ICD:
+    Date (Year, Month, Day))"""
 
     @classmethod
     def parse(cls, data: Buffer) -> Self:
@@ -1350,7 +1347,7 @@ class CalibrationParameters:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 6)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 10)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 14)
-        _check_date(self.date, 'date', 18)
+        _check_float(self.date, 1900.0, 2200.0, 'date', 18)
 
     def build(self) -> bytes:
         """Encode the 22-byte payload; refuse out-of-range values."""
@@ -1419,7 +1416,7 @@ class CalibrationResult:
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<BBBBffffffffffff")
 
-    calibration_type: int = 0
+    calibration_type: int = 1
     """1 for 2D, 2 for 2D-2T, 3 for 3D calibration. (u8, at offset 0, range 1..3, ICD: Type of calibration)"""
     runs_used: int = 0
     """Number of calibration runs used. (u8, at offset 1, ICD: Number of used calibration runs)"""
@@ -1578,9 +1575,9 @@ class CalibrationRunResult:
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<BBBB4sff12sH")
 
-    calibration_type: int = 0
+    calibration_type: int = 2
     """2 for 2D-2T calibration. (u8, at offset 0, range 2..2, ICD: Type of calibration)"""
-    run: int = 0
+    run: int = 1
     """Number of this run (1, 2, ...). (u8, at offset 1, range 1..255, ICD: Calibration run)"""
     data_used: int = 0
     """Percent of data points used. (u8, at offset 2, unit percent, range 0..100, ICD: Percent of used data

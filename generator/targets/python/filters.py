@@ -39,9 +39,9 @@ def py_default(field: Field) -> str:
         return f'b"\\x00" * {field.size}'
     if field.kind == "char":
         return repr(field.default if isinstance(field.default, str) else "")
-    if field.default is not None:
-        return repr(float(field.default)) if field.is_float else repr(int(field.default))
-    return "0.0" if field.is_float else "0"
+    value = field.default_value
+    assert isinstance(value, (int, float))
+    return repr(float(value)) if field.is_float else repr(int(value))
 
 
 def py_number(value: float, is_float: bool) -> str:
