@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
 # Do not edit: change the spec or the generator and run `make generate`.
 #
 # Kaitai Struct description of the Inertial Labs AHRS Interface Control Document, revision 1.7
@@ -190,11 +190,11 @@ types:
         doc: |
           Bit 14 (warning byte): Temperature outside the operating range.
       any_failure:
-        value: 'value & 0x00FF != 0'
-        doc: Any bit of the failure byte is set.
+        value: 'value & 0x007F != 0'
+        doc: Any failure flag is set (the mode bits do not count).
       any_warning:
-        value: 'value & 0xFF00 != 0'
-        doc: Any bit of the warning byte is set.
+        value: 'value & 0x7F00 != 0'
+        doc: Any warning flag is set (the mode bits do not count).
       mode_readiness:
         value: 'value & 0x8080 == 0x0000'
         doc: |
@@ -1350,7 +1350,8 @@ enums:
       id: low_power_on
       -orig-id: 'LowPowerOn'
       doc: |
-        LowPowerOn (6.3.8): Switch to the low-power Sleep mode. Valid in idle.
+        LowPowerOn (6.3.8): Switch to the low-power Sleep mode. Valid in idle, continuous,
+        on_request.
     0xBA:
       id: low_power_off
       -orig-id: 'LowPowerOff'

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from generator.model import Command, Field, Frame, Payload, Spec
+from generator.model import Command, Field, Frame, Payload, Spec, StatusWord
 
 # Wire types as Kaitai spells them (the byte order comes from meta/endian).
 KSY_TYPES = {"u8": "u1", "s8": "s1", "u16": "u2", "s16": "s2", "u32": "u4", "s32": "s4", "f32": "f4"}
@@ -62,6 +62,15 @@ def message_type_check(field: Field, frame: Frame) -> str:
     """
     known = " or ".join(f"_ == message_type::{ksy_id(t.name)}" for t in frame.message_types)
     return f"_io.size - _io.pos < {bytes_after(field, frame)} or {known}"
+
+
+def flags_mask(sw: StatusWord, byte: str) -> int:
+    """The flags of one status byte (`failure`, `warning`), without the mode bits it shares."""
+    mask = 0
+    for flag in sw.flags:
+        if flag.byte == byte:
+            mask |= flag.mask
+    return mask
 
 
 def checksum_modulus(frame: Frame) -> int:
@@ -260,6 +269,7 @@ FILTERS = {
     "error_kind": error_kind,
     "bytes_after": bytes_after,
     "checksum_modulus": checksum_modulus,
+    "flags_mask": flags_mask,
     "message_type_check": message_type_check,
     "engineering_doc": engineering_doc,
     "engineering_id": engineering_id,
