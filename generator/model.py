@@ -8,7 +8,7 @@ change it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from .load import LoadedSpec, PathKey
@@ -410,6 +410,86 @@ class Nmea:
 
 
 @dataclass(frozen=True)
+class SmState:
+    """A state of the device: its operating mode, and what it waits for."""
+
+    name: str
+    mode: str
+    doc: str
+    expects: str | None = None  # the parameter block (payload name) this state waits for
+    timer: str | None = None  # alignment, accumulation or output
+    erratum: str | None = None
+
+
+@dataclass(frozen=True)
+class SmEvent:
+    """An event besides the commands: a message that is not a command, or a timer."""
+
+    name: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Transition:
+    """One cell of the table: in `state`, on `event`, go to `to` and send `send`."""
+
+    state: str
+    event: str  # a command name or an SmEvent name
+    to: str
+    send: tuple[str, ...]
+    wildcard: bool = False  # from a `*` row
+    firmware_before: str | None = None  # only on firmware older than this
+    erratum: str | None = None
+
+
+TIMER_EVENTS = {"alignment": "alignment_done", "accumulation": "accumulation_done", "output": "output_due"}
+
+
+@dataclass(frozen=True)
+class StateMachine:
+    icd: str
+    initial: str
+    states: tuple[SmState, ...]
+    events: tuple[SmEvent, ...]
+    transitions: tuple[Transition, ...]  # expanded: one per (state, event), explicit rows first
+    parameter_block_timeout_s: float
+    default_alignment_time_s: float
+    default_update_rate_hz: float
+    result_delay_s: float
+
+    def state(self, name: str) -> SmState:
+        for s in self.states:
+            if s.name == name:
+                return s
+        raise KeyError(name)
+
+    @property
+    def sends(self) -> tuple[str, ...]:
+        """Every kind of answer the table uses, in first-use order."""
+        seen: list[str] = []
+        for t in self.transitions:
+            for item in t.send:
+                if item not in seen:
+                    seen.append(item)
+        return tuple(seen)
+
+    def lookup(self, state: str, event: str, legacy: bool = False) -> Transition | None:
+        """The transition for `event` in `state`, or None (ignored). `legacy`: firmware older than
+        a row's `firmware_before` (such rows take precedence there)."""
+        if legacy:
+            for t in self.transitions:
+                if t.state == state and t.event == event and t.firmware_before is not None:
+                    return t
+        for t in self.transitions:
+            if t.state == state and t.event == event and t.firmware_before is None:
+                return t
+        return None
+
+    def rows(self, state: str) -> tuple[Transition, ...]:
+        return tuple(t for t in self.transitions if t.state == state)
+
+
+@dataclass(frozen=True)
 class Erratum:
     id: str
     where: str
@@ -444,7 +524,7 @@ class Spec:
     status_word: StatusWord | None
     nmea: Nmea | None
     errata: tuple[Erratum, ...]
-    state_machine: dict[str, Any] = field(default_factory=dict)
+    state_machine: StateMachine | None = None
 
     def payload(self, name: str) -> Payload:
         for p in self.payloads:
@@ -468,6 +548,14 @@ class Spec:
     def codes(self) -> tuple[int, ...]:
         """Distinct command codes, ascending."""
         return tuple(sorted({c.code for c in self.commands}))
+
+    def command_in_mode(self, code: int, mode: str) -> Command | None:
+        """The command a code means in `mode`: of the names sharing the code, the one valid there (E14)."""
+        named = self.commands_with_code(code)
+        for c in named:
+            if mode in c.valid_in:
+                return c
+        return named[0] if named else None
 
     def commands_with_code(self, code: int) -> tuple[Command, ...]:
         """Commands sharing `code`, sorted by ICD name."""
@@ -722,5 +810,67 @@ def build(loaded: LoadedSpec) -> Spec:
             Erratum(e["id"], _doc(e["where"]), _doc(e["says"]), _doc(e["chosen"]), _doc(e["why"]))
             for e in d.get("errata", [])
         ),
-        state_machine=d.get("state_machine", {}),
+        state_machine=_state_machine(d["state_machine"], [c["name"] for c in d["commands"]])
+        if "state_machine" in d
+        else None,
+    )
+
+
+def _state_machine(raw: dict[str, Any], commands: list[str]) -> StateMachine:
+    """Expand the rows of the spec into one transition per (state, event)."""
+    explicit: list[Transition] = []
+    wildcards: list[tuple[str, dict[str, Any]]] = []
+    for row in raw["transitions"]:
+        for state in row["from"]:
+            for event in row["when"]:
+                if event == "*":
+                    wildcards.append((state, row))
+                    continue
+                explicit.append(
+                    Transition(
+                        state=state,
+                        event=event,
+                        to=state if row["to"] == "same" else row["to"],
+                        send=tuple(row["send"]),
+                        firmware_before=row.get("firmware_before"),
+                        erratum=row.get("erratum"),
+                    )
+                )
+    covered = {(t.state, t.event) for t in explicit if t.firmware_before is None}
+    expanded = list(explicit)
+    for state, row in wildcards:
+        for command in commands:
+            if (state, command) not in covered:
+                covered.add((state, command))
+                expanded.append(
+                    Transition(
+                        state=state,
+                        event=command,
+                        to=state if row["to"] == "same" else row["to"],
+                        send=tuple(row["send"]),
+                        wildcard=True,
+                        erratum=row.get("erratum"),
+                    )
+                )
+    timing = raw["timing"]
+    return StateMachine(
+        icd=raw.get("icd", ""),
+        initial=raw["initial"],
+        states=tuple(
+            SmState(
+                name=st["name"],
+                mode=st["mode"],
+                doc=_doc(st["doc"]),
+                expects=st.get("expects"),
+                timer=st.get("timer"),
+                erratum=st.get("erratum"),
+            )
+            for st in raw["states"]
+        ),
+        events=tuple(SmEvent(e["name"], _doc(e["doc"])) for e in raw["events"]),
+        transitions=tuple(expanded),
+        parameter_block_timeout_s=float(timing["parameter_block_timeout_s"]),
+        default_alignment_time_s=float(timing["default_alignment_time_s"]),
+        default_update_rate_hz=float(timing["default_update_rate_hz"]),
+        result_delay_s=float(timing["result_delay_s"]),
     )

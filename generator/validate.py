@@ -17,7 +17,7 @@ from typing import Any
 import jsonschema
 
 from .load import LoadedSpec, PathKey
-from .model import FLOAT32_MAX, PRIMITIVES
+from .model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "spec" / "schema.json"
 
@@ -394,3 +394,96 @@ def validate(spec: LoadedSpec) -> None:
                 )
             if f["format"] == "hex" and (low < 0 or high >= 16 ** f["width"]):
                 raise spec.error(("nmea", "fields", i, "range"), f"range does not fit {f['width']} hex digits")
+
+    # State machine.
+    sm = d.get("state_machine")
+    if sm is not None:
+        _check_state_machine(spec, sm, d, modes, payload_names)
+
+
+def _check_state_machine(
+    spec: LoadedSpec, sm: dict[str, Any], d: dict[str, Any], modes: list[str], payload_names: list[str]
+) -> None:
+    base: PathKey = ("state_machine",)
+    _unique(spec, sm["states"], (*base, "states"), "name", "state")
+    _unique(spec, sm["events"], (*base, "events"), "name", "event")
+    states = {st["name"]: st for st in sm["states"]}
+    commands = {c["name"]: c for c in d["commands"]}
+    events = {e["name"] for e in sm["events"]}
+    for name in events & set(commands):
+        raise spec.error((*base, "events"), f"event {name!r} is also a command name")
+    if sm["initial"] not in states:
+        raise spec.error((*base, "initial"), f"unknown state {sm['initial']!r}")
+    for i, st in enumerate(sm["states"]):
+        path: PathKey = (*base, "states", i)
+        if st["mode"] not in modes:
+            raise spec.error((*path, "mode"), f"unknown mode {st['mode']!r}")
+        if "expects" in st and st["expects"] not in payload_names:
+            raise spec.error((*path, "expects"), f"unknown payload {st['expects']!r}")
+    answers = {"ack", "output", "output_sleep", *payload_names}
+    explicit: dict[tuple[str, str, str | None], PathKey] = {}
+    for i, row in enumerate(sm["transitions"]):
+        path = (*base, "transitions", i)
+        for j, state in enumerate(row["from"]):
+            if state not in states:
+                raise spec.error((*path, "from", j), f"unknown state {state!r}")
+        if row["to"] != "same" and row["to"] not in states:
+            raise spec.error((*path, "to"), f"unknown state {row['to']!r}")
+        for j, item in enumerate(row["send"]):
+            if item not in answers:
+                raise spec.error(
+                    (*path, "send", j), f"unknown answer {item!r} (ack, output, output_sleep or a payload)"
+                )
+        for j, event in enumerate(row["when"]):
+            if event != "*" and event not in commands and event not in events:
+                raise spec.error((*path, "when", j), f"unknown event {event!r}: not a command, an event or '*'")
+            if event == "*":
+                continue
+            for state in row["from"]:
+                key = (state, event, row.get("firmware_before"))
+                if key in explicit:
+                    line = spec.line_of(explicit[key])
+                    raise spec.error(
+                        (*path, "when", j), f"a second row for {event!r} in state {state!r} (first at line {line})"
+                    )
+                explicit[key] = (*path, "when", j)
+                if event in commands and states[state]["mode"] not in commands[event]["valid_in"]:
+                    raise spec.error(
+                        (*path, "when", j),
+                        f"{event} has a transition in state {state!r} (mode {states[state]['mode']}),"
+                        f" but its valid_in does not list that mode",
+                    )
+            if event == "parameter_block":
+                for state in row["from"]:
+                    if "expects" not in states[state]:
+                        raise spec.error((*path, "when", j), f"state {state!r} expects no parameter block")
+    for name, command in commands.items():
+        for mode in command["valid_in"]:
+            if not any(states[st]["mode"] == mode and ev == name for (st, ev, _fw) in explicit):
+                raise spec.error(
+                    ("commands", list(commands).index(name), "valid_in"),
+                    f"{name} is valid in mode {mode!r} but no state of that mode has a transition for it",
+                )
+    # A code shared by several names is resolved by mode, so their modes must not overlap.
+    by_code: dict[int, list[dict[str, Any]]] = {}
+    for c in d["commands"]:
+        by_code.setdefault(c["code"], []).append(c)
+    for group in by_code.values():
+        for a_index, a in enumerate(group):
+            for b in group[a_index + 1 :]:
+                shared = set(a["valid_in"]) & set(b["valid_in"])
+                if shared:
+                    raise spec.error(
+                        ("commands", d["commands"].index(b), "valid_in"),
+                        f"{a['name']} and {b['name']} share code {a['code']:#04x}"
+                        f" and are both valid in {sorted(shared)}",
+                    )
+    for i, st in enumerate(sm["states"]):
+        needed = []
+        if "timer" in st:
+            needed.append(TIMER_EVENTS[st["timer"]])
+        if "expects" in st:
+            needed.append("parameter_block")
+        for event in needed:
+            if (st["name"], event, None) not in explicit:
+                raise spec.error((*base, "states", i), f"state {st['name']!r} has no transition for {event!r}")
