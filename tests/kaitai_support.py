@@ -277,10 +277,13 @@ def _valid_value(f: Field, model: Spec, rng: random.Random) -> int | float | str
     low, high = bounds
     if f.is_integer:
         return rng.choice([int(low), int(high), rng.randint(int(low), int(high))])
-    low, high = max(low, -1e9), min(high, 1e9)
-    value = f32(rng.choice([low, high, rng.uniform(low, high)]))
-    assert math.isfinite(value)
-    return value
+    if f.range is None:
+        # No range: any finite float32, drawn by its bits so every magnitude appears.
+        while True:
+            value: float = struct.unpack("<f", rng.randbytes(4))[0]
+            if math.isfinite(value):
+                return value
+    return f32(rng.choice([low, high, rng.uniform(low, high)]))
 
 
 def output_tables() -> list[Payload]:
