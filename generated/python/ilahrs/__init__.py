@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
 # Do not edit: change the spec or the generator and run `make generate`.
 """ilahrs: the Inertial Labs AHRS protocol (Inertial Labs AHRS Interface Control Document, rev 1.7).
 
@@ -65,7 +65,7 @@ from .status import UnitStatusWord, UswFlag, UswMode
 from .stream import MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
 
 SPEC_VERSION: Final = '1.0.0'
-SPEC_SHA256: Final = '40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d'
+SPEC_SHA256: Final = 'b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef'
 
 __all__ = [
     "CODES",

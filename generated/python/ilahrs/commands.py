@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 40a2caafbf98a8499305473a1734f802d63e13d9705697dcfa51855c9669d81d.
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The commands of Table C.1, their parameter blocks and the acknowledgement.
 
@@ -259,7 +259,7 @@ COMMANDS: Final[Mapping[str, CommandInfo]] = MappingProxyType(
             icd='6.3.8',
             group='control',
             purpose='Switch to the low-power Sleep mode.',
-            valid_in=('idle',),
+            valid_in=('idle', 'continuous', 'on_request'),
             response='none',
             response_payloads=(),
             parameter_block=None,
