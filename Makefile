@@ -23,6 +23,8 @@ PYTHON ?= python3
 BUILD := build
 
 SETUP_TARGETS :=
+GENERATE_TARGETS :=
+CHECK_TARGETS :=
 BUILD_TARGETS :=
 LINT_TARGETS :=
 TEST_TARGETS :=
@@ -48,6 +50,7 @@ setup: $(SETUP_TARGETS)
 
 generate: setup
 	$(PY) -m generator
+	$(MAKE) --no-print-directory $(GENERATE_TARGETS)
 
 build: setup $(BUILD_TARGETS)
 
@@ -55,7 +58,7 @@ lint: setup $(LINT_TARGETS)
 
 check: setup
 	$(PY) -m generator --check
-	$(MAKE) --no-print-directory lint
+	$(MAKE) --no-print-directory lint $(CHECK_TARGETS)
 
 test: setup build check conformance $(TEST_TARGETS)
 

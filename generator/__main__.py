@@ -12,7 +12,7 @@ from pathlib import Path
 
 from . import DEFAULT_SPEC, ROOT, build_spec
 from .load import SpecError
-from .render import render, target_names
+from .render import derived_files, render, target_names
 
 # Build products that may sit inside generated/ without being generated.
 IGNORED_PARTS = {"target", "__pycache__", ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules", "build"}
@@ -61,7 +61,7 @@ def main(argv: list[str] | None = None) -> int:
         for p, text in sorted(files.items())
         if not (args.out / p).is_file() or (args.out / p).read_text(encoding="utf-8") != text
     ]
-    stale = sorted(existing - set(files))
+    stale = sorted(existing - set(files) - derived_files(targets))
     if args.check:
         for path in changed:
             print(f"differs: generated/{path}", file=sys.stderr)

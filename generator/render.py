@@ -40,6 +40,15 @@ def target_names() -> list[str]:
     return sorted(p.name for p in TARGETS_DIR.iterdir() if (p / "target.py").is_file())
 
 
+def derived_files(targets: list[str]) -> set[str]:
+    """Files a target's make rules derive from its generated files (declared as DERIVED)."""
+    found: set[str] = set()
+    for target in targets:
+        module = importlib.import_module(f"generator.targets.{target}.target")
+        found.update(getattr(module, "DERIVED", ()))
+    return found
+
+
 def notice(spec: Spec) -> list[str]:
     """The lines every generated file starts with, in the target's comment syntax."""
     return [
