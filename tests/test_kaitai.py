@@ -7,16 +7,22 @@ from the official compiler (`make build-kaitai`); a missing or stale build fails
 
 from __future__ import annotations
 
+import importlib.util
 import random
 import struct
+import subprocess
+from pathlib import Path
 from typing import Any
 
 import kaitai_support as ks
 import pytest
+import yaml
 
 import ilahrs
+from generator import build_spec
 from generator.model import Payload
 from generator.naming import pascal
+from generator.render import render
 
 SEED = 20140311
 SPEC = ks.spec()
@@ -188,3 +194,50 @@ def test_status_word_flags_agree() -> None:
             assert getattr(theirs, f"mode_{mode.name}") == (ours.mode.value == mode.name)
         assert theirs.any_failure == bool(ours.failures)
         assert theirs.any_warning == bool(ours.warnings)
+
+
+def test_a_new_table_and_command_need_no_template_change(tmp_path: Path) -> None:
+    """Add a payload table (with a constant and a variant scale) and a command to a copy of the
+    spec, render only this target, compile it with ksc and parse the new table."""
+    data = yaml.safe_load((ks.ROOT / "spec" / "ilahrs.yaml").read_text(encoding="utf-8"))
+    unit = next(f for p in data["payloads"] for f in p["fields"] if f.get("scale", {}).get("divisor") == "KG")["unit"]
+    data["payloads"].append(
+        {
+            "name": "extra_table",
+            "icd": "Table X.1",
+            "title": "Extra",
+            "direction": "device_to_host",
+            "size": 7,
+            "doc": "A table added by the test.",
+            "fields": [
+                {"name": "angle", "type": "s16", "unit": "deg", "scale": {"divisor": 10}, "doc": "An angle."},
+                {"name": "rate", "type": "s16", "unit": unit, "scale": {"divisor": "KG"}, "doc": "A rate."},
+                {"name": "label", "type": "char", "length": 3, "doc": "Text."},
+            ],
+        }
+    )
+    code = next(c for c in range(0x100) if c not in SPEC.codes)
+    data["commands"].append(
+        {"name": "ExtraCmd", "id": "extra_cmd", "code": code, "icd": "X.1", "group": "control",
+         "purpose": "A command added by the test.", "valid_in": ["idle"], "response": {"kind": "none"}}
+    )
+    data["state_machine"]["transitions"].append({"from": ["idle"], "when": ["ExtraCmd"], "to": "idle", "send": []})
+    spec_path = tmp_path / "extra.yaml"
+    spec_path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    extra = build_spec(spec_path)
+    ksy_path = tmp_path / "extra.ksy"
+    ksy_path.write_text(render(extra, ["kaitai"])[f"kaitai/{extra.name}.ksy"], encoding="utf-8")
+    compiler = ks.ROOT / "tools" / "kaitai" / "compile.js"
+    command = ["node", str(compiler), "python", str(ksy_path), str(tmp_path / "out")]
+    done = subprocess.run(command, check=False, capture_output=True, text=True)
+    assert done.returncode == 0, f"{done.stderr} (run `make setup-kaitai` first?)"
+    module_spec = importlib.util.spec_from_file_location("ilahrs_extra", tmp_path / "out" / f"{extra.name}.py")
+    assert module_spec is not None and module_spec.loader is not None
+    module = importlib.util.module_from_spec(module_spec)
+    module_spec.loader.exec_module(module)
+    root = getattr(module, pascal(extra.name))
+    obj = root.ExtraTable(ks.stream(struct.pack("<hh3s", -123, 250, b"ab\x00")))
+    assert (obj.angle, obj.angle_deg, obj.rate, obj.label) == (-123, -12.3, 250, "ab")
+    scaled = root.ExtraTableScaled(obj, 50.0, ks.stream(b""))
+    assert scaled.rate_dps == 5.0
+    assert root.Command(code).name == "extra_cmd"

@@ -37,7 +37,7 @@ seq:
       Header byte 1. One attribute per byte, so that a wrong first byte is reported before the
       second is needed.
   - id: message_type
-    -orig-id: 'Message type'
+    -orig-id: Message type
     type: u1
     enum: message_type
     valid:
@@ -47,13 +47,13 @@ seq:
       0 for commands, 1 for data. Every AHRS output is data (Table 6.2). Checked once the fixed
       part of the frame has arrived (until then, a short input is truncated).
   - id: reserved
-    -orig-id: 'Reserved'
+    -orig-id: Reserved
     type: u1
     doc: |
       Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless
       told otherwise (E6).
   - id: message_length
-    -orig-id: 'Message length'
+    -orig-id: Message length
     type: u2
     valid:
       min: 7
@@ -68,7 +68,7 @@ seq:
       The payload, 1 to 52 bytes: message length minus the 6 bytes of message type, reserved,
       length and checksum.
   - id: checksum
-    -orig-id: 'Check sum'
+    -orig-id: Check sum
     type: u2
     valid:
       expr: _ == checksum_computed
@@ -120,75 +120,62 @@ types:
     instances:
       initial_alignment_failed:
         value: 'value & 0x0001 != 0'
-        -orig-id: 'Initial Alignment'
+        -orig-id: Initial Alignment
         doc: |
           Bit 0 (failure byte): Unsuccessful initial alignment (AHRS moved or the magnetic field
           changed).
       parameters_incorrect:
         value: 'value & 0x0002 != 0'
-        -orig-id: 'AHRS Parameters'
-        doc: |
-          Bit 1 (failure byte): The AHRS parameters are incorrect.
+        -orig-id: AHRS Parameters
+        doc: 'Bit 1 (failure byte): The AHRS parameters are incorrect.'
       gyro_failure:
         value: 'value & 0x0004 != 0'
-        -orig-id: 'Gyroscope Unit'
-        doc: |
-          Bit 2 (failure byte): Gyroscope unit failure detected.
+        -orig-id: Gyroscope Unit
+        doc: 'Bit 2 (failure byte): Gyroscope unit failure detected.'
       accelerometer_failure:
         value: 'value & 0x0008 != 0'
-        -orig-id: 'Accelerometer Unit'
-        doc: |
-          Bit 3 (failure byte): Accelerometer unit failure detected.
+        -orig-id: Accelerometer Unit
+        doc: 'Bit 3 (failure byte): Accelerometer unit failure detected.'
       magnetometer_failure:
         value: 'value & 0x0010 != 0'
-        -orig-id: 'Magnetometer Unit'
-        doc: |
-          Bit 4 (failure byte): Magnetometer unit failure detected.
+        -orig-id: Magnetometer Unit
+        doc: 'Bit 4 (failure byte): Magnetometer unit failure detected.'
       electronics_failure:
         value: 'value & 0x0020 != 0'
-        -orig-id: 'Electronics'
-        doc: |
-          Bit 5 (failure byte): Electronics failure detected.
+        -orig-id: Electronics
+        doc: 'Bit 5 (failure byte): Electronics failure detected.'
       software_failure:
         value: 'value & 0x0040 != 0'
-        -orig-id: 'Software'
-        doc: |
-          Bit 6 (failure byte): Software failure detected.
+        -orig-id: Software
+        doc: 'Bit 6 (failure byte): Software failure detected.'
       low_supply_voltage:
         value: 'value & 0x0100 != 0'
-        -orig-id: 'Incorrect Power Supply'
-        doc: |
-          Bit 8 (warning byte): Supply voltage below the minimum level.
+        -orig-id: Incorrect Power Supply
+        doc: 'Bit 8 (warning byte): Supply voltage below the minimum level.'
       high_supply_voltage:
         value: 'value & 0x0200 != 0'
-        -orig-id: 'Incorrect Power Supply'
-        doc: |
-          Bit 9 (warning byte): Supply voltage above the maximum level.
+        -orig-id: Incorrect Power Supply
+        doc: 'Bit 9 (warning byte): Supply voltage above the maximum level.'
       x_rate_exceeded:
         value: 'value & 0x0400 != 0'
-        -orig-id: 'Angular Rate Exceeding Detect'
-        doc: |
-          Bit 10 (warning byte): X angular rate out of range.
+        -orig-id: Angular Rate Exceeding Detect
+        doc: 'Bit 10 (warning byte): X angular rate out of range.'
       y_rate_exceeded:
         value: 'value & 0x0800 != 0'
-        -orig-id: 'Angular Rate Exceeding Detect'
-        doc: |
-          Bit 11 (warning byte): Y angular rate out of range.
+        -orig-id: Angular Rate Exceeding Detect
+        doc: 'Bit 11 (warning byte): Y angular rate out of range.'
       z_rate_exceeded:
         value: 'value & 0x1000 != 0'
-        -orig-id: 'Angular Rate Exceeding Detect'
-        doc: |
-          Bit 12 (warning byte): Z angular rate out of range.
+        -orig-id: Angular Rate Exceeding Detect
+        doc: 'Bit 12 (warning byte): Z angular rate out of range.'
       large_magnetic_field:
         value: 'value & 0x2000 != 0'
-        -orig-id: 'Large Magnetic Field Detect'
-        doc: |
-          Bit 13 (warning byte): Total magnetic field limit exceeded.
+        -orig-id: Large Magnetic Field Detect
+        doc: 'Bit 13 (warning byte): Total magnetic field limit exceeded.'
       temperature_out_of_range:
         value: 'value & 0x4000 != 0'
-        -orig-id: 'Environmental Temperature'
-        doc: |
-          Bit 14 (warning byte): Temperature outside the operating range.
+        -orig-id: Environmental Temperature
+        doc: 'Bit 14 (warning byte): Temperature outside the operating range.'
       any_failure:
         value: 'value & 0x007F != 0'
         doc: Any failure flag is set (the mode bits do not count).
@@ -197,8 +184,7 @@ types:
         doc: Any warning flag is set (the mode bits do not count).
       mode_readiness:
         value: 'value & 0x8080 == 0x0000'
-        doc: |
-          Mode bits say readiness: Normal operation.
+        doc: 'Mode bits say readiness: Normal operation.'
       mode_sleep:
         value: 'value & 0x8080 == 0x8080'
         doc: |
@@ -210,90 +196,89 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.4'
     seq:
       - id: heading
-        -orig-id: 'Heading'
+        -orig-id: Heading
         type: u2
         doc: |
           Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
           (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
-        -orig-id: 'Pitch'
+        -orig-id: Pitch
         type: s2
         doc: |
           Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
           (instance pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
-        -orig-id: 'Roll'
+        -orig-id: Roll
         type: s2
         doc: |
           Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: ugyro_x
-        -orig-id: 'Ugyro'
+        -orig-id: Ugyro
         type: s2
         doc: |
           Raw gyro X sensor data. Payload byte bytes 6-7. Unit: ADC codes (no physical scale given
           by the ICD).
       - id: ugyro_y
-        -orig-id: 'Ugyro'
+        -orig-id: Ugyro
         type: s2
         doc: |
           Raw gyro Y sensor data. Payload byte bytes 8-9. Unit: ADC codes (no physical scale given
           by the ICD).
       - id: ugyro_z
-        -orig-id: 'Ugyro'
+        -orig-id: Ugyro
         type: s2
         doc: |
           Raw gyro Z sensor data. Payload byte bytes 10-11. Unit: ADC codes (no physical scale
           given by the ICD).
       - id: uacc_x
-        -orig-id: 'Uacc'
+        -orig-id: Uacc
         type: s2
         doc: |
           Raw accelerometer X sensor data. Payload byte bytes 12-13. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: uacc_y
-        -orig-id: 'Uacc'
+        -orig-id: Uacc
         type: s2
         doc: |
           Raw accelerometer Y sensor data. Payload byte bytes 14-15. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: uacc_z
-        -orig-id: 'Uacc'
+        -orig-id: Uacc
         type: s2
         doc: |
           Raw accelerometer Z sensor data. Payload byte bytes 16-17. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: umag_x
-        -orig-id: 'Umag'
+        -orig-id: Umag
         type: s2
         doc: |
           Raw magnetometer X sensor data. Payload byte bytes 18-19. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: umag_y
-        -orig-id: 'Umag'
+        -orig-id: Umag
         type: s2
         doc: |
           Raw magnetometer Y sensor data. Payload byte bytes 20-21. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: umag_z
-        -orig-id: 'Umag'
+        -orig-id: Umag
         type: s2
         doc: |
           Raw magnetometer Z sensor data. Payload byte bytes 22-23. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 4
-        doc: |
-          Payload byte bytes 24-27. Reserved: kept verbatim.
+        doc: 'Payload byte bytes 24-27. Reserved: kept verbatim.'
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
-        -orig-id: 'Vdd'
+        -orig-id: Vdd
         type: u2
         doc: |
           Combined voltage: successive frames carry the AHRS input voltage and the stabilised
@@ -302,7 +287,7 @@ types:
           Multiplexed: 2 quantities in turn (AHRS input voltage; stabilised voltage supplied to
           the sensors). See erratum E19.
       - id: utermo
-        -orig-id: 'Utermo'
+        -orig-id: Utermo
         type: s2
         doc: |
           ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note
@@ -312,20 +297,16 @@ types:
     instances:
       heading_deg:
         value: 'heading / 100.0'
-        doc: |
-          heading in degrees: raw/100.
+        doc: 'heading in degrees: raw/100.'
       pitch_deg:
         value: 'pitch / 100.0'
-        doc: |
-          pitch in degrees: raw/100.
+        doc: 'pitch in degrees: raw/100.'
       roll_deg:
         value: 'roll / 100.0'
-        doc: |
-          roll in degrees: raw/100.
+        doc: 'roll in degrees: raw/100.'
       vdd_v:
         value: 'vdd / 1000.0'
-        doc: |
-          vdd in volts DC: raw/1000.
+        doc: 'vdd in volts DC: raw/1000.'
   quaternion:
     doc: |
       Quaternion of Orientation (Table 6.5), 34 bytes, device to host. Output block after
@@ -333,70 +314,69 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.5'
     seq:
       - id: heading
-        -orig-id: 'Heading'
+        -orig-id: Heading
         type: u2
         doc: |
           Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
           (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
-        -orig-id: 'Pitch'
+        -orig-id: Pitch
         type: s2
         doc: |
           Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
           (instance pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
-        -orig-id: 'Roll'
+        -orig-id: Roll
         type: s2
         doc: |
           Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: lk0
-        -orig-id: 'Lk0'
+        -orig-id: Lk0
         type: s2
         doc: |
           Quaternion of orientation, scalar component. Payload byte bytes 6-7. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk0_value). Builders accept raw
           -10000 to 10000.
       - id: lk1
-        -orig-id: 'Lk1'
+        -orig-id: Lk1
         type: s2
         doc: |
           Quaternion of orientation, first vector component. Payload byte bytes 8-9. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk1_value). Builders accept raw
           -10000 to 10000.
       - id: lk2
-        -orig-id: 'Lk2'
+        -orig-id: Lk2
         type: s2
         doc: |
           Quaternion of orientation, second vector component. Payload byte bytes 10-11. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk2_value). Builders accept raw
           -10000 to 10000.
       - id: lk3
-        -orig-id: 'Lk3'
+        -orig-id: Lk3
         type: s2
         doc: |
           Quaternion of orientation, third vector component. Payload byte bytes 12-13. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk3_value). Builders accept raw
           -10000 to 10000.
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 14
-        doc: |
-          Payload byte bytes 14-27. Reserved: kept verbatim.
+        doc: 'Payload byte bytes 14-27. Reserved: kept verbatim.'
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
-        -orig-id: 'Vdd'
+        -orig-id: Vdd
         type: u2
         doc: |
           AHRS input voltage. Payload byte bytes 30-31. Unit: volts DC. Engineering value =
           raw/1000 (instance vdd_v).
       - id: utermo
-        -orig-id: 'Utermo'
+        -orig-id: Utermo
         type: s2
         doc: |
           Average temperature of the 3 accelerometers. Payload byte bytes 32-33. Unit: degrees
@@ -404,40 +384,31 @@ types:
     instances:
       heading_deg:
         value: 'heading / 100.0'
-        doc: |
-          heading in degrees: raw/100.
+        doc: 'heading in degrees: raw/100.'
       pitch_deg:
         value: 'pitch / 100.0'
-        doc: |
-          pitch in degrees: raw/100.
+        doc: 'pitch in degrees: raw/100.'
       roll_deg:
         value: 'roll / 100.0'
-        doc: |
-          roll in degrees: raw/100.
+        doc: 'roll in degrees: raw/100.'
       lk0_value:
         value: 'lk0 / 10000.0'
-        doc: |
-          lk0 in dimensionless: raw/10000.
+        doc: 'lk0 in dimensionless: raw/10000.'
       lk1_value:
         value: 'lk1 / 10000.0'
-        doc: |
-          lk1 in dimensionless: raw/10000.
+        doc: 'lk1 in dimensionless: raw/10000.'
       lk2_value:
         value: 'lk2 / 10000.0'
-        doc: |
-          lk2 in dimensionless: raw/10000.
+        doc: 'lk2 in dimensionless: raw/10000.'
       lk3_value:
         value: 'lk3 / 10000.0'
-        doc: |
-          lk3 in dimensionless: raw/10000.
+        doc: 'lk3 in dimensionless: raw/10000.'
       vdd_v:
         value: 'vdd / 1000.0'
-        doc: |
-          vdd in volts DC: raw/1000.
+        doc: 'vdd in volts DC: raw/1000.'
       utermo_degc:
         value: 'utermo / 10.0'
-        doc: |
-          utermo in degrees Celsius: raw/10.
+        doc: 'utermo in degrees Celsius: raw/10.'
   orientation_sensors:
     doc: |
       Orientation + Sensor Outputs (Table 6.6), 34 bytes, device to host. Output block after
@@ -445,98 +416,97 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.6'
     seq:
       - id: heading
-        -orig-id: 'Heading'
+        -orig-id: Heading
         type: u2
         doc: |
           Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
           (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
-        -orig-id: 'Pitch'
+        -orig-id: Pitch
         type: s2
         doc: |
           Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
           (instance pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
-        -orig-id: 'Roll'
+        -orig-id: Roll
         type: s2
         doc: |
           Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: gyro_x
-        -orig-id: 'GyroX'
+        -orig-id: GyroX
         type: s2
         doc: |
           Angular rate about X (lateral axis). Payload byte bytes 6-7. Unit: degrees per second.
           Engineering value = raw/KG (instance gyro_x_dps of the type orientation_sensors_scaled).
       - id: gyro_y
-        -orig-id: 'GyroY'
+        -orig-id: GyroY
         type: s2
         doc: |
           Angular rate about Y (longitudinal axis). Payload byte bytes 8-9. Unit: degrees per
           second. Engineering value = raw/KG (instance gyro_y_dps of the type
           orientation_sensors_scaled).
       - id: gyro_z
-        -orig-id: 'GyroZ'
+        -orig-id: GyroZ
         type: s2
         doc: |
           Angular rate about Z (vertical axis). Payload byte bytes 10-11. Unit: degrees per
           second. Engineering value = raw/KG (instance gyro_z_dps of the type
           orientation_sensors_scaled).
       - id: acc_x
-        -orig-id: 'AccX'
+        -orig-id: AccX
         type: s2
         doc: |
           Linear acceleration along X. Payload byte bytes 12-13. Unit: standard gravity.
           Engineering value = raw/KA (instance acc_x_g of the type orientation_sensors_scaled).
       - id: acc_y
-        -orig-id: 'AccY'
+        -orig-id: AccY
         type: s2
         doc: |
           Linear acceleration along Y. Payload byte bytes 14-15. Unit: standard gravity.
           Engineering value = raw/KA (instance acc_y_g of the type orientation_sensors_scaled).
       - id: acc_z
-        -orig-id: 'AccZ'
+        -orig-id: AccZ
         type: s2
         doc: |
           Linear acceleration along Z. Payload byte bytes 16-17. Unit: standard gravity.
           Engineering value = raw/KA (instance acc_z_g of the type orientation_sensors_scaled).
       - id: mag_x
-        -orig-id: 'MagX'
+        -orig-id: MagX
         type: s2
         doc: |
           Magnetic field along X. Payload byte bytes 18-19. Unit: nanotesla. Engineering value =
           raw*10 (instance mag_x_nt).
       - id: mag_y
-        -orig-id: 'MagY'
+        -orig-id: MagY
         type: s2
         doc: |
           Magnetic field along Y. Payload byte bytes 20-21. Unit: nanotesla. Engineering value =
           raw*10 (instance mag_y_nt).
       - id: mag_z
-        -orig-id: 'MagZ'
+        -orig-id: MagZ
         type: s2
         doc: |
           Magnetic field along Z. Payload byte bytes 22-23. Unit: nanotesla. Engineering value =
           raw*10 (instance mag_z_nt).
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 4
-        doc: |
-          Payload byte bytes 24-27. Reserved: kept verbatim.
+        doc: 'Payload byte bytes 24-27. Reserved: kept verbatim.'
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
-        -orig-id: 'Vdd'
+        -orig-id: Vdd
         type: u2
         doc: |
           AHRS input voltage. Payload byte bytes 30-31. Unit: volts DC. Engineering value =
           raw/1000 (instance vdd_v).
       - id: utermo
-        -orig-id: 'Utermo'
+        -orig-id: Utermo
         type: s2
         doc: |
           Average temperature of the 3 accelerometers. Payload byte bytes 32-33. Unit: degrees
@@ -544,36 +514,28 @@ types:
     instances:
       heading_deg:
         value: 'heading / 100.0'
-        doc: |
-          heading in degrees: raw/100.
+        doc: 'heading in degrees: raw/100.'
       pitch_deg:
         value: 'pitch / 100.0'
-        doc: |
-          pitch in degrees: raw/100.
+        doc: 'pitch in degrees: raw/100.'
       roll_deg:
         value: 'roll / 100.0'
-        doc: |
-          roll in degrees: raw/100.
+        doc: 'roll in degrees: raw/100.'
       mag_x_nt:
         value: 'mag_x * 10 / 1.0'
-        doc: |
-          mag_x in nanotesla: raw*10.
+        doc: 'mag_x in nanotesla: raw*10.'
       mag_y_nt:
         value: 'mag_y * 10 / 1.0'
-        doc: |
-          mag_y in nanotesla: raw*10.
+        doc: 'mag_y in nanotesla: raw*10.'
       mag_z_nt:
         value: 'mag_z * 10 / 1.0'
-        doc: |
-          mag_z in nanotesla: raw*10.
+        doc: 'mag_z in nanotesla: raw*10.'
       vdd_v:
         value: 'vdd / 1000.0'
-        doc: |
-          vdd in volts DC: raw/1000.
+        doc: 'vdd in volts DC: raw/1000.'
       utermo_degc:
         value: 'utermo / 10.0'
-        doc: |
-          utermo in degrees Celsius: raw/10.
+        doc: 'utermo in degrees Celsius: raw/10.'
   orientation_sensors_scaled:
     doc: |
       The engineering values of orientation_sensors fields whose scale depends on the device
@@ -596,28 +558,22 @@ types:
     instances:
       gyro_x_dps:
         value: 'payload.gyro_x / kg'
-        doc: |
-          gyro_x in degrees per second: raw/KG.
+        doc: 'gyro_x in degrees per second: raw/KG.'
       gyro_y_dps:
         value: 'payload.gyro_y / kg'
-        doc: |
-          gyro_y in degrees per second: raw/KG.
+        doc: 'gyro_y in degrees per second: raw/KG.'
       gyro_z_dps:
         value: 'payload.gyro_z / kg'
-        doc: |
-          gyro_z in degrees per second: raw/KG.
+        doc: 'gyro_z in degrees per second: raw/KG.'
       acc_x_g:
         value: 'payload.acc_x / ka'
-        doc: |
-          acc_x in standard gravity: raw/KA.
+        doc: 'acc_x in standard gravity: raw/KA.'
       acc_y_g:
         value: 'payload.acc_y / ka'
-        doc: |
-          acc_y in standard gravity: raw/KA.
+        doc: 'acc_y in standard gravity: raw/KA.'
       acc_z_g:
         value: 'payload.acc_z / ka'
-        doc: |
-          acc_z in standard gravity: raw/KA.
+        doc: 'acc_z in standard gravity: raw/KA.'
   initial_alignment:
     doc: |
       Initial alignment data (Table 6.8), 50 bytes, device to host. Sent once when initial
@@ -626,79 +582,79 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.8'
     seq:
       - id: gyro_bias_x
-        -orig-id: 'Gyros bias'
+        -orig-id: Gyros bias
         type: f4
         doc: |
           Gyro X bias. Payload byte bytes 0-3. Unit: ADC codes (no physical scale given by the
           ICD).
       - id: gyro_bias_y
-        -orig-id: 'Gyros bias'
+        -orig-id: Gyros bias
         type: f4
         doc: |
           Gyro Y bias. Payload byte bytes 4-7. Unit: ADC codes (no physical scale given by the
           ICD).
       - id: gyro_bias_z
-        -orig-id: 'Gyros bias'
+        -orig-id: Gyros bias
         type: f4
         doc: |
           Gyro Z bias. Payload byte bytes 8-11. Unit: ADC codes (no physical scale given by the
           ICD).
       - id: average_acc_x
-        -orig-id: 'Average acceleration'
+        -orig-id: Average acceleration
         type: f4
         doc: |
           Average acceleration along X. Payload byte bytes 12-15. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: average_acc_y
-        -orig-id: 'Average acceleration'
+        -orig-id: Average acceleration
         type: f4
         doc: |
           Average acceleration along Y. Payload byte bytes 16-19. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: average_acc_z
-        -orig-id: 'Average acceleration'
+        -orig-id: Average acceleration
         type: f4
         doc: |
           Average acceleration along Z. Payload byte bytes 20-23. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: average_mag_x
-        -orig-id: 'Average magn. field'
+        -orig-id: Average magn. field
         type: f4
         doc: |
           Average magnetic field along X. Payload byte bytes 24-27. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: average_mag_y
-        -orig-id: 'Average magn. field'
+        -orig-id: Average magn. field
         type: f4
         doc: |
           Average magnetic field along Y. Payload byte bytes 28-31. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: average_mag_z
-        -orig-id: 'Average magn. field'
+        -orig-id: Average magn. field
         type: f4
         doc: |
           Average magnetic field along Z. Payload byte bytes 32-35. Unit: ADC codes (no physical
           scale given by the ICD).
       - id: initial_heading
-        -orig-id: 'Initial Heading'
+        -orig-id: Initial Heading
         type: f4
         doc: |
           Heading at the end of alignment. Payload byte bytes 36-39. Unit: degrees. Builders
           accept raw 0 to 360.
       - id: initial_roll
-        -orig-id: 'Initial Roll'
+        -orig-id: Initial Roll
         type: f4
         doc: |
           Roll at the end of alignment. Payload byte bytes 40-43. Unit: degrees. Builders accept
           raw -180 to 180.
       - id: initial_pitch
-        -orig-id: 'Initial Pitch'
+        -orig-id: Initial Pitch
         type: f4
         doc: |
           Pitch at the end of alignment. Payload byte bytes 44-47. Unit: degrees. Builders accept
           raw -90 to 90.
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word: 0 after a successful alignment, non-zero otherwise. Payload byte bytes
@@ -711,74 +667,72 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.9'
     seq:
       - id: update_rate
-        -orig-id: 'Update rate'
+        -orig-id: Update rate
         type: u2
         doc: |
           Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz). Payload byte bytes
           0-1. Unit: hertz. Builders accept raw 1 to 100. Default 100. See erratum E22.
       - id: alignment_time
-        -orig-id: 'Initial alignment time'
+        -orig-id: Initial alignment time
         type: u2
         doc: |
           Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
           Payload byte bytes 2-3. Unit: seconds. Builders accept raw 1 to 65535. Default 30. See
           erratum E30.
       - id: declination
-        -orig-id: 'Magnetic declination, Mdec'
+        -orig-id: Magnetic declination, Mdec
         type: f4
         doc: |
           Magnetic declination; a value above 360 asks the AHRS to compute it from position and
           date. Payload byte bytes 4-7. Unit: degrees. Encoding declination: -180 to 180 deg, or
           above 360 (builders write 999) to have the AHRS compute it.
       - id: latitude
-        -orig-id: 'Latitude'
+        -orig-id: Latitude
         type: f4
-        doc: |
-          Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.
+        doc: 'Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
-        -orig-id: 'Longitude'
+        -orig-id: Longitude
         type: f4
         doc: |
           Longitude. Payload byte bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.
       - id: altitude
-        -orig-id: 'Altitude'
+        -orig-id: Altitude
         type: f4
         doc: |
           Altitude. Payload byte bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000.
           See erratum E31.
       - id: date
-        -orig-id: 'Date (Year, Month, Day)'
+        -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 20-23. Unit: fractional
           year, see encoding `date`. Builders accept raw 1900 to 2200. Encoding date: Year +
           (Month - 1)/12 + Day/365, as a float. Years 1900 to 2199.
       - id: alignment_angle_a1
-        -orig-id: 'Alignment angle A1'
+        -orig-id: Alignment angle A1
         type: f4
         doc: |
           Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its
           horizontal plane, clockwise positive (Appendix B). Payload byte bytes 24-27. Unit:
           degrees. Builders accept raw -360 to 360. See erratum E31.
       - id: alignment_angle_a2
-        -orig-id: 'Alignment angle A2'
+        -orig-id: Alignment angle A2
         type: f4
         doc: |
           Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up
           positive (Appendix B). Payload byte bytes 28-31. Unit: degrees. Builders accept raw -360
           to 360. See erratum E31.
       - id: alignment_angle_a3
-        -orig-id: 'Alignment angle A3'
+        -orig-id: Alignment angle A3
         type: f4
         doc: |
           Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive
           (Appendix B). Payload byte bytes 32-35. Unit: degrees. Builders accept raw -360 to 360.
           See erratum E31.
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 14
-        doc: |
-          Should be all zeros. Payload byte bytes 36-49. Reserved: kept verbatim.
+        doc: 'Should be all zeros. Payload byte bytes 36-49. Reserved: kept verbatim.'
   ahrs_parameters_read:
     doc: |
       Parameters read (Table 6.10), 50 bytes, device to host. The AHRS answer to ReadAHRSPar
@@ -786,67 +740,66 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.10'
     seq:
       - id: update_rate
-        -orig-id: 'Measurement rate'
+        -orig-id: Measurement rate
         type: u2
         doc: |
           Output data rate. Payload byte bytes 0-1. Unit: hertz. Builders accept raw 1 to 100. See
           erratum E24.
       - id: alignment_time
-        -orig-id: 'Initial alignment time'
+        -orig-id: Initial alignment time
         type: u2
         doc: |
           Initial alignment duration. Payload byte bytes 2-3. Unit: seconds. Builders accept raw 1
           to 65535. See erratum E30.
       - id: declination
-        -orig-id: 'Magnetic declination'
+        -orig-id: Magnetic declination
         type: f4
         doc: |
           Magnetic declination; a value above 360 means the AHRS computes it. Payload byte bytes
           4-7. Unit: degrees. Encoding declination: -180 to 180 deg, or above 360 (builders write
           999) to have the AHRS compute it.
       - id: latitude
-        -orig-id: 'Latitude'
+        -orig-id: Latitude
         type: f4
-        doc: |
-          Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.
+        doc: 'Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
-        -orig-id: 'Longitude'
+        -orig-id: Longitude
         type: f4
         doc: |
           Longitude. Payload byte bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.
       - id: altitude
-        -orig-id: 'Altitude'
+        -orig-id: Altitude
         type: f4
         doc: |
           Altitude. Payload byte bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000.
           See erratum E31.
       - id: date
-        -orig-id: 'Date (Year, Month, Day)'
+        -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 20-23. Unit: fractional
           year, see encoding `date`. Builders accept raw 1900 to 2200. Encoding date: Year +
           (Month - 1)/12 + Day/365, as a float. Years 1900 to 2199.
       - id: alignment_angle_a1
-        -orig-id: 'Alignment angle A1'
+        -orig-id: Alignment angle A1
         type: f4
         doc: |
           Mounting angle 1 (Appendix B). Payload byte bytes 24-27. Unit: degrees. Builders accept
           raw -360 to 360. See erratum E31.
       - id: alignment_angle_a2
-        -orig-id: 'Alignment angle A2'
+        -orig-id: Alignment angle A2
         type: f4
         doc: |
           Mounting angle 2 (Appendix B). Payload byte bytes 28-31. Unit: degrees. Builders accept
           raw -360 to 360. See erratum E31.
       - id: alignment_angle_a3
-        -orig-id: 'Alignment angle A3'
+        -orig-id: Alignment angle A3
         type: f4
         doc: |
           Mounting angle 3 (Appendix B). Payload byte bytes 32-35. Unit: degrees. Builders accept
           raw -360 to 360. See erratum E31.
       - id: device_id
-        -orig-id: 'Device ID'
+        -orig-id: Device ID
         type: str
         size: 8
         encoding: ISO-8859-1
@@ -855,10 +808,9 @@ types:
           Device identifier (read only). Payload byte bytes 36-43. ISO-8859-1, trailing NULs
           removed.
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 6
-        doc: |
-          Payload byte bytes 44-49. Reserved: kept verbatim.
+        doc: 'Payload byte bytes 44-49. Reserved: kept verbatim.'
   firmware_version:
     doc: |
       Firmware version (Table 6.11), 50 bytes, device to host. The AHRS answer to GetVerFirmware
@@ -866,7 +818,7 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.11'
     seq:
       - id: version
-        -orig-id: 'Firmware version'
+        -orig-id: Firmware version
         type: str
         size: 50
         encoding: ISO-8859-1
@@ -881,13 +833,13 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.12'
     seq:
       - id: utermo100
-        -orig-id: 'Utermo100'
+        -orig-id: Utermo100
         type: s2
         doc: |
           AHRS temperature in 1/100 degC. Payload byte bytes 0-1. Unit: degrees Celsius.
           Engineering value = raw/100 (instance utermo100_degc). See erratum E4.
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word (section 6.5). Payload byte bytes 2-3. Unit Status Word: see the type
@@ -895,8 +847,7 @@ types:
     instances:
       utermo100_degc:
         value: 'utermo100 / 100.0'
-        doc: |
-          utermo100 in degrees Celsius: raw/100.
+        doc: 'utermo100 in degrees Celsius: raw/100.'
   calibration_parameters:
     doc: |
       Calibration parameters (Table 6.13), 22 bytes, host to device. The data message the host
@@ -904,35 +855,34 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.13'
     seq:
       - id: reference_azimuth
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         type: f4
         doc: |
           Reference azimuth (6.4.8); no influence on 2D calibration. Payload byte bytes 0-3. Unit:
           degrees. Builders accept raw -360 to 360. Default 0. See erratum E8.
       - id: accumulation_time
-        -orig-id: 'Time of data accumulation in one run'
+        -orig-id: Time of data accumulation in one run
         type: u2
         doc: |
           Data accumulation time of one run. Payload byte bytes 4-5. Unit: seconds. Builders
           accept raw 1 to 65535. See erratum E30.
       - id: latitude
-        -orig-id: 'Latitude'
+        -orig-id: Latitude
         type: f4
-        doc: |
-          Latitude. Payload byte bytes 6-9. Unit: degrees. Builders accept raw -90 to 90.
+        doc: 'Latitude. Payload byte bytes 6-9. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
-        -orig-id: 'Longitude'
+        -orig-id: Longitude
         type: f4
         doc: |
           Longitude. Payload byte bytes 10-13. Unit: degrees. Builders accept raw -180 to 180.
       - id: altitude
-        -orig-id: 'Altitude'
+        -orig-id: Altitude
         type: f4
         doc: |
           Altitude. Payload byte bytes 14-17. Unit: metres. Builders accept raw -20000 to 100000.
           See erratum E31.
       - id: date
-        -orig-id: 'Date (Year, Month, Day)'
+        -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 18-21. Unit: fractional
@@ -945,25 +895,24 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.14'
     seq:
       - id: calibration_type
-        -orig-id: 'Type of calibration'
+        -orig-id: Type of calibration
         type: u1
         enum: calibration_type
         doc: |
           1 for 2D, 2 for 2D-2T, 3 for 3D calibration. Payload byte byte 0. Builders accept raw 1
           to 3. Enum calibration_type (Table 6.14, Table 6.15).
       - id: runs_used
-        -orig-id: 'Number of used calibration runs'
+        -orig-id: Number of used calibration runs
         type: u1
-        doc: |
-          Number of calibration runs used. Payload byte byte 1.
+        doc: Number of calibration runs used. Payload byte byte 1.
       - id: data_used
-        -orig-id: 'Percent of used data points'
+        -orig-id: Percent of used data points
         type: u1
         doc: |
           Percent of data points used (2D and 3D calibrations only). Payload byte byte 2. Unit:
           percent. Builders accept raw 0 to 100.
       - id: success
-        -orig-id: 'Calibration success'
+        -orig-id: Calibration success
         type: u1
         doc: |
           0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful
@@ -971,64 +920,64 @@ types:
           successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware
           4.9.9.0); 255: successful, no estimate. See erratum E26.
       - id: tm_c_11
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 1. Payload byte bytes 4-7. Unit: dimensionless.
       - id: tm_c_12
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 2. Payload byte bytes 8-11. Unit: dimensionless.
       - id: tm_c_13
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 3. Payload byte bytes 12-15. Unit: dimensionless.
       - id: tm_c_21
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 1. Payload byte bytes 16-19. Unit: dimensionless.
       - id: tm_c_22
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 2. Payload byte bytes 20-23. Unit: dimensionless.
       - id: tm_c_23
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 3. Payload byte bytes 24-27. Unit: dimensionless.
       - id: tm_c_31
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 1. Payload byte bytes 28-31. Unit: dimensionless.
       - id: tm_c_32
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 2. Payload byte bytes 32-35. Unit: dimensionless.
       - id: tm_c_33
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 3. Payload byte bytes 36-39. Unit: dimensionless.
       - id: hm_0_x
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 1. Payload byte bytes 40-43. Unit: ADC codes (no
           physical scale given by the ICD). See erratum E1.
       - id: hm_0_y
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 2. Payload byte bytes 44-47. Unit: ADC codes (no
           physical scale given by the ICD). See erratum E1.
       - id: hm_0_z
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 3. Payload byte bytes 48-51. Unit: ADC codes (no
@@ -1040,25 +989,24 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.15'
     seq:
       - id: calibration_type
-        -orig-id: 'Type of calibration'
+        -orig-id: Type of calibration
         type: u1
         enum: calibration_type
         doc: |
           2 for 2D-2T calibration. Payload byte byte 0. Builders accept raw 2 to 2. Enum
           calibration_type (Table 6.14, Table 6.15).
       - id: run
-        -orig-id: 'Calibration run'
+        -orig-id: Calibration run
         type: u1
-        doc: |
-          Number of this run (1, 2, ...). Payload byte byte 1. Builders accept raw 1 to 255.
+        doc: Number of this run (1, 2, ...). Payload byte byte 1. Builders accept raw 1 to 255.
       - id: data_used
-        -orig-id: 'Percent of used data points'
+        -orig-id: Percent of used data points
         type: u1
         doc: |
           Percent of data points used. Payload byte byte 2. Unit: percent. Builders accept raw 0
           to 100.
       - id: success
-        -orig-id: 'Calibration success'
+        -orig-id: Calibration success
         type: u1
         doc: |
           0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255:
@@ -1066,29 +1014,27 @@ types:
           not successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since
           firmware 4.9.9.0); 255: successful, no estimate. See erratum E26.
       - id: reserved_1
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 4
-        doc: |
-          Payload byte bytes 4-7. Reserved: kept verbatim. See erratum E32.
+        doc: 'Payload byte bytes 4-7. Reserved: kept verbatim. See erratum E32.'
       - id: average_pitch
-        -orig-id: 'Average pitch, deg'
+        -orig-id: Average pitch, deg
         type: f4
         doc: |
           Average pitch during the run. Payload byte bytes 8-11. Unit: degrees. Builders accept
           raw -90 to 90.
       - id: average_roll
-        -orig-id: 'Average roll, deg'
+        -orig-id: Average roll, deg
         type: f4
         doc: |
           Average roll during the run. Payload byte bytes 12-15. Unit: degrees. Builders accept
           raw -180 to 180.
       - id: reserved_2
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 12
-        doc: |
-          Payload byte bytes 16-27. Reserved: kept verbatim. See erratum E32.
+        doc: 'Payload byte bytes 16-27. Reserved: kept verbatim. See erratum E32.'
       - id: usw
-        -orig-id: 'USW'
+        -orig-id: USW
         type: status_word
         doc: |
           Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
@@ -1101,10 +1047,9 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.16'
     seq:
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 6
-        doc: |
-          Payload byte bytes 0-5. Reserved: kept verbatim. See erratum E32.
+        doc: 'Payload byte bytes 0-5. Reserved: kept verbatim. See erratum E32.'
   calibration_status:
     doc: |
       Calibration results read back (Table 6.17), 52 bytes, device to host. The AHRS answer to
@@ -1112,7 +1057,7 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, Table 6.17'
     seq:
       - id: calibration_type
-        -orig-id: 'Type of calibration performed'
+        -orig-id: Type of calibration performed
         type: u1
         enum: calibration_status_type
         doc: |
@@ -1120,17 +1065,15 @@ types:
           software. Payload byte byte 0. Enum calibration_status_type (Table 6.17). Values above
           0x80 mean parameters loaded by other software and have no name in the enum.
       - id: runs_used
-        -orig-id: 'Number of used calibration runs'
+        -orig-id: Number of used calibration runs
         type: u1
-        doc: |
-          Number of calibration runs used. Payload byte byte 1.
+        doc: Number of calibration runs used. Payload byte byte 1.
       - id: reserved
-        -orig-id: 'Reserved'
+        -orig-id: Reserved
         size: 1
-        doc: |
-          Payload byte byte 2. Reserved: kept verbatim. See erratum E3.
+        doc: 'Payload byte byte 2. Reserved: kept verbatim. See erratum E3.'
       - id: success
-        -orig-id: 'Calibration success'
+        -orig-id: Calibration success
         type: u1
         doc: |
           0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an
@@ -1138,64 +1081,64 @@ types:
           predicted maximum (3 sigma) heading error, deg*10 (since firmware 4.9.9.0); 255:
           successful, no estimate. See erratum E26.
       - id: tm_c_11
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 1. Payload byte bytes 4-7. Unit: dimensionless.
       - id: tm_c_12
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 2. Payload byte bytes 8-11. Unit: dimensionless.
       - id: tm_c_13
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 1 column 3. Payload byte bytes 12-15. Unit: dimensionless.
       - id: tm_c_21
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 1. Payload byte bytes 16-19. Unit: dimensionless.
       - id: tm_c_22
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 2. Payload byte bytes 20-23. Unit: dimensionless.
       - id: tm_c_23
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 2 column 3. Payload byte bytes 24-27. Unit: dimensionless.
       - id: tm_c_31
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 1. Payload byte bytes 28-31. Unit: dimensionless.
       - id: tm_c_32
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 2. Payload byte bytes 32-35. Unit: dimensionless.
       - id: tm_c_33
-        -orig-id: 'Matrix for soft iron correction'
+        -orig-id: Matrix for soft iron correction
         type: f4
         doc: |
           Soft-iron matrix Tm_c row 3 column 3. Payload byte bytes 36-39. Unit: dimensionless.
       - id: hm_0_x
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 1. Payload byte bytes 40-43. Unit: ADC codes (no
           physical scale given by the ICD). See erratum E2.
       - id: hm_0_y
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 2. Payload byte bytes 44-47. Unit: ADC codes (no
           physical scale given by the ICD). See erratum E2.
       - id: hm_0_z
-        -orig-id: 'Matrix for hard iron correction'
+        -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
           Hard-iron vector Hm_0 component 3. Payload byte bytes 48-51. Unit: ADC codes (no
@@ -1207,7 +1150,7 @@ types:
     doc-ref: 'Inertial Labs AHRS Interface Control Document rev 1.7, 6.3.1 (Table 6.2 with a one-word payload)'
     seq:
       - id: checksum
-        -orig-id: 'Check sum'
+        -orig-id: Check sum
         type: u2
         doc: |
           Checksum of the acknowledged message, message type through payload. Payload byte bytes
@@ -1216,150 +1159,147 @@ enums:
   message_type:
     0:
       id: command
-      doc: |
-        A command from the host (one-byte payload holding the command code).
+      doc: A command from the host (one-byte payload holding the command code).
     1:
       id: data
-      doc: |
-        Data: every AHRS output, and the parameter blocks the host sends (E5).
+      doc: 'Data: every AHRS output, and the parameter blocks the host sends (E5).'
   command:
     0x1A:
       id: get_bit
-      -orig-id: 'GetBIT'
+      -orig-id: GetBIT
       doc: |
         GetBIT (6.3.11): Read the built-in-test answer, temperature and Unit Status Word (Table
         6.12). Valid in idle, on_request.
     0x1F:
       id: get_ver_firmware
-      -orig-id: 'GetVerFirmware'
+      -orig-id: GetVerFirmware
       doc: |
         GetVerFirmware (6.3.10): Read the firmware version string (Table 6.11). Valid in idle.
     0x20:
       id: stop_clb_run
-      -orig-id: 'StopClbRun'
+      -orig-id: StopClbRun
       doc: |
         StopClbRun (6.4.2): Stop data accumulation in the current calibration run before its set
         time. Valid in calibration.
     0x21:
       id: start_2d_clb
-      -orig-id: 'Start2DClb'
+      -orig-id: Start2DClb
       doc: |
         Start2DClb (6.4.8): Start 2D hard/soft-iron calibration; the calibration parameter block
         (Table 6.13) follows. Valid in idle.
     0x22:
       id: start_2d2t_clb
-      -orig-id: 'Start2D2TClb'
+      -orig-id: Start2D2TClb
       doc: |
         Start2D2TClb (6.4.5): Start 2D-2T (multi-run) calibration; the calibration parameter block
         (Table 6.13) follows. Valid in idle.
     0x23:
       id: start_3d_clb
-      -orig-id: 'Start3DClb'
+      -orig-id: Start3DClb
       doc: |
         Start3DClb (6.4.1): Start 3D calibration; the calibration parameter block (Table 6.13)
         follows. Valid in idle.
     0x2A:
       id: get_clb_res
-      -orig-id: 'GetClbRes'
+      -orig-id: GetClbRes
       doc: |
         GetClbRes (6.4.10): Read the results of the last calibration (Table 6.17). Valid in idle.
     0x2B:
       id: start_clb_run
-      -orig-id: 'StartClbRun'
+      -orig-id: StartClbRun
       doc: |
         StartClbRun (6.4.6): Start one run of a multi-run (2D-2T) calibration; the run parameter
         block (Table 6.16) follows. Valid in calibration.
     0x2C:
       id: finish_clb
-      -orig-id: 'FinishClb'
+      -orig-id: FinishClb
       doc: |
         FinishClb (6.4.7): Finish a multi-run (2D-2T) calibration and compute its result (Table
         6.14). Valid in calibration.
     0x2E:
       id: accept_clb
-      -orig-id: 'AcceptClb'
+      -orig-id: AcceptClb
       doc: |
         AcceptClb (6.4.3): Accept the calibration result and save it to non-volatile memory; go to
         idle. Valid in calibration.
     0x2F:
       id: clear_clb
-      -orig-id: 'ClearClb'
+      -orig-id: ClearClb
       doc: |
         ClearClb (6.4.9): Clear the hard/soft-iron calibration parameters from non-volatile
         memory. Valid in idle.
     0x40:
       id: load_ahrs_par
-      -orig-id: 'LoadAHRSPar'
+      -orig-id: LoadAHRSPar
       doc: |
         LoadAHRSPar (6.3.6): Load the user parameter block (Table 6.9) into non-volatile memory.
         Valid in idle.
     0x41:
       id: read_ahrs_par
-      -orig-id: 'ReadAHRSPar'
+      -orig-id: ReadAHRSPar
       doc: |
         ReadAHRSPar (6.3.7): Read the parameter block (Table 6.10) from non-volatile memory. Valid
         in idle.
     0x80:
       id: ahrs_cont1
-      -orig-id: 'AHRScont1'
+      -orig-id: AHRScont1
       doc: |
         AHRScont1 (6.3.1): Start continuous output in the Full Output Data format (Table 6.4).
         Valid in idle.
     0x82:
       id: ahrs_cont2
-      -orig-id: 'AHRScont2'
+      -orig-id: AHRScont2
       doc: |
         AHRScont2 (6.3.1): Start continuous output in the Quaternion of Orientation format (Table
         6.5). Valid in idle.
     0x83:
       id: ahrs_cont3
-      -orig-id: 'AHRScont3'
+      -orig-id: AHRScont3
       doc: |
         AHRScont3 (6.3.1): Start continuous output in the Orientation + Sensor Outputs format
         (Table 6.6). Valid in idle.
     0x84:
       id: ahrs_req1
-      -orig-id: 'AHRSreq1'
+      -orig-id: AHRSreq1
       doc: |
         AHRSreq1 (6.3.2): Start on-request output in the Full Output Data format (Table 6.4).
         Valid in idle.
     0x86:
       id: ahrs_req2
-      -orig-id: 'AHRSreq2'
+      -orig-id: AHRSreq2
       doc: |
         AHRSreq2 (6.3.2): Start on-request output in the Quaternion of Orientation format (Table
         6.5). Valid in idle.
     0x87:
       id: ahrs_req3
-      -orig-id: 'AHRSreq3'
+      -orig-id: AHRSreq3
       doc: |
         AHRSreq3 (6.3.2): Start on-request output in the Orientation + Sensor Outputs format
         (Table 6.6). Valid in idle.
     0x88:
       id: nmea_cont
-      -orig-id: 'NMEAcont'
+      -orig-id: NMEAcont
       doc: |
         NMEAcont (6.3.3): Start continuous output of $PAHR sentences (Table 6.7), at most 50 Hz.
         Valid in idle.
     0x89:
       id: nmea_req
-      -orig-id: 'NMEAreq'
+      -orig-id: NMEAreq
       doc: |
         NMEAreq (6.3.3): Start on-request output of $PAHR sentences (Table 6.7). Valid in idle.
     0xB0:
       id: low_power_on
-      -orig-id: 'LowPowerOn'
+      -orig-id: LowPowerOn
       doc: |
         LowPowerOn (6.3.8): Switch to the low-power Sleep mode. Valid in idle, continuous,
         on_request.
     0xBA:
       id: low_power_off
-      -orig-id: 'LowPowerOff'
-      doc: |
-        LowPowerOff (6.3.9): Wake from Sleep mode into idle. Valid in sleep.
+      -orig-id: LowPowerOff
+      doc: 'LowPowerOff (6.3.9): Wake from Sleep mode into idle. Valid in sleep.'
     0xCA:
       id: get_data_req
-      -orig-id: 'GetDataReq'
+      -orig-id: GetDataReq
       doc: |
         GetDataReq (6.3.4): Ask for one block of the current output format in the On Request mode.
         Valid in on_request.
@@ -1374,30 +1314,23 @@ enums:
   calibration_type:
     1:
       id: two_d
-      doc: |
-        2D calibration (Table 6.14, Table 6.15).
+      doc: 2D calibration (Table 6.14, Table 6.15).
     2:
       id: two_d_two_t
-      doc: |
-        2D-2T calibration (Table 6.14, Table 6.15).
+      doc: 2D-2T calibration (Table 6.14, Table 6.15).
     3:
       id: three_d
-      doc: |
-        3D calibration (Table 6.14, Table 6.15).
+      doc: 3D calibration (Table 6.14, Table 6.15).
   calibration_status_type:
     0:
       id: not_calibrated
-      doc: |
-        The AHRS is not calibrated (Table 6.17).
+      doc: The AHRS is not calibrated (Table 6.17).
     1:
       id: two_d
-      doc: |
-        2D calibration (Table 6.17).
+      doc: 2D calibration (Table 6.17).
     2:
       id: two_d_two_t
-      doc: |
-        2D-2T calibration (Table 6.17).
+      doc: 2D-2T calibration (Table 6.17).
     3:
       id: three_d
-      doc: |
-        3D calibration (Table 6.17).
+      doc: 3D calibration (Table 6.17).

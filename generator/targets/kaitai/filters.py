@@ -9,6 +9,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+import yaml
+
 from generator.model import Command, Field, Frame, Payload, Spec, StatusWord
 
 # Wire types as Kaitai spells them (the byte order comes from meta/endian).
@@ -35,6 +37,23 @@ def ksy_id(name: str) -> str:
 def ksy_type(field: Field) -> str:
     """The Kaitai type of a numeric field: `u2`, `s2`, `f4`, ..."""
     return KSY_TYPES[field.type.name]
+
+
+_PLAIN_UNSAFE = re.compile(r"^[-?:,\[\]{}#&*!|>'\"%@`\s]|: | #|:$|\s$")
+
+
+def scalar(text: object) -> str:
+    """A one-line YAML scalar: plain where YAML reads it back unchanged, else single-quoted."""
+    value = str(text)
+    if not value or _PLAIN_UNSAFE.search(value) or yaml_special(value):
+        return quote(value)
+    return value
+
+
+def yaml_special(value: str) -> bool:
+    """Plain scalars YAML would read as something other than the text (numbers, booleans, null)."""
+    loaded = yaml.safe_load(value)
+    return not isinstance(loaded, str) or loaded != value
 
 
 def quote(text: object) -> str:
@@ -266,6 +285,7 @@ FILTERS = {
     "ksy_id": ksy_id,
     "ksy_type": ksy_type,
     "quote": quote,
+    "scalar": scalar,
     "error_kind": error_kind,
     "bytes_after": bytes_after,
     "checksum_modulus": checksum_modulus,
