@@ -522,13 +522,13 @@ types:
         value: 'roll / 100.0'
         doc: 'roll in degrees: raw/100.'
       mag_x_nt:
-        value: 'mag_x * 10 / 1.0'
+        value: 'mag_x * 10.0'
         doc: 'mag_x in nanotesla: raw*10.'
       mag_y_nt:
-        value: 'mag_y * 10 / 1.0'
+        value: 'mag_y * 10.0'
         doc: 'mag_y in nanotesla: raw*10.'
       mag_z_nt:
-        value: 'mag_z * 10 / 1.0'
+        value: 'mag_z * 10.0'
         doc: 'mag_z in nanotesla: raw*10.'
       vdd_v:
         value: 'vdd / 1000.0'

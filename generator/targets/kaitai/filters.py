@@ -121,6 +121,8 @@ def engineering_expr(field: Field, ref: str = "") -> str:
     if scale.divisor_parameter is not None:
         return f"{term} / {param_id(scale.divisor_parameter)}"
     assert scale.divisor is not None
+    if scale.divisor == 1:
+        return f"{raw} * {scale.multiplier}.0"
     return f"{term} / {scale.divisor}.0"
 
 
