@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import yaml
 
-from generator.model import Command, Field, Frame, Payload, Spec, StatusWord
+from generator.model import Command, Field, Frame, Payload, Spec, StatusWord, Variant
 
 # Wire types as Kaitai spells them (the byte order comes from meta/endian).
 KSY_TYPES = {"u8": "u1", "s8": "s1", "u16": "u2", "s16": "s2", "u32": "u4", "s32": "s4", "f32": "f4"}
@@ -129,6 +129,11 @@ def engineering_expr(field: Field, ref: str = "") -> str:
 def engineering_doc(field: Field) -> str:
     unit = field.unit.doc if field.unit is not None else "engineering units"
     return f"{field.name} in {unit}: {scale_text(field)}."
+
+
+def variant_value(parameter: str, variant: Variant) -> str:
+    """A variant parameter as the `f8` argument of a scaled type: `100.0`."""
+    return f"{float(variant.value(parameter))!r}"
 
 
 def variant_values(spec: Spec, parameter: str) -> list[str]:
@@ -303,6 +308,7 @@ FILTERS = {
     "variant_parameters": variant_parameters,
     "scaled_type_id": scaled_type_id,
     "field_doc": field_doc,
+    "variant_value": variant_value,
     "command_doc": command_doc,
     "number": number,
 }

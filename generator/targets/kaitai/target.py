@@ -12,4 +12,7 @@ __all__ = ["FILTERS", "GLOBALS", "outputs"]
 
 def outputs(spec: Spec) -> list[Output]:
     check_names(spec)
-    return [Output(path=f"kaitai/{spec.name}.ksy", template="ksy.j2")]
+    return [
+        Output(path=f"kaitai/{spec.name}.ksy", template="ksy.j2"),
+        Output(path="kaitai/README.md", template="readme.md.j2"),
+    ]
