@@ -15,7 +15,7 @@ KAITAI_PARSERS := $(KAITAI_OUT)/python/ilahrs.py $(KAITAI_OUT)/construct/ilahrs.
 # npm ci again whenever the lock file changes (a stale or missing node_modules).
 $(KAITAI_NODE): $(KAITAI_TOOLS)/package.json $(KAITAI_TOOLS)/package-lock.json
 	command -v node >/dev/null || { echo "kaitai: node (20+) is needed to run the Kaitai Struct compiler" >&2; exit 1; }
-	cd $(KAITAI_TOOLS) && npm ci --silent --no-audit --no-fund --loglevel=error
+	cd $(KAITAI_TOOLS) && npm ci --no-audit --no-fund --loglevel=error >/dev/null
 	touch $@
 
 setup-kaitai: $(KAITAI_NODE)
