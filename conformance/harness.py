@@ -9,7 +9,7 @@
 
 The harness owns the vectors (conformance/vectors/*.json) and all test logic; a runner only turns
 request lines into answer lines (conformance/README.md, "The runner protocol"). Each runner is
-started once and fed every vector. Standard library only, Python 3.9 or later.
+started once and fed every vector. Standard library only, Python 3.10 or later.
 Exit status: 0 when nothing failed, 1 when something failed, 2 when the suites or the
 bindings cannot be read.
 """
