@@ -199,83 +199,83 @@ types:
         -orig-id: Heading
         type: u2
         doc: |
-          Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
-          (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
+          Heading angle. Payload bytes 0-1. Unit: degrees. Engineering value = raw/100 (instance
+          heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
         -orig-id: Pitch
         type: s2
         doc: |
-          Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
-          (instance pitch_deg). Builders accept raw -9000 to 9000.
+          Pitch angle. Payload bytes 2-3. Unit: degrees. Engineering value = raw/100 (instance
+          pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
         -orig-id: Roll
         type: s2
         doc: |
-          Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
+          Roll angle. Payload bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: ugyro_x
         -orig-id: Ugyro
         type: s2
         doc: |
-          Raw gyro X sensor data. Payload byte bytes 6-7. Unit: ADC codes (no physical scale given
-          by the ICD).
+          Raw gyro X sensor data. Payload bytes 6-7. Unit: ADC codes (no physical scale given by
+          the ICD).
       - id: ugyro_y
         -orig-id: Ugyro
         type: s2
         doc: |
-          Raw gyro Y sensor data. Payload byte bytes 8-9. Unit: ADC codes (no physical scale given
-          by the ICD).
+          Raw gyro Y sensor data. Payload bytes 8-9. Unit: ADC codes (no physical scale given by
+          the ICD).
       - id: ugyro_z
         -orig-id: Ugyro
         type: s2
         doc: |
-          Raw gyro Z sensor data. Payload byte bytes 10-11. Unit: ADC codes (no physical scale
-          given by the ICD).
+          Raw gyro Z sensor data. Payload bytes 10-11. Unit: ADC codes (no physical scale given by
+          the ICD).
       - id: uacc_x
         -orig-id: Uacc
         type: s2
         doc: |
-          Raw accelerometer X sensor data. Payload byte bytes 12-13. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw accelerometer X sensor data. Payload bytes 12-13. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: uacc_y
         -orig-id: Uacc
         type: s2
         doc: |
-          Raw accelerometer Y sensor data. Payload byte bytes 14-15. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw accelerometer Y sensor data. Payload bytes 14-15. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: uacc_z
         -orig-id: Uacc
         type: s2
         doc: |
-          Raw accelerometer Z sensor data. Payload byte bytes 16-17. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw accelerometer Z sensor data. Payload bytes 16-17. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: umag_x
         -orig-id: Umag
         type: s2
         doc: |
-          Raw magnetometer X sensor data. Payload byte bytes 18-19. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw magnetometer X sensor data. Payload bytes 18-19. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: umag_y
         -orig-id: Umag
         type: s2
         doc: |
-          Raw magnetometer Y sensor data. Payload byte bytes 20-21. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw magnetometer Y sensor data. Payload bytes 20-21. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: umag_z
         -orig-id: Umag
         type: s2
         doc: |
-          Raw magnetometer Z sensor data. Payload byte bytes 22-23. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Raw magnetometer Z sensor data. Payload bytes 22-23. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: reserved
         -orig-id: Reserved
         size: 4
-        doc: 'Payload byte bytes 24-27. Reserved: kept verbatim.'
+        doc: 'Payload bytes 24-27. Reserved: kept verbatim.'
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
+          Unit Status Word (section 6.5). Payload bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
         -orig-id: Vdd
@@ -283,15 +283,15 @@ types:
         doc: |
           Combined voltage: successive frames carry the AHRS input voltage and the stabilised
           sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which. Payload
-          byte bytes 30-31. Unit: volts DC. Engineering value = raw/1000 (instance vdd_v).
-          Multiplexed: 2 quantities in turn (AHRS input voltage; stabilised voltage supplied to
-          the sensors). See erratum E19.
+          bytes 30-31. Unit: volts DC. Engineering value = raw/1000 (instance vdd_v). Multiplexed:
+          2 quantities in turn (AHRS input voltage; stabilised voltage supplied to the sensors).
+          See erratum E19.
       - id: utermo
         -orig-id: Utermo
         type: s2
         doc: |
           ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note
-          3). The frame does not say which. Payload byte bytes 32-33. Unit: ADC codes (no physical
+          3). The frame does not say which. Payload bytes 32-33. Unit: ADC codes (no physical
           scale given by the ICD). Multiplexed: 7 quantities in turn (temperature sensors 1-7
           inside the gyros; accelerometers and magnetometers). See erratum E19.
     instances:
@@ -317,70 +317,69 @@ types:
         -orig-id: Heading
         type: u2
         doc: |
-          Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
-          (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
+          Heading angle. Payload bytes 0-1. Unit: degrees. Engineering value = raw/100 (instance
+          heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
         -orig-id: Pitch
         type: s2
         doc: |
-          Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
-          (instance pitch_deg). Builders accept raw -9000 to 9000.
+          Pitch angle. Payload bytes 2-3. Unit: degrees. Engineering value = raw/100 (instance
+          pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
         -orig-id: Roll
         type: s2
         doc: |
-          Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
+          Roll angle. Payload bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: lk0
         -orig-id: Lk0
         type: s2
         doc: |
-          Quaternion of orientation, scalar component. Payload byte bytes 6-7. Unit:
-          dimensionless. Engineering value = raw/10000 (instance lk0_value). Builders accept raw
-          -10000 to 10000.
+          Quaternion of orientation, scalar component. Payload bytes 6-7. Unit: dimensionless.
+          Engineering value = raw/10000 (instance lk0_value). Builders accept raw -10000 to 10000.
       - id: lk1
         -orig-id: Lk1
         type: s2
         doc: |
-          Quaternion of orientation, first vector component. Payload byte bytes 8-9. Unit:
+          Quaternion of orientation, first vector component. Payload bytes 8-9. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk1_value). Builders accept raw
           -10000 to 10000.
       - id: lk2
         -orig-id: Lk2
         type: s2
         doc: |
-          Quaternion of orientation, second vector component. Payload byte bytes 10-11. Unit:
+          Quaternion of orientation, second vector component. Payload bytes 10-11. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk2_value). Builders accept raw
           -10000 to 10000.
       - id: lk3
         -orig-id: Lk3
         type: s2
         doc: |
-          Quaternion of orientation, third vector component. Payload byte bytes 12-13. Unit:
+          Quaternion of orientation, third vector component. Payload bytes 12-13. Unit:
           dimensionless. Engineering value = raw/10000 (instance lk3_value). Builders accept raw
           -10000 to 10000.
       - id: reserved
         -orig-id: Reserved
         size: 14
-        doc: 'Payload byte bytes 14-27. Reserved: kept verbatim.'
+        doc: 'Payload bytes 14-27. Reserved: kept verbatim.'
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
+          Unit Status Word (section 6.5). Payload bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
         -orig-id: Vdd
         type: u2
         doc: |
-          AHRS input voltage. Payload byte bytes 30-31. Unit: volts DC. Engineering value =
-          raw/1000 (instance vdd_v).
+          AHRS input voltage. Payload bytes 30-31. Unit: volts DC. Engineering value = raw/1000
+          (instance vdd_v).
       - id: utermo
         -orig-id: Utermo
         type: s2
         doc: |
-          Average temperature of the 3 accelerometers. Payload byte bytes 32-33. Unit: degrees
-          Celsius. Engineering value = raw/10 (instance utermo_degc).
+          Average temperature of the 3 accelerometers. Payload bytes 32-33. Unit: degrees Celsius.
+          Engineering value = raw/10 (instance utermo_degc).
     instances:
       heading_deg:
         value: 'heading / 100.0'
@@ -419,98 +418,96 @@ types:
         -orig-id: Heading
         type: u2
         doc: |
-          Heading angle. Payload byte bytes 0-1. Unit: degrees. Engineering value = raw/100
-          (instance heading_deg). Builders accept raw 0 to 35999. See erratum E23.
+          Heading angle. Payload bytes 0-1. Unit: degrees. Engineering value = raw/100 (instance
+          heading_deg). Builders accept raw 0 to 35999. See erratum E23.
       - id: pitch
         -orig-id: Pitch
         type: s2
         doc: |
-          Pitch angle. Payload byte bytes 2-3. Unit: degrees. Engineering value = raw/100
-          (instance pitch_deg). Builders accept raw -9000 to 9000.
+          Pitch angle. Payload bytes 2-3. Unit: degrees. Engineering value = raw/100 (instance
+          pitch_deg). Builders accept raw -9000 to 9000.
       - id: roll
         -orig-id: Roll
         type: s2
         doc: |
-          Roll angle. Payload byte bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
+          Roll angle. Payload bytes 4-5. Unit: degrees. Engineering value = raw/100 (instance
           roll_deg). Builders accept raw -18000 to 18000.
       - id: gyro_x
         -orig-id: GyroX
         type: s2
         doc: |
-          Angular rate about X (lateral axis). Payload byte bytes 6-7. Unit: degrees per second.
+          Angular rate about X (lateral axis). Payload bytes 6-7. Unit: degrees per second.
           Engineering value = raw/KG (instance gyro_x_dps of the type orientation_sensors_scaled).
       - id: gyro_y
         -orig-id: GyroY
         type: s2
         doc: |
-          Angular rate about Y (longitudinal axis). Payload byte bytes 8-9. Unit: degrees per
-          second. Engineering value = raw/KG (instance gyro_y_dps of the type
-          orientation_sensors_scaled).
+          Angular rate about Y (longitudinal axis). Payload bytes 8-9. Unit: degrees per second.
+          Engineering value = raw/KG (instance gyro_y_dps of the type orientation_sensors_scaled).
       - id: gyro_z
         -orig-id: GyroZ
         type: s2
         doc: |
-          Angular rate about Z (vertical axis). Payload byte bytes 10-11. Unit: degrees per
-          second. Engineering value = raw/KG (instance gyro_z_dps of the type
-          orientation_sensors_scaled).
+          Angular rate about Z (vertical axis). Payload bytes 10-11. Unit: degrees per second.
+          Engineering value = raw/KG (instance gyro_z_dps of the type orientation_sensors_scaled).
       - id: acc_x
         -orig-id: AccX
         type: s2
         doc: |
-          Linear acceleration along X. Payload byte bytes 12-13. Unit: standard gravity.
-          Engineering value = raw/KA (instance acc_x_g of the type orientation_sensors_scaled).
+          Linear acceleration along X. Payload bytes 12-13. Unit: standard gravity. Engineering
+          value = raw/KA (instance acc_x_g of the type orientation_sensors_scaled).
       - id: acc_y
         -orig-id: AccY
         type: s2
         doc: |
-          Linear acceleration along Y. Payload byte bytes 14-15. Unit: standard gravity.
-          Engineering value = raw/KA (instance acc_y_g of the type orientation_sensors_scaled).
+          Linear acceleration along Y. Payload bytes 14-15. Unit: standard gravity. Engineering
+          value = raw/KA (instance acc_y_g of the type orientation_sensors_scaled).
       - id: acc_z
         -orig-id: AccZ
         type: s2
         doc: |
-          Linear acceleration along Z. Payload byte bytes 16-17. Unit: standard gravity.
-          Engineering value = raw/KA (instance acc_z_g of the type orientation_sensors_scaled).
+          Linear acceleration along Z. Payload bytes 16-17. Unit: standard gravity. Engineering
+          value = raw/KA (instance acc_z_g of the type orientation_sensors_scaled).
       - id: mag_x
         -orig-id: MagX
         type: s2
         doc: |
-          Magnetic field along X. Payload byte bytes 18-19. Unit: nanotesla. Engineering value =
-          raw*10 (instance mag_x_nt).
+          Magnetic field along X. Payload bytes 18-19. Unit: nanotesla. Engineering value = raw*10
+          (instance mag_x_nt).
       - id: mag_y
         -orig-id: MagY
         type: s2
         doc: |
-          Magnetic field along Y. Payload byte bytes 20-21. Unit: nanotesla. Engineering value =
-          raw*10 (instance mag_y_nt).
+          Magnetic field along Y. Payload bytes 20-21. Unit: nanotesla. Engineering value = raw*10
+          (instance mag_y_nt).
       - id: mag_z
         -orig-id: MagZ
         type: s2
         doc: |
-          Magnetic field along Z. Payload byte bytes 22-23. Unit: nanotesla. Engineering value =
-          raw*10 (instance mag_z_nt).
+          Magnetic field along Z. Payload bytes 22-23. Unit: nanotesla. Engineering value = raw*10
+          (instance mag_z_nt).
       - id: reserved
         -orig-id: Reserved
         size: 4
-        doc: 'Payload byte bytes 24-27. Reserved: kept verbatim.'
+        doc: 'Payload bytes 24-27. Reserved: kept verbatim.'
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
+          Unit Status Word (section 6.5). Payload bytes 28-29. Unit Status Word: see the type
           status_word.
       - id: vdd
         -orig-id: Vdd
         type: u2
         doc: |
-          AHRS input voltage. Payload byte bytes 30-31. Unit: volts DC. Engineering value =
-          raw/1000 (instance vdd_v).
+          AHRS input voltage. Payload bytes 30-31. Unit: volts DC. Engineering value = raw/1000
+          (instance vdd_v).
       - id: utermo
         -orig-id: Utermo
         type: s2
         doc: |
-          Average temperature of the 3 accelerometers. Payload byte bytes 32-33. Unit: degrees
-          Celsius. Engineering value = raw/10 (instance utermo_degc).
+          Average temperature of the 3 accelerometers. Payload bytes 32-33. Unit: degrees Celsius.
+          Engineering value = raw/10 (instance utermo_degc).
     instances:
       heading_deg:
         value: 'heading / 100.0'
@@ -585,79 +582,76 @@ types:
         -orig-id: Gyros bias
         type: f4
         doc: |
-          Gyro X bias. Payload byte bytes 0-3. Unit: ADC codes (no physical scale given by the
-          ICD).
+          Gyro X bias. Payload bytes 0-3. Unit: ADC codes (no physical scale given by the ICD).
       - id: gyro_bias_y
         -orig-id: Gyros bias
         type: f4
         doc: |
-          Gyro Y bias. Payload byte bytes 4-7. Unit: ADC codes (no physical scale given by the
-          ICD).
+          Gyro Y bias. Payload bytes 4-7. Unit: ADC codes (no physical scale given by the ICD).
       - id: gyro_bias_z
         -orig-id: Gyros bias
         type: f4
         doc: |
-          Gyro Z bias. Payload byte bytes 8-11. Unit: ADC codes (no physical scale given by the
-          ICD).
+          Gyro Z bias. Payload bytes 8-11. Unit: ADC codes (no physical scale given by the ICD).
       - id: average_acc_x
         -orig-id: Average acceleration
         type: f4
         doc: |
-          Average acceleration along X. Payload byte bytes 12-15. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average acceleration along X. Payload bytes 12-15. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: average_acc_y
         -orig-id: Average acceleration
         type: f4
         doc: |
-          Average acceleration along Y. Payload byte bytes 16-19. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average acceleration along Y. Payload bytes 16-19. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: average_acc_z
         -orig-id: Average acceleration
         type: f4
         doc: |
-          Average acceleration along Z. Payload byte bytes 20-23. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average acceleration along Z. Payload bytes 20-23. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: average_mag_x
         -orig-id: Average magn. field
         type: f4
         doc: |
-          Average magnetic field along X. Payload byte bytes 24-27. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average magnetic field along X. Payload bytes 24-27. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: average_mag_y
         -orig-id: Average magn. field
         type: f4
         doc: |
-          Average magnetic field along Y. Payload byte bytes 28-31. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average magnetic field along Y. Payload bytes 28-31. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: average_mag_z
         -orig-id: Average magn. field
         type: f4
         doc: |
-          Average magnetic field along Z. Payload byte bytes 32-35. Unit: ADC codes (no physical
-          scale given by the ICD).
+          Average magnetic field along Z. Payload bytes 32-35. Unit: ADC codes (no physical scale
+          given by the ICD).
       - id: initial_heading
         -orig-id: Initial Heading
         type: f4
         doc: |
-          Heading at the end of alignment. Payload byte bytes 36-39. Unit: degrees. Builders
-          accept raw 0 to 360.
+          Heading at the end of alignment. Payload bytes 36-39. Unit: degrees. Builders accept raw
+          0 to 360.
       - id: initial_roll
         -orig-id: Initial Roll
         type: f4
         doc: |
-          Roll at the end of alignment. Payload byte bytes 40-43. Unit: degrees. Builders accept
-          raw -180 to 180.
+          Roll at the end of alignment. Payload bytes 40-43. Unit: degrees. Builders accept raw
+          -180 to 180.
       - id: initial_pitch
         -orig-id: Initial Pitch
         type: f4
         doc: |
-          Pitch at the end of alignment. Payload byte bytes 44-47. Unit: degrees. Builders accept
-          raw -90 to 90.
+          Pitch at the end of alignment. Payload bytes 44-47. Unit: degrees. Builders accept raw
+          -90 to 90.
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word: 0 after a successful alignment, non-zero otherwise. Payload byte bytes
+          Unit Status Word: 0 after a successful alignment, non-zero otherwise. Payload bytes
           48-49. Unit Status Word: see the type status_word. See erratum E27.
   ahrs_parameters_load:
     doc: |
@@ -670,69 +664,67 @@ types:
         -orig-id: Update rate
         type: u2
         doc: |
-          Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz). Payload byte bytes
-          0-1. Unit: hertz. Builders accept raw 1 to 100. Default 100. See erratum E22.
+          Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz). Payload bytes 0-1.
+          Unit: hertz. Builders accept raw 1 to 100. Default 100. See erratum E22.
       - id: alignment_time
         -orig-id: Initial alignment time
         type: u2
         doc: |
           Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
-          Payload byte bytes 2-3. Unit: seconds. Builders accept raw 1 to 65535. Default 30. See
+          Payload bytes 2-3. Unit: seconds. Builders accept raw 1 to 65535. Default 30. See
           erratum E30.
       - id: declination
         -orig-id: Magnetic declination, Mdec
         type: f4
         doc: |
           Magnetic declination; a value above 360 asks the AHRS to compute it from position and
-          date. Payload byte bytes 4-7. Unit: degrees. Encoding declination: -180 to 180 deg, or
-          above 360 (builders write 999) to have the AHRS compute it.
+          date. Payload bytes 4-7. Unit: degrees. Encoding declination: -180 to 180 deg, or above
+          360 (builders write 999) to have the AHRS compute it.
       - id: latitude
         -orig-id: Latitude
         type: f4
-        doc: 'Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
+        doc: 'Latitude. Payload bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
         -orig-id: Longitude
         type: f4
-        doc: |
-          Longitude. Payload byte bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.
+        doc: 'Longitude. Payload bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.'
       - id: altitude
         -orig-id: Altitude
         type: f4
         doc: |
-          Altitude. Payload byte bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000.
-          See erratum E31.
+          Altitude. Payload bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000. See
+          erratum E31.
       - id: date
         -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
-          Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 20-23. Unit: fractional
-          year, see encoding `date`. Builders accept raw 1900 to 2200. Encoding date: Year +
-          (Month - 1)/12 + Day/365, as a float. Years 1900 to 2199.
+          Date as Year + (Month - 1)/12 + Day/365. Payload bytes 20-23. Unit: fractional year, see
+          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
       - id: alignment_angle_a1
         -orig-id: Alignment angle A1
         type: f4
         doc: |
           Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its
-          horizontal plane, clockwise positive (Appendix B). Payload byte bytes 24-27. Unit:
-          degrees. Builders accept raw -360 to 360. See erratum E31.
+          horizontal plane, clockwise positive (Appendix B). Payload bytes 24-27. Unit: degrees.
+          Builders accept raw -360 to 360. See erratum E31.
       - id: alignment_angle_a2
         -orig-id: Alignment angle A2
         type: f4
         doc: |
           Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up
-          positive (Appendix B). Payload byte bytes 28-31. Unit: degrees. Builders accept raw -360
-          to 360. See erratum E31.
+          positive (Appendix B). Payload bytes 28-31. Unit: degrees. Builders accept raw -360 to
+          360. See erratum E31.
       - id: alignment_angle_a3
         -orig-id: Alignment angle A3
         type: f4
         doc: |
           Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive
-          (Appendix B). Payload byte bytes 32-35. Unit: degrees. Builders accept raw -360 to 360.
-          See erratum E31.
+          (Appendix B). Payload bytes 32-35. Unit: degrees. Builders accept raw -360 to 360. See
+          erratum E31.
       - id: reserved
         -orig-id: Reserved
         size: 14
-        doc: 'Should be all zeros. Payload byte bytes 36-49. Reserved: kept verbatim.'
+        doc: 'Should be all zeros. Payload bytes 36-49. Reserved: kept verbatim.'
   ahrs_parameters_read:
     doc: |
       Parameters read (Table 6.10), 50 bytes, device to host. The AHRS answer to ReadAHRSPar
@@ -743,61 +735,59 @@ types:
         -orig-id: Measurement rate
         type: u2
         doc: |
-          Output data rate. Payload byte bytes 0-1. Unit: hertz. Builders accept raw 1 to 100. See
+          Output data rate. Payload bytes 0-1. Unit: hertz. Builders accept raw 1 to 100. See
           erratum E24.
       - id: alignment_time
         -orig-id: Initial alignment time
         type: u2
         doc: |
-          Initial alignment duration. Payload byte bytes 2-3. Unit: seconds. Builders accept raw 1
-          to 65535. See erratum E30.
+          Initial alignment duration. Payload bytes 2-3. Unit: seconds. Builders accept raw 1 to
+          65535. See erratum E30.
       - id: declination
         -orig-id: Magnetic declination
         type: f4
         doc: |
-          Magnetic declination; a value above 360 means the AHRS computes it. Payload byte bytes
-          4-7. Unit: degrees. Encoding declination: -180 to 180 deg, or above 360 (builders write
-          999) to have the AHRS compute it.
+          Magnetic declination; a value above 360 means the AHRS computes it. Payload bytes 4-7.
+          Unit: degrees. Encoding declination: -180 to 180 deg, or above 360 (builders write 999)
+          to have the AHRS compute it.
       - id: latitude
         -orig-id: Latitude
         type: f4
-        doc: 'Latitude. Payload byte bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
+        doc: 'Latitude. Payload bytes 8-11. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
         -orig-id: Longitude
         type: f4
-        doc: |
-          Longitude. Payload byte bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.
+        doc: 'Longitude. Payload bytes 12-15. Unit: degrees. Builders accept raw -180 to 180.'
       - id: altitude
         -orig-id: Altitude
         type: f4
         doc: |
-          Altitude. Payload byte bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000.
-          See erratum E31.
+          Altitude. Payload bytes 16-19. Unit: metres. Builders accept raw -20000 to 100000. See
+          erratum E31.
       - id: date
         -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
-          Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 20-23. Unit: fractional
-          year, see encoding `date`. Builders accept raw 1900 to 2200. Encoding date: Year +
-          (Month - 1)/12 + Day/365, as a float. Years 1900 to 2199.
+          Date as Year + (Month - 1)/12 + Day/365. Payload bytes 20-23. Unit: fractional year, see
+          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
       - id: alignment_angle_a1
         -orig-id: Alignment angle A1
         type: f4
         doc: |
-          Mounting angle 1 (Appendix B). Payload byte bytes 24-27. Unit: degrees. Builders accept
-          raw -360 to 360. See erratum E31.
+          Mounting angle 1 (Appendix B). Payload bytes 24-27. Unit: degrees. Builders accept raw
+          -360 to 360. See erratum E31.
       - id: alignment_angle_a2
         -orig-id: Alignment angle A2
         type: f4
         doc: |
-          Mounting angle 2 (Appendix B). Payload byte bytes 28-31. Unit: degrees. Builders accept
-          raw -360 to 360. See erratum E31.
+          Mounting angle 2 (Appendix B). Payload bytes 28-31. Unit: degrees. Builders accept raw
+          -360 to 360. See erratum E31.
       - id: alignment_angle_a3
         -orig-id: Alignment angle A3
         type: f4
         doc: |
-          Mounting angle 3 (Appendix B). Payload byte bytes 32-35. Unit: degrees. Builders accept
-          raw -360 to 360. See erratum E31.
+          Mounting angle 3 (Appendix B). Payload bytes 32-35. Unit: degrees. Builders accept raw
+          -360 to 360. See erratum E31.
       - id: device_id
         -orig-id: Device ID
         type: str
@@ -805,12 +795,11 @@ types:
         encoding: ISO-8859-1
         pad-right: 0
         doc: |
-          Device identifier (read only). Payload byte bytes 36-43. ISO-8859-1, trailing NULs
-          removed.
+          Device identifier (read only). Payload bytes 36-43. ISO-8859-1, trailing NULs removed.
       - id: reserved
         -orig-id: Reserved
         size: 6
-        doc: 'Payload byte bytes 44-49. Reserved: kept verbatim.'
+        doc: 'Payload bytes 44-49. Reserved: kept verbatim.'
   firmware_version:
     doc: |
       Firmware version (Table 6.11), 50 bytes, device to host. The AHRS answer to GetVerFirmware
@@ -824,7 +813,7 @@ types:
         encoding: ISO-8859-1
         pad-right: 0
         doc: |
-          Firmware version text, NUL-padded. Payload byte bytes 0-49. ISO-8859-1, trailing NULs
+          Firmware version text, NUL-padded. Payload bytes 0-49. ISO-8859-1, trailing NULs
           removed.
   bit_result:
     doc: |
@@ -836,13 +825,13 @@ types:
         -orig-id: Utermo100
         type: s2
         doc: |
-          AHRS temperature in 1/100 degC. Payload byte bytes 0-1. Unit: degrees Celsius.
-          Engineering value = raw/100 (instance utermo100_degc). See erratum E4.
+          AHRS temperature in 1/100 degC. Payload bytes 0-1. Unit: degrees Celsius. Engineering
+          value = raw/100 (instance utermo100_degc). See erratum E4.
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word (section 6.5). Payload byte bytes 2-3. Unit Status Word: see the type
+          Unit Status Word (section 6.5). Payload bytes 2-3. Unit Status Word: see the type
           status_word.
     instances:
       utermo100_degc:
@@ -858,36 +847,34 @@ types:
         -orig-id: Reserved
         type: f4
         doc: |
-          Reference azimuth (6.4.8); no influence on 2D calibration. Payload byte bytes 0-3. Unit:
+          Reference azimuth (6.4.8); no influence on 2D calibration. Payload bytes 0-3. Unit:
           degrees. Builders accept raw -360 to 360. Default 0. See erratum E8.
       - id: accumulation_time
         -orig-id: Time of data accumulation in one run
         type: u2
         doc: |
-          Data accumulation time of one run. Payload byte bytes 4-5. Unit: seconds. Builders
-          accept raw 1 to 65535. See erratum E30.
+          Data accumulation time of one run. Payload bytes 4-5. Unit: seconds. Builders accept raw
+          1 to 65535. See erratum E30.
       - id: latitude
         -orig-id: Latitude
         type: f4
-        doc: 'Latitude. Payload byte bytes 6-9. Unit: degrees. Builders accept raw -90 to 90.'
+        doc: 'Latitude. Payload bytes 6-9. Unit: degrees. Builders accept raw -90 to 90.'
       - id: longitude
         -orig-id: Longitude
         type: f4
-        doc: |
-          Longitude. Payload byte bytes 10-13. Unit: degrees. Builders accept raw -180 to 180.
+        doc: 'Longitude. Payload bytes 10-13. Unit: degrees. Builders accept raw -180 to 180.'
       - id: altitude
         -orig-id: Altitude
         type: f4
         doc: |
-          Altitude. Payload byte bytes 14-17. Unit: metres. Builders accept raw -20000 to 100000.
-          See erratum E31.
+          Altitude. Payload bytes 14-17. Unit: metres. Builders accept raw -20000 to 100000. See
+          erratum E31.
       - id: date
         -orig-id: Date (Year, Month, Day)
         type: f4
         doc: |
-          Date as Year + (Month - 1)/12 + Day/365. Payload byte bytes 18-21. Unit: fractional
-          year, see encoding `date`. Builders accept raw 1900 to 2200. Encoding date: Year +
-          (Month - 1)/12 + Day/365, as a float. Years 1900 to 2199.
+          Date as Year + (Month - 1)/12 + Day/365. Payload bytes 18-21. Unit: fractional year, see
+          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
   calibration_result:
     doc: |
       Calibration result (Table 6.14), 52 bytes, device to host. Sent when a calibration completes
@@ -899,89 +886,80 @@ types:
         type: u1
         enum: calibration_type
         doc: |
-          1 for 2D, 2 for 2D-2T, 3 for 3D calibration. Payload byte byte 0. Builders accept raw 1
-          to 3. Enum calibration_type (Table 6.14, Table 6.15).
+          1 for 2D, 2 for 2D-2T, 3 for 3D calibration. Payload byte 0. Builders accept raw 1 to 3.
+          Enum calibration_type (Table 6.14, Table 6.15).
       - id: runs_used
         -orig-id: Number of used calibration runs
         type: u1
-        doc: Number of calibration runs used. Payload byte byte 1.
+        doc: Number of calibration runs used. Payload byte 1.
       - id: data_used
         -orig-id: Percent of used data points
         type: u1
         doc: |
-          Percent of data points used (2D and 3D calibrations only). Payload byte byte 2. Unit:
+          Percent of data points used (2D and 3D calibrations only). Payload byte 2. Unit:
           percent. Builders accept raw 0 to 100.
       - id: success
         -orig-id: Calibration success
         type: u1
         doc: |
           0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful
-          without an estimate. Payload byte byte 3. Encoding calibration_success: 0: not
-          successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware
-          4.9.9.0); 255: successful, no estimate. See erratum E26.
+          without an estimate. Payload byte 3. Encoding calibration_success: 0: not successful;
+          1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware 4.9.9.0); 255:
+          successful, no estimate. See erratum E26.
       - id: tm_c_11
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 1. Payload byte bytes 4-7. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 1. Payload bytes 4-7. Unit: dimensionless.'
       - id: tm_c_12
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 2. Payload byte bytes 8-11. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 2. Payload bytes 8-11. Unit: dimensionless.'
       - id: tm_c_13
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 3. Payload byte bytes 12-15. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 3. Payload bytes 12-15. Unit: dimensionless.'
       - id: tm_c_21
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 1. Payload byte bytes 16-19. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 1. Payload bytes 16-19. Unit: dimensionless.'
       - id: tm_c_22
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 2. Payload byte bytes 20-23. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 2. Payload bytes 20-23. Unit: dimensionless.'
       - id: tm_c_23
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 3. Payload byte bytes 24-27. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 3. Payload bytes 24-27. Unit: dimensionless.'
       - id: tm_c_31
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 1. Payload byte bytes 28-31. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 1. Payload bytes 28-31. Unit: dimensionless.'
       - id: tm_c_32
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 2. Payload byte bytes 32-35. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 2. Payload bytes 32-35. Unit: dimensionless.'
       - id: tm_c_33
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 3. Payload byte bytes 36-39. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 3. Payload bytes 36-39. Unit: dimensionless.'
       - id: hm_0_x
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 1. Payload byte bytes 40-43. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E1.
+          Hard-iron vector Hm_0 component 1. Payload bytes 40-43. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E1.
       - id: hm_0_y
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 2. Payload byte bytes 44-47. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E1.
+          Hard-iron vector Hm_0 component 2. Payload bytes 44-47. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E1.
       - id: hm_0_z
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 3. Payload byte bytes 48-51. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E1.
+          Hard-iron vector Hm_0 component 3. Payload bytes 48-51. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E1.
   calibration_run_result:
     doc: |
       2D-2T calibration run result (Table 6.15), 30 bytes, device to host. Sent after each run of
@@ -993,51 +971,51 @@ types:
         type: u1
         enum: calibration_type
         doc: |
-          2 for 2D-2T calibration. Payload byte byte 0. Builders accept raw 2 to 2. Enum
+          2 for 2D-2T calibration. Payload byte 0. Builders accept raw 2 to 2. Enum
           calibration_type (Table 6.14, Table 6.15).
       - id: run
         -orig-id: Calibration run
         type: u1
-        doc: Number of this run (1, 2, ...). Payload byte byte 1. Builders accept raw 1 to 255.
+        doc: Number of this run (1, 2, ...). Payload byte 1. Builders accept raw 1 to 255.
       - id: data_used
         -orig-id: Percent of used data points
         type: u1
         doc: |
-          Percent of data points used. Payload byte byte 2. Unit: percent. Builders accept raw 0
-          to 100.
+          Percent of data points used. Payload byte 2. Unit: percent. Builders accept raw 0 to
+          100.
       - id: success
         -orig-id: Calibration success
         type: u1
         doc: |
           0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255:
-          successful without an estimate. Payload byte byte 3. Encoding calibration_success: 0:
-          not successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since
-          firmware 4.9.9.0); 255: successful, no estimate. See erratum E26.
+          successful without an estimate. Payload byte 3. Encoding calibration_success: 0: not
+          successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware
+          4.9.9.0); 255: successful, no estimate. See erratum E26.
       - id: reserved_1
         -orig-id: Reserved
         size: 4
-        doc: 'Payload byte bytes 4-7. Reserved: kept verbatim. See erratum E32.'
+        doc: 'Payload bytes 4-7. Reserved: kept verbatim. See erratum E32.'
       - id: average_pitch
         -orig-id: Average pitch, deg
         type: f4
         doc: |
-          Average pitch during the run. Payload byte bytes 8-11. Unit: degrees. Builders accept
-          raw -90 to 90.
+          Average pitch during the run. Payload bytes 8-11. Unit: degrees. Builders accept raw -90
+          to 90.
       - id: average_roll
         -orig-id: Average roll, deg
         type: f4
         doc: |
-          Average roll during the run. Payload byte bytes 12-15. Unit: degrees. Builders accept
-          raw -180 to 180.
+          Average roll during the run. Payload bytes 12-15. Unit: degrees. Builders accept raw
+          -180 to 180.
       - id: reserved_2
         -orig-id: Reserved
         size: 12
-        doc: 'Payload byte bytes 16-27. Reserved: kept verbatim. See erratum E32.'
+        doc: 'Payload bytes 16-27. Reserved: kept verbatim. See erratum E32.'
       - id: usw
         -orig-id: USW
         type: status_word
         doc: |
-          Unit Status Word (section 6.5). Payload byte bytes 28-29. Unit Status Word: see the type
+          Unit Status Word (section 6.5). Payload bytes 28-29. Unit Status Word: see the type
           status_word.
   calibration_run_parameters:
     doc: |
@@ -1049,7 +1027,7 @@ types:
       - id: reserved
         -orig-id: Reserved
         size: 6
-        doc: 'Payload byte bytes 0-5. Reserved: kept verbatim. See erratum E32.'
+        doc: 'Payload bytes 0-5. Reserved: kept verbatim. See erratum E32.'
   calibration_status:
     doc: |
       Calibration results read back (Table 6.17), 52 bytes, device to host. The AHRS answer to
@@ -1062,87 +1040,78 @@ types:
         enum: calibration_status_type
         doc: |
           0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other
-          software. Payload byte byte 0. Enum calibration_status_type (Table 6.17). Values above
-          0x80 mean parameters loaded by other software and have no name in the enum.
+          software. Payload byte 0. Enum calibration_status_type (Table 6.17). Values above 0x80
+          mean parameters loaded by other software and have no name in the enum.
       - id: runs_used
         -orig-id: Number of used calibration runs
         type: u1
-        doc: Number of calibration runs used. Payload byte byte 1.
+        doc: Number of calibration runs used. Payload byte 1.
       - id: reserved
         -orig-id: Reserved
         size: 1
-        doc: 'Payload byte byte 2. Reserved: kept verbatim. See erratum E3.'
+        doc: 'Payload byte 2. Reserved: kept verbatim. See erratum E3.'
       - id: success
         -orig-id: Calibration success
         type: u1
         doc: |
           0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an
-          estimate. Payload byte byte 3. Encoding calibration_success: 0: not successful; 1..254:
+          estimate. Payload byte 3. Encoding calibration_success: 0: not successful; 1..254:
           predicted maximum (3 sigma) heading error, deg*10 (since firmware 4.9.9.0); 255:
           successful, no estimate. See erratum E26.
       - id: tm_c_11
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 1. Payload byte bytes 4-7. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 1. Payload bytes 4-7. Unit: dimensionless.'
       - id: tm_c_12
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 2. Payload byte bytes 8-11. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 2. Payload bytes 8-11. Unit: dimensionless.'
       - id: tm_c_13
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 1 column 3. Payload byte bytes 12-15. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 1 column 3. Payload bytes 12-15. Unit: dimensionless.'
       - id: tm_c_21
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 1. Payload byte bytes 16-19. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 1. Payload bytes 16-19. Unit: dimensionless.'
       - id: tm_c_22
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 2. Payload byte bytes 20-23. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 2. Payload bytes 20-23. Unit: dimensionless.'
       - id: tm_c_23
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 2 column 3. Payload byte bytes 24-27. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 2 column 3. Payload bytes 24-27. Unit: dimensionless.'
       - id: tm_c_31
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 1. Payload byte bytes 28-31. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 1. Payload bytes 28-31. Unit: dimensionless.'
       - id: tm_c_32
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 2. Payload byte bytes 32-35. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 2. Payload bytes 32-35. Unit: dimensionless.'
       - id: tm_c_33
         -orig-id: Matrix for soft iron correction
         type: f4
-        doc: |
-          Soft-iron matrix Tm_c row 3 column 3. Payload byte bytes 36-39. Unit: dimensionless.
+        doc: 'Soft-iron matrix Tm_c row 3 column 3. Payload bytes 36-39. Unit: dimensionless.'
       - id: hm_0_x
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 1. Payload byte bytes 40-43. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E2.
+          Hard-iron vector Hm_0 component 1. Payload bytes 40-43. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E2.
       - id: hm_0_y
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 2. Payload byte bytes 44-47. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E2.
+          Hard-iron vector Hm_0 component 2. Payload bytes 44-47. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E2.
       - id: hm_0_z
         -orig-id: Matrix for hard iron correction
         type: f4
         doc: |
-          Hard-iron vector Hm_0 component 3. Payload byte bytes 48-51. Unit: ADC codes (no
-          physical scale given by the ICD). See erratum E2.
+          Hard-iron vector Hm_0 component 3. Payload bytes 48-51. Unit: ADC codes (no physical
+          scale given by the ICD). See erratum E2.
   acknowledgement:
     doc: |
       Acknowledgement (6.3.1 (Table 6.2 with a one-word payload)), 2 bytes, device to host. The
@@ -1153,8 +1122,7 @@ types:
         -orig-id: Check sum
         type: u2
         doc: |
-          Checksum of the acknowledged message, message type through payload. Payload byte bytes
-          0-1.
+          Checksum of the acknowledged message, message type through payload. Payload bytes 0-1.
 enums:
   message_type:
     0:

@@ -175,11 +175,11 @@ def scaled_type_id(payload: Payload) -> str:
     return ksy_id(f"{payload.name}_scaled")
 
 
-def byte_range(field: Field, what: str) -> str:
+def byte_range(field: Field) -> str:
     """`bytes 4-5` (ICD style, inclusive)."""
     if field.size == 1:
-        return f"{what} byte {field.offset}"
-    return f"{what} bytes {field.offset}-{field.end - 1}"
+        return f"byte {field.offset}"
+    return f"bytes {field.offset}-{field.end - 1}"
 
 
 def number(value: float) -> str:
@@ -190,7 +190,7 @@ def number(value: float) -> str:
 def field_doc(field: Field, payload: Payload, spec: Spec) -> str:
     """The doc of a payload field: the spec's doc, then unit, scale, range, enum, encoding."""
     parts = [field.doc] if field.doc else []
-    parts.append(f"Payload {byte_range(field, 'byte')}.")
+    parts.append(f"Payload {byte_range(field)}.")
     if field.unit is not None:
         parts.append(f"Unit: {field.unit.doc}.")
     if field.scale is not None:
@@ -230,7 +230,7 @@ def _encoding_doc(name: str, spec: Spec) -> str:
     if name == "usw":
         return "Unit Status Word: see the type status_word."
     if name == "date" and spec.date is not None:
-        return f"Encoding date: {spec.date.doc} Years {spec.date.year_min} to {spec.date.year_max}."
+        return f"Encoding date: years {spec.date.year_min} to {spec.date.year_max}."
     if name == "declination" and spec.declination is not None:
         d = spec.declination
         return (
