@@ -497,20 +497,39 @@ class Runner:
             self.stderr.append(line.decode("utf-8", "replace").rstrip())
 
     def ask(self, line: str, timeout: float) -> str:
-        assert self.proc.stdin is not None
+        """Send one request and wait for its answer, both within `timeout` seconds."""
+        stdin = self.proc.stdin
+        assert stdin is not None
+        deadline = time.monotonic() + timeout
+        failed: list[OSError] = []
+
+        def write() -> None:  # in a thread: a runner that stops reading must not block the harness
+            try:
+                stdin.write(line.encode("ascii") + b"\n")
+                stdin.flush()
+            except OSError as err:
+                failed.append(err)
+
+        writer = threading.Thread(target=write, daemon=True)
+        writer.start()
+        writer.join(timeout)
+        if writer.is_alive():
+            self.kill()
+            raise RunnerGoneError(f"did not read its request within {timeout:g} s")
+        if failed:
+            raise RunnerGoneError(self._why("closed its input"))
         try:
-            self.proc.stdin.write(line.encode("ascii") + b"\n")
-            self.proc.stdin.flush()
-        except (BrokenPipeError, OSError):
-            raise RunnerGoneError(self._why("closed its input")) from None
-        try:
-            answer = self.lines.get(timeout=timeout)
+            answer = self.lines.get(timeout=max(0.0, deadline - time.monotonic()))
         except queue.Empty:
-            self.close()
+            self.kill()
             raise RunnerGoneError(f"no answer within {timeout:g} s") from None
         if answer is None:
             raise RunnerGoneError(self._why("exited"))
         return answer.decode("latin-1").rstrip("\r\n")
+
+    def kill(self) -> None:
+        self.proc.kill()
+        self.proc.wait()
 
     def _why(self, what: str) -> str:
         try:

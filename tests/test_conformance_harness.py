@@ -224,6 +224,15 @@ def test_a_runner_that_hangs_times_out(tmp_path: Path) -> None:
     assert code == 1 and "2 passed, 1 FAILED" in text and "no answer within 1 s" in text
 
 
+def test_a_runner_that_stops_reading_times_out(tmp_path: Path) -> None:
+    big = [{"id": "s/big", "kind": "stream", "input": {"chunks": ["00" * 300_000]}, "expect": {"discarded": 300_000}}]
+    vectors = write_suite(tmp_path / "v", big)
+    (tmp_path / "deaf.py").write_text("import time\ntime.sleep(30)\n")
+    bindings = register(tmp_path / "b", {}, ["stream"], command=["{python}", str(tmp_path / "deaf.py")])
+    code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings), "--timeout", "1")
+    assert code == 1 and "did not read its request within 1 s" in text
+
+
 def test_an_invalid_answer_is_shown_verbatim(tmp_path: Path) -> None:
     vectors = write_suite(tmp_path / "v", CHECKSUMS[:1])
     bindings = register(tmp_path / "b", {"checksum -": "crash ValueError"}, ["checksum"])
