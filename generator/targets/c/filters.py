@@ -1,0 +1,203 @@
+"""Small filters for the C templates: C types, literals and comments from model values."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+from generator import naming
+from generator.model import Field, NmeaField, Spec
+
+_UNSIGNED = ((0xFF, "uint8_t"), (0xFFFF, "uint16_t"), (0xFFFFFFFF, "uint32_t"))
+_SIGNED = ((0x7F, "int8_t"), (0x7FFF, "int16_t"), (0x7FFFFFFF, "int32_t"))
+
+
+def c_int_type(low: float, high: float) -> str:
+    """The smallest <stdint.h> type holding every integer in low..high."""
+    if low >= 0:
+        for top, name in _UNSIGNED:
+            if high <= top:
+                return name
+    else:
+        for top, name in _SIGNED:
+            if -top - 1 <= low and high <= top:
+                return name
+    raise ValueError(f"no 32-bit C integer type holds {low}..{high}")
+
+
+def c_index_type(count: int) -> str:
+    """A type for indices 0..count (tables of names, fields, bounds)."""
+    return c_int_type(0, count)
+
+
+def c_scalar(f: Field) -> str:
+    """The C type of a numeric field's struct member (same width and signedness as the wire)."""
+    if f.kind == "float":
+        if f.size != 4:
+            raise ValueError(f"{f.name}: only 32-bit floats are supported")
+        return "float"
+    if f.kind in ("unsigned", "signed"):
+        prefix = "uint" if f.kind == "unsigned" else "int"
+        return f"{prefix}{8 * f.size}_t"
+    raise ValueError(f"{f.name} is not numeric")
+
+
+def c_member(f: Field) -> str:
+    """The struct member declaring a payload field (char fields keep room for a NUL)."""
+    if f.kind == "char":
+        return f"char {f.name}[{f.size} + 1]"
+    if f.kind == "reserved":
+        return f"uint8_t {f.name}[{f.size}]"
+    return f"{c_scalar(f)} {f.name}"
+
+
+def c_nmea_type(f: NmeaField) -> str:
+    return c_int_type(f.min, f.max)
+
+
+def c_double(value: float) -> str:
+    """An exact C double literal."""
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError("no literal for a non-finite value")
+    text = repr(value)
+    if "e" not in text and "." not in text:
+        text += ".0"
+    return text
+
+
+def c_float(value: float) -> str:
+    return c_double(value) + "f"
+
+
+def c_int(value: float) -> str:
+    """A C integer literal: unsigned suffix for non-negative values, INT32_MIN-safe for negatives."""
+    number = int(value)
+    if number != value:
+        raise ValueError(f"{value} is not an integer")
+    if number >= 0:
+        return f"{number}u" if number > 0x7FFF else str(number)
+    if number == -0x80000000:
+        return "(-2147483647 - 1)"
+    return str(number)
+
+
+def c_string(text: str) -> str:
+    out = []
+    for ch in text:
+        code = ord(ch)
+        if ch in '"\\':
+            out.append("\\" + ch)
+        elif 0x20 <= code < 0x7F:
+            out.append(ch)
+        else:
+            out.append(f"\\{code:03o}")
+    return '"' + "".join(out) + '"'
+
+
+def c_comment(text: str, indent: int = 0, width: int = 100, first: str = "/** ", cont: str = " *  ") -> str:
+    """`text` as a block comment wrapped to `width` columns."""
+    pad = " " * indent
+    lines = naming.wrap(text, width - indent - len(first) - 3) or [""]
+    if len(lines) == 1:
+        return f"{pad}{first}{lines[0]} */"
+    body = [f"{pad}{first}{lines[0]}"] + [f"{pad}{cont}{line}" for line in lines[1:]]
+    return "\n".join(body) + " */"
+
+
+def doc_lines(text: str, width: int = 92) -> list[str]:
+    """Prose wrapped for ` * ` comment lines."""
+    return naming.wrap(text, width) or [""]
+
+
+def macro(*parts: str) -> str:
+    """ILAHRS_ + the upper-cased parts joined by underscores."""
+    return "_".join(["ILAHRS", *(naming.upper(p) for p in parts if p)])
+
+
+def hex_bytes(data: tuple[int, ...] | list[int]) -> str:
+    return " ".join(f"{b:02X}" for b in data)
+
+
+def unit_suffix(f: Field) -> str:
+    return f.unit.suffix if f.unit is not None else "value"
+
+
+def nmea_suffix(spec: Spec, f: NmeaField) -> str:
+    for unit in spec.units:
+        if unit.key == f.unit:
+            return unit.suffix
+    return "value"
+
+
+def shift_of(mask: int) -> int:
+    """Position of the lowest set bit of a non-zero mask."""
+    return (mask & -mask).bit_length() - 1
+
+
+
+
+def field_doc(f: Field) -> str:
+    """One comment for a payload struct member: what it is, its unit, scale, range and source."""
+    parts = [f.doc.rstrip(".") + "." if f.doc else ""]
+    facts = []
+    if f.unit is not None and f.scale is None:
+        facts.append(f.unit.doc)
+    if f.scale is not None:
+        div = f.scale.divisor_parameter or str(f.scale.divisor)
+        mul = f" x {f.scale.multiplier}" if f.scale.multiplier != 1 else ""
+        unit = f.unit.doc if f.unit is not None else "engineering units"
+        facts.append(f"{unit} = raw{mul}" + (f" / {div}" if div != "1" else ""))
+    if f.range is not None:
+        low, high = f.range
+        facts.append(f"builders accept {low:g}..{high:g}")
+    if f.encoding is not None:
+        facts.append(f"encoding {f.encoding}")
+    if f.kind == "char":
+        facts.append(f"{f.size} bytes, NUL-padded on the wire")
+    if f.kind == "reserved":
+        facts.append(f"{f.size} reserved bytes, kept verbatim")
+    if f.multiplexed_count:
+        facts.append(f"multiplexed: {f.multiplexed_count} quantities in successive frames")
+    facts.append(f"ICD: {f.icd_name}")
+    if f.erratum:
+        facts.append(f"erratum {f.erratum}")
+    return " ".join(p for p in parts if p) + " (" + "; ".join(facts) + ")"
+
+
+_RESPONSE_DOCS = {
+    "none": "Nothing.",
+    "ack": "An acknowledgement: a data frame carrying the checksum of the received message (ilahrs_ack_build()).",
+    "data": "A data block of a payload table (ilahrs_command_response_payload()).",
+    "output": "One block of the current output format.",
+}
+
+
+def response_doc(kind: str) -> str:
+    return _RESPONSE_DOCS.get(kind, f"Response kind `{kind}`.")
+
+
+def c_chars(text: str) -> str:
+    """`text` as a comma-separated list of character codes (for very long string tables)."""
+    return ", ".join(str(b) for b in text.encode("latin-1"))
+
+
+FILTERS: dict[str, Callable[..., Any]] = {
+    "c_int_type": c_int_type,
+    "c_index_type": c_index_type,
+    "c_scalar": c_scalar,
+    "c_member": c_member,
+    "c_nmea_type": c_nmea_type,
+    "c_double": c_double,
+    "c_float": c_float,
+    "c_int": c_int,
+    "c_string": c_string,
+    "c_comment": c_comment,
+    "doc_lines": doc_lines,
+    "macro": macro,
+    "hex_bytes": hex_bytes,
+    "unit_suffix": unit_suffix,
+    "shift_of": shift_of,
+    "c_chars": c_chars,
+}
