@@ -235,6 +235,7 @@ class Frame:
     fields: tuple[Field, ...]  # the fields between header and payload
     checksum: Field
     checksum_doc: str
+    checksum_algorithm: str
     message_types: tuple[MessageType, ...]
     min_length: int  # bounds of the message_length field a decoder accepts
     max_length: int
@@ -314,6 +315,8 @@ class DateEncoding:
     terms: tuple[DateTerm, ...]
     year_min: int
     year_max: int
+    decode: str
+    erratum: str | None
 
 
 @dataclass(frozen=True)
@@ -502,6 +505,7 @@ class Erratum:
 class Spec:
     name: str
     version: str
+    byte_order: str
     icd_title: str
     icd_revision: str
     icd_date: str
@@ -583,7 +587,7 @@ class Spec:
 
 
 def _field(
-    raw: dict[str, Any], path: PathKey, units: dict[str, Unit], date_years: tuple[int, int] | None = None
+    raw: dict[str, Any], path: PathKey, units: dict[str, Unit], date_bounds: tuple[float, float] | None = None
 ) -> Field:
     primitive = PRIMITIVES[raw["type"]]
     size = primitive.size if primitive.size is not None else int(raw["length"])
@@ -598,9 +602,8 @@ def _field(
     value_range = None
     if "range" in raw:
         value_range = (raw["range"][0], raw["range"][1])
-    elif raw.get("encoding") == "date" and date_years is not None:
-        # A date float lies between the first and the day after the last year of the encoding.
-        value_range = (float(date_years[0]), float(date_years[1] + 1))
+    elif raw.get("encoding") == "date" and date_bounds is not None:
+        value_range = date_bounds
     multiplexed = raw.get("multiplexed")
     return Field(
         name=raw["name"],
@@ -620,6 +623,31 @@ def _field(
         erratum=raw.get("erratum"),
         declared_offset=raw.get("offset"),
     )
+
+
+def _float32_toward(value: float, upward: bool) -> float:
+    """The nearest float32 value at or beyond `value` in the given direction."""
+    import struct
+
+    rounded: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    if (rounded < value and upward) or (rounded > value and not upward):
+        bits = struct.unpack("<i", struct.pack("<f", rounded))[0]
+        bits += 1 if (rounded >= 0) == upward else -1
+        rounded = struct.unpack("<f", struct.pack("<i", bits))[0]
+    return rounded
+
+
+def _date_bounds(raw: dict[str, Any]) -> tuple[float, float]:
+    """The floats a date field may hold: from the encoding of the first day of the first year to
+    that of the last day of the last year (E15: Dec 31 encodes past the next year's start),
+    widened to float32 values."""
+
+    def encode(year: int, month: int, day: int) -> float:
+        parts = {"year": year, "month": month, "day": day}
+        return float(sum((parts[t["part"]] + t["offset"]) / t["divisor"] for t in raw["terms"]))
+
+    low, high = raw["year_range"]
+    return _float32_toward(encode(low, 1, 1), upward=False), _float32_toward(encode(high, 12, 31), upward=True)
 
 
 def _doc(value: Any) -> str:
@@ -643,6 +671,7 @@ def build(loaded: LoadedSpec) -> Spec:
         fields=frame_fields,
         checksum=checksum,
         checksum_doc=_doc(fr["checksum"].get("doc")),
+        checksum_algorithm=fr["checksum"]["algorithm"],
         message_types=tuple(MessageType(t["name"], t["value"], _doc(t.get("doc"))) for t in fr["message_types"]),
         min_length=fr["message_length"]["min"],
         max_length=fr["message_length"]["max"],
@@ -672,7 +701,7 @@ def build(loaded: LoadedSpec) -> Spec:
         for i, c in enumerate(d["commands"])
     )
     date_raw = d.get("encodings", {}).get("date")
-    date_years = (date_raw["year_range"][0], date_raw["year_range"][1]) if date_raw else None
+    date_bounds = _date_bounds(date_raw) if date_raw else None
     payloads = tuple(
         Payload(
             name=p["name"],
@@ -681,7 +710,9 @@ def build(loaded: LoadedSpec) -> Spec:
             direction=p["direction"],
             size=p["size"],
             doc=_doc(p.get("doc")),
-            fields=tuple(_field(f, ("payloads", i, "fields", j), units, date_years) for j, f in enumerate(p["fields"])),
+            fields=tuple(
+                _field(f, ("payloads", i, "fields", j), units, date_bounds) for j, f in enumerate(p["fields"])
+            ),
             path=("payloads", i),
             erratum=p.get("erratum"),
         )
@@ -698,6 +729,8 @@ def build(loaded: LoadedSpec) -> Spec:
             terms=tuple(DateTerm(t["part"], t["offset"], t["divisor"]) for t in e["terms"]),
             year_min=e["year_range"][0],
             year_max=e["year_range"][1],
+            decode=e["decode"],
+            erratum=e.get("erratum"),
         )
     declination = None
     if "declination" in enc:
@@ -768,6 +801,7 @@ def build(loaded: LoadedSpec) -> Spec:
     return Spec(
         name=d["spec"]["name"],
         version=d["spec"]["version"],
+        byte_order=d["byte_order"],
         icd_title=d["spec"]["icd"]["title"],
         icd_revision=str(d["spec"]["icd"]["revision"]),
         icd_date=str(d["spec"]["icd"]["date"]),
