@@ -1,0 +1,97 @@
+// Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+// Do not edit: change the spec or the generator and run `make generate`.
+
+//! Adapters over [`std::io::Read`] (feature `std`): the messages of a byte source, one at a
+//! time, through a [`StreamDecoder`].
+//!
+//! ```
+//! use ilahrs::io::Messages;
+//!
+//! let capture: &[u8] = &[0x00, 0x01, 0x02];
+//! let mut messages = Messages::new(capture);
+//! assert!(messages.next().is_none());
+//! assert_eq!(messages.decoder().discarded(), 3);
+//! ```
+
+use std::boxed::Box;
+use std::io::{self, Read};
+
+use crate::stream::{OwnedEvent, StreamDecoder};
+
+/// The size of the read buffer (bytes).
+const READ_SIZE: usize = 8192;
+
+/// An iterator over the messages (frames and sentences) of a reader, in order.
+///
+/// Reads in blocks of 8 KiB; at the end of the input it decides on the bytes still held, as
+/// [`StreamDecoder::finish`] does. Read errors are returned once, then the iteration goes on
+/// (an `Interrupted` read is retried).
+#[derive(Debug)]
+pub struct Messages<R: Read> {
+    reader: R,
+    decoder: StreamDecoder,
+    buffer: Box<[u8; READ_SIZE]>,
+    start: usize,
+    end: usize,
+    finished: bool,
+}
+
+impl<R: Read> Messages<R> {
+    /// Messages of `reader`, decoded by a new [`StreamDecoder`].
+    pub fn new(reader: R) -> Messages<R> {
+        Messages {
+            reader,
+            decoder: StreamDecoder::new(),
+            buffer: Box::new([0; READ_SIZE]),
+            start: 0,
+            end: 0,
+            finished: false,
+        }
+    }
+
+    /// The decoder (for its discarded count).
+    pub fn decoder(&self) -> &StreamDecoder {
+        &self.decoder
+    }
+
+    /// The reader.
+    pub fn into_inner(self) -> R {
+        self.reader
+    }
+
+    /// The next message, `Ok(None)` at the end of the input, or a read error.
+    pub fn next_message(&mut self) -> io::Result<Option<OwnedEvent>> {
+        loop {
+            if self.finished {
+                return Ok(self.decoder.finish_next().map(|event| event.to_owned_event()));
+            }
+            if self.start < self.end {
+                let input = self.buffer.get(self.start..self.end).unwrap_or(&[]);
+                let (used, event) = self.decoder.decode(input);
+                let event = event.map(|event| event.to_owned_event());
+                self.start += used;
+                if event.is_some() {
+                    return Ok(event);
+                }
+                continue;
+            }
+            match self.reader.read(self.buffer.as_mut_slice()) {
+                Ok(0) => self.finished = true,
+                Ok(count) => {
+                    self.start = 0;
+                    self.end = count.min(READ_SIZE);
+                }
+                Err(error) if error.kind() == io::ErrorKind::Interrupted => {}
+                Err(error) => return Err(error),
+            }
+        }
+    }
+}
+
+impl<R: Read> Iterator for Messages<R> {
+    type Item = io::Result<OwnedEvent>;
+
+    fn next(&mut self) -> Option<io::Result<OwnedEvent>> {
+        self.next_message().transpose()
+    }
+}

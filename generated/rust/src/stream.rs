@@ -1,0 +1,379 @@
+// Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+// Do not edit: change the spec or the generator and run `make generate`.
+
+//! A stream decoder: bytes in, frames and $PAHR sentences out ("leftmost valid message").
+//!
+//! At each position a valid frame or a valid sentence is accepted and consumed; otherwise one
+//! byte is discarded and scanning resumes at the next byte, so a false header, an absurd length
+//! or a corrupted frame never costs a following good message. The decoder holds at most
+//! [`MAX_MESSAGE_SIZE`] bytes in a fixed array: no allocation. It does no I/O: push bytes in
+//! chunks of any size with [`StreamDecoder::feed`] (events to a closure) or
+//! [`StreamDecoder::decode`] (one event at a time), and call [`StreamDecoder::finish`] when the
+//! input ends.
+//!
+//! ```
+//! use ilahrs::stream::{Event, StreamDecoder};
+//!
+//! let mut decoder = StreamDecoder::new();
+//! let mut input: &[u8] = &[0x00, 0xAA, 0x55, 0x00];
+//! while !input.is_empty() {
+//!     let (used, event) = decoder.decode(input);
+//!     if let Some(Event::Frame(frame)) = event {
+//!         let _ = frame.payload();
+//!     }
+//!     input = &input[used..];
+//! }
+//! decoder.finish(|_event| {});
+//! assert_eq!(decoder.discarded(), 4);
+//! ```
+
+use crate::frame::{check_frame, Frame, HEADER};
+use crate::nmea::{PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
+
+/// The most bytes the decoder holds: the longest frame or sentence (bytes).
+pub const MAX_MESSAGE_SIZE: usize = 82;
+
+/// The byte a frame starts with.
+const FRAME_START: u8 = HEADER[0];
+/// The byte a sentence starts with.
+const SENTENCE_START: u8 = b'$';
+
+/// An accepted message, borrowed from the input or from the decoder.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Event<'a> {
+    /// A valid frame (header through checksum).
+    Frame(Frame<&'a [u8]>),
+    /// A valid sentence (`$` through CR LF, as received) and its decoded value.
+    Sentence(&'a [u8], PahrSentence),
+}
+
+impl<'a> Event<'a> {
+    /// The message's bytes, as received.
+    pub fn as_bytes(&self) -> &'a [u8] {
+        match self {
+            Event::Frame(frame) => frame.into_inner(),
+            Event::Sentence(raw, _) => raw,
+        }
+    }
+
+    /// The frame, if the message is one.
+    pub fn frame(&self) -> Option<Frame<&'a [u8]>> {
+        match self {
+            Event::Frame(frame) => Some(*frame),
+            Event::Sentence(..) => None,
+        }
+    }
+
+    /// The sentence, if the message is one.
+    pub fn sentence(&self) -> Option<PahrSentence> {
+        match self {
+            Event::Frame(_) => None,
+            Event::Sentence(_, sentence) => Some(*sentence),
+        }
+    }
+
+    /// A copy that does not borrow.
+    pub fn to_owned_event(&self) -> OwnedEvent {
+        let raw = self.as_bytes();
+        let mut bytes = [0u8; MAX_MESSAGE_SIZE];
+        for (slot, byte) in bytes.iter_mut().zip(raw) {
+            *slot = *byte;
+        }
+        OwnedEvent {
+            bytes,
+            len: raw.len().min(MAX_MESSAGE_SIZE),
+            sentence: self.sentence(),
+        }
+    }
+}
+
+/// An accepted message copied into a fixed array ([`MAX_MESSAGE_SIZE`] bytes).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OwnedEvent {
+    bytes: [u8; MAX_MESSAGE_SIZE],
+    len: usize,
+    sentence: Option<PahrSentence>,
+}
+
+impl OwnedEvent {
+    /// The message's bytes, as received.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.bytes.get(..self.len).unwrap_or(&self.bytes)
+    }
+
+    /// The borrowed form.
+    pub fn event(&self) -> Event<'_> {
+        match self.sentence {
+            Some(sentence) => Event::Sentence(self.as_bytes(), sentence),
+            None => Event::Frame(Frame::new_unchecked(self.as_bytes())),
+        }
+    }
+
+    /// The frame, if the message is one.
+    pub fn frame(&self) -> Option<Frame<&[u8]>> {
+        self.event().frame()
+    }
+
+    /// The sentence, if the message is one.
+    pub fn sentence(&self) -> Option<PahrSentence> {
+        self.sentence
+    }
+}
+
+/// What to do with the candidate at the front.
+enum Decision<'a> {
+    /// A valid message of this many bytes.
+    Accept(usize, Event<'a>),
+    /// Not a message here: discard one byte.
+    Reject,
+    /// The decision needs bytes that have not arrived.
+    NeedMore,
+}
+
+/// Decides on the candidate message at the start of `data` (which starts with a frame or
+/// sentence start byte). `data` holds every byte available.
+fn decide(data: &[u8]) -> Decision<'_> {
+    match data.first() {
+        Some(&FRAME_START) => match check_frame(data) {
+            Ok(size) => match data.get(..size) {
+                Some(bytes) => Decision::Accept(size, Event::Frame(Frame::new_unchecked(bytes))),
+                None => Decision::Reject,
+            },
+            Err(error) if error.kind() == crate::ErrorKind::Truncated => Decision::NeedMore,
+            Err(_) => Decision::Reject,
+        },
+        Some(&SENTENCE_START) => decide_sentence(data),
+        _ => Decision::Reject,
+    }
+}
+
+/// Decides on a sentence candidate: it runs to the first LF within the longest sentence.
+fn decide_sentence(data: &[u8]) -> Decision<'_> {
+    let window = data.get(..MAX_SENTENCE_LENGTH).unwrap_or(data);
+    match window.iter().position(|byte| *byte == b'\n') {
+        Some(lf) => {
+            let raw = window.get(..=lf).unwrap_or(window);
+            match PahrSentence::parse(raw) {
+                Ok(sentence) => Decision::Accept(raw.len(), Event::Sentence(raw, sentence)),
+                Err(_) => Decision::Reject,
+            }
+        }
+        None if window.len() >= MAX_SENTENCE_LENGTH => Decision::Reject,
+        None => {
+            // Reject early what can never become a sentence: a wrong identifier, or a byte
+            // that is not printable (CR only as the last byte so far). Waiting would give the
+            // same answer.
+            let head = window.get(..PREFIX.len()).unwrap_or(window);
+            if !PREFIX.starts_with(head) {
+                return Decision::Reject;
+            }
+            let last = window.len().saturating_sub(1);
+            let printable = window.iter().enumerate().skip(1).all(|(index, byte)| {
+                (0x20..=0x7E).contains(byte) || (*byte == b'\r' && index == last)
+            });
+            if printable {
+                Decision::NeedMore
+            } else {
+                Decision::Reject
+            }
+        }
+    }
+}
+
+/// The index of the first byte of `data` that may start a message, or its length.
+fn next_start(data: &[u8]) -> usize {
+    data.iter()
+        .position(|byte| *byte == FRAME_START || *byte == SENTENCE_START)
+        .unwrap_or(data.len())
+}
+
+/// The stream decoder: feed it bytes, get frames and sentences back in order.
+///
+/// It holds at most [`MAX_MESSAGE_SIZE`] bytes: the start of a message whose end has not
+/// arrived. Bytes that belong to no accepted message are counted by
+/// [`StreamDecoder::discarded`].
+#[derive(Debug, Clone)]
+pub struct StreamDecoder {
+    buffer: [u8; MAX_MESSAGE_SIZE],
+    start: usize,
+    end: usize,
+    discarded: u64,
+}
+
+impl Default for StreamDecoder {
+    fn default() -> StreamDecoder {
+        StreamDecoder::new()
+    }
+}
+
+impl StreamDecoder {
+    /// An empty decoder.
+    pub const fn new() -> StreamDecoder {
+        StreamDecoder {
+            buffer: [0; MAX_MESSAGE_SIZE],
+            start: 0,
+            end: 0,
+            discarded: 0,
+        }
+    }
+
+    /// Input bytes that belong to no accepted message, so far (bytes).
+    pub const fn discarded(&self) -> u64 {
+        self.discarded
+    }
+
+    /// Bytes held while waiting to decide on a possible message (bytes).
+    pub const fn pending(&self) -> usize {
+        self.end - self.start
+    }
+
+    /// Takes bytes from `input` until a message is complete; returns how many bytes it took
+    /// and the message, if any. Call it again with the rest of the input (`&input[used..]`);
+    /// when it returns no message it has taken all of `input`.
+    pub fn decode<'s>(&'s mut self, input: &'s [u8]) -> (usize, Option<Event<'s>>) {
+        let mut used = 0;
+        if self.start < self.end {
+            // A candidate is waiting: top the buffer up and decide on what it holds.
+            loop {
+                self.compact();
+                let room = MAX_MESSAGE_SIZE - self.end;
+                let take = room.min(input.len() - used);
+                let source = input.get(used..used + take).unwrap_or(&[]);
+                if let Some(target) = self.buffer.get_mut(self.end..self.end + take) {
+                    target.copy_from_slice(source);
+                }
+                self.end += take;
+                used += take;
+                match self.step(false) {
+                    Step::Accepted(from, size) => {
+                        let bytes = self.buffer.get(from..from + size).unwrap_or(&[]);
+                        return (used, accepted(bytes));
+                    }
+                    Step::Empty => break,
+                    Step::Waiting if used == input.len() => return (used, None),
+                    Step::Waiting if take == 0 => {
+                        // Unreachable (no decision needs more than the buffer holds); never
+                        // loop on it.
+                        self.discarded += 1;
+                        self.start += 1;
+                    }
+                    Step::Waiting => {}
+                }
+            }
+        }
+        // Nothing is held: scan the input where it lies.
+        let mut position = used;
+        while let Some(rest) = input.get(position..) {
+            let skip = next_start(rest);
+            self.discarded += skip as u64;
+            position += skip;
+            let Some(candidate) = input.get(position..).filter(|rest| !rest.is_empty()) else {
+                break;
+            };
+            match decide(candidate) {
+                Decision::Accept(size, event) => return (position + size, Some(event)),
+                Decision::Reject => {
+                    self.discarded += 1;
+                    position += 1;
+                }
+                Decision::NeedMore => {
+                    let target = self.buffer.get_mut(..candidate.len()).unwrap_or(&mut []);
+                    for (slot, byte) in target.iter_mut().zip(candidate) {
+                        *slot = *byte;
+                    }
+                    self.start = 0;
+                    self.end = candidate.len().min(MAX_MESSAGE_SIZE);
+                    return (input.len(), None);
+                }
+            }
+        }
+        (input.len(), None)
+    }
+
+    /// Feeds `input` whole, calling `on_event` for every message it completes, in order.
+    pub fn feed<F: FnMut(Event<'_>)>(&mut self, input: &[u8], mut on_event: F) {
+        let mut rest = input;
+        while !rest.is_empty() {
+            let (used, event) = self.decode(rest);
+            if let Some(event) = event {
+                on_event(event);
+            }
+            rest = rest.get(used..).unwrap_or(&[]);
+        }
+    }
+
+    /// The input has ended: decides on every byte held, discarding candidates that wait for
+    /// more, and returns the next message behind them (call until it returns `None`).
+    pub fn finish_next(&mut self) -> Option<Event<'_>> {
+        match self.step(true) {
+            Step::Accepted(from, size) => accepted(self.buffer.get(from..from + size).unwrap_or(&[])),
+            Step::Empty | Step::Waiting => None,
+        }
+    }
+
+    /// The input has ended: calls `on_event` for every message still held, in order, and
+    /// leaves the decoder empty (ready for a new stream; the discarded count is kept).
+    pub fn finish<F: FnMut(Event<'_>)>(&mut self, mut on_event: F) {
+        while let Some(event) = self.finish_next() {
+            on_event(event);
+        }
+        self.start = 0;
+        self.end = 0;
+    }
+
+    /// Moves the held bytes to the front of the buffer.
+    fn compact(&mut self) {
+        if self.start > 0 {
+            self.buffer.copy_within(self.start..self.end, 0);
+            self.end -= self.start;
+            self.start = 0;
+        }
+    }
+
+    /// Decides on the held bytes until a message is accepted, the buffer is empty, or a
+    /// candidate waits for more (with `at_end`, waiting candidates are discarded instead).
+    fn step(&mut self, at_end: bool) -> Step {
+        while self.start < self.end {
+            let held = self.buffer.get(self.start..self.end).unwrap_or(&[]);
+            let skip = next_start(held);
+            if skip > 0 {
+                self.discarded += skip as u64;
+                self.start += skip;
+                continue;
+            }
+            match decide(held) {
+                Decision::Accept(size, _) => {
+                    let from = self.start;
+                    self.start += size;
+                    return Step::Accepted(from, size);
+                }
+                Decision::NeedMore if !at_end => return Step::Waiting,
+                Decision::Reject | Decision::NeedMore => {
+                    self.discarded += 1;
+                    self.start += 1;
+                }
+            }
+        }
+        self.start = 0;
+        self.end = 0;
+        Step::Empty
+    }
+}
+
+/// What [`StreamDecoder::step`] found.
+enum Step {
+    /// A message at this range of the buffer.
+    Accepted(usize, usize),
+    /// Nothing held any more.
+    Empty,
+    /// A candidate waits for more bytes.
+    Waiting,
+}
+
+/// The event of bytes already accepted.
+fn accepted(bytes: &[u8]) -> Option<Event<'_>> {
+    match decide(bytes) {
+        Decision::Accept(_, event) => Some(event),
+        Decision::Reject | Decision::NeedMore => None,
+    }
+}

@@ -1,0 +1,388 @@
+"""Small filters for the Rust templates: names, types and literals derived from the model.
+
+Nothing here changes the model or computes an offset: offsets come from generator/layout.py
+through `field.offset` and `field.size`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from generator import naming
+from generator.model import FLOAT32_MAX, Field, NmeaField, Payload, Spec
+
+# Rust integer type of each integer primitive.
+_INT_TYPES = {"u8": "u8", "s8": "i8", "u16": "u16", "s16": "i16", "u32": "u32", "s32": "i32"}
+
+# Words Rust reserves; a spec name equal to one gets a trailing underscore.
+_KEYWORDS = frozenset(
+    [
+        "as",
+        "break",
+        "const",
+        "continue",
+        "crate",
+        "else",
+        "enum",
+        "extern",
+        "false",
+        "fn",
+        "for",
+        "if",
+        "impl",
+        "in",
+        "let",
+        "loop",
+        "match",
+        "mod",
+        "move",
+        "mut",
+        "pub",
+        "ref",
+        "return",
+        "self",
+        "static",
+        "struct",
+        "super",
+        "trait",
+        "true",
+        "type",
+        "unsafe",
+        "use",
+        "where",
+        "while",
+        "async",
+        "await",
+        "dyn",
+        "abstract",
+        "become",
+        "box",
+        "do",
+        "final",
+        "macro",
+        "override",
+        "priv",
+        "typeof",
+        "unsized",
+        "virtual",
+        "yield",
+        "try",
+        "gen",
+    ]
+)
+
+
+def ident(name: str) -> str:
+    """A spec name as a Rust snake_case identifier."""
+    text = naming.snake(name)
+    return f"{text}_" if text in _KEYWORDS else text
+
+
+def const(name: str) -> str:
+    """A spec name as a Rust constant name: `tm_c_11` -> `TM_C_11`."""
+    return naming.upper(name)
+
+
+def type_name(name: str) -> str:
+    """A spec name as a Rust type or variant name: `two_d_two_t` -> `TwoDTwoT`, `KG` -> `Kg`."""
+    return naming.pascal(name.lower())
+
+
+def rust_type(field: Field) -> str:
+    """The Rust type holding a field's raw value."""
+    if field.is_bytes:
+        return f"[u8; {field.size}]"
+    if field.is_float:
+        return "f32"
+    return _INT_TYPES[field.type.name]
+
+
+def value_kind(field: Field) -> str:
+    """The `FieldKind` variant of a field."""
+    return type_name(field.kind)
+
+
+def f64_literal(value: float | int) -> str:
+    """A Rust f64 expression for a bound or default: `100.0`, `-0.5`, `F32_MAX`."""
+    number = float(value)
+    if number == FLOAT32_MAX:
+        return "crate::payload::F32_MAX"
+    if number == -FLOAT32_MAX:
+        return "-crate::payload::F32_MAX"
+    text = repr(number)
+    if "e" in text or "." in text:
+        return text.replace("e+", "e")
+    return f"{text}.0"
+
+
+def int_literal(value: float | int) -> str:
+    """An integer bound or default as a Rust literal."""
+    if float(value) != int(value):
+        raise ValueError(f"{value!r} is not an integer")
+    return str(int(value))
+
+
+def byte_string(text: str) -> str:
+    """A Latin-1 text as a Rust byte-string literal."""
+    out = []
+    for byte in text.encode("latin-1"):
+        char = chr(byte)
+        if char in '\\"':
+            out.append("\\" + char)
+        elif 0x20 <= byte < 0x7F:
+            out.append(char)
+        else:
+            out.append(f"\\x{byte:02x}")
+    return 'b"' + "".join(out) + '"'
+
+
+def string(text: str) -> str:
+    """A text as a Rust string literal."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def doc(text: str, indent: int = 0, width: int = 92) -> str:
+    """Prose as `///` lines of at most `width` characters (plus the indent)."""
+    pad = " " * indent
+    lines = naming.wrap(escape_doc(text), width - indent - 4) or [""]
+    return "\n".join(f"{pad}/// {line}".rstrip() for line in lines)
+
+
+def escape_doc(text: str) -> str:
+    """Keep rustdoc from reading spec prose as markup: brackets and angle brackets."""
+    return text.replace("<", "&lt;").replace(">", "&gt;").replace("[", "\\[").replace("]", "\\]")
+
+
+def accessor(field: Field) -> str:
+    """The name of a scaled field's engineering accessor: `heading_deg`, `gyro_x_dps`."""
+    if field.unit is None:
+        return f"{ident(field.name)}_value"
+    return f"{ident(field.name)}_{field.unit.suffix.lower()}"
+
+
+def unit_doc(field: Field) -> str:
+    """`degrees` or `raw units` for doc lines."""
+    return field.unit.doc if field.unit is not None else "raw units"
+
+
+def checked_range(field: Field) -> bool:
+    """True when a builder must check an integer field against a range narrower than its type."""
+    if not field.is_integer or field.range is None:
+        return False
+    return (field.range[0], field.range[1]) != (field.type.min, field.type.max)
+
+
+def nmea_type(field: NmeaField) -> str:
+    """The Rust type of a $PAHR field's scaled integer."""
+    if field.format == "hex" and field.min >= 0 and field.max <= 0xFFFF:
+        return "u16"
+    if field.format == "hex" and field.min >= 0 and field.max <= 0xFFFFFFFF:
+        return "u32"
+    if field.min >= -(2**31) and field.max < 2**31:
+        return "i32"
+    raise ValueError(f"$PAHR field {field.name} does not fit 32 bits")
+
+
+def nmea_unit_suffix(spec: Spec, field: NmeaField) -> str:
+    for unit in spec.units:
+        if unit.key == field.unit:
+            return unit.suffix.lower()
+    return "value"
+
+
+def nmea_unit_doc(spec: Spec, field: NmeaField) -> str:
+    for unit in spec.units:
+        if unit.key == field.unit:
+            return unit.doc
+    return "raw units"
+
+
+def ack_field(spec: Spec) -> Field:
+    """The one u16 field of the acknowledgement payload: the acknowledged message's checksum."""
+    if spec.ack_payload is None:
+        raise ValueError("the spec names no acknowledgement payload")
+    payload = spec.payload(spec.ack_payload)
+    numeric = [f for f in payload.fields if f.kind != "reserved"]
+    if len(numeric) != 1 or numeric[0].type.name != spec.frame.checksum.type.name:
+        raise ValueError("the acknowledgement payload must hold exactly one field of the checksum's type")
+    return numeric[0]
+
+
+def variant_payloads(spec: Spec) -> list[Payload]:
+    return [p for p in spec.payloads if p.variant_dependent]
+
+
+def encodings_used(spec: Spec) -> list[str]:
+    """Every field encoding any payload uses, in first-use order."""
+    seen: list[str] = []
+    for payload in spec.payloads:
+        for field in payload.fields:
+            if field.encoding is not None and field.encoding not in seen:
+                seen.append(field.encoding)
+    return seen
+
+
+def max_fields(spec: Spec) -> int:
+    return max(len(p.fields) for p in spec.payloads)
+
+
+def power_of_ten(decimals: int) -> int:
+    return int(10**decimals)
+
+
+def byte_order(spec: Spec) -> str:
+    """`le` or `be`: the spec's `byte_order`, which the model does not carry, read from the spec file."""
+    from generator import ROOT
+    from generator.load import load
+
+    order = load(ROOT / spec.file, spec.file).data["byte_order"]
+    if order not in ("little", "big"):
+        raise ValueError(f"unknown byte order {order!r}")
+    return "le" if order == "little" else "be"
+
+
+def wire_types(spec: Spec) -> list[str]:
+    """The Rust integer and float types the wire helpers must read and write, in a fixed order."""
+    used = {_INT_TYPES.get(f.type.name, f.type.name) for p in spec.payloads for f in p.fields if f.is_numeric}
+    used |= {_INT_TYPES[f.type.name] for f in (*spec.frame.fields, spec.frame.checksum)}
+    if "f32" in used:
+        used.add("u32")
+    return [t for t in ("u8", "i8", "u16", "i16", "u32", "i32", "f32") if t in used]
+
+
+def encoding_type(spec: Spec, encoding: str) -> str:
+    """The Rust type of the fields that use `encoding` (they must share one)."""
+    types = {rust_type(f) for p in spec.payloads for f in p.fields if f.encoding == encoding}
+    if len(types) != 1:
+        raise ValueError(f"fields encoded as {encoding} must share one type, found {sorted(types)}")
+    return types.pop()
+
+
+def enum_type(spec: Spec, name: str) -> str:
+    """The Rust type of the fields that hold enumeration `name` (they must share one)."""
+    types = {rust_type(f) for p in spec.payloads for f in p.fields if f.enum == name}
+    if len(types) != 1:
+        raise ValueError(f"fields of enum {name} must share one type, found {sorted(types)}")
+    return types.pop()
+
+
+def usw_type(spec: Spec) -> str:
+    """The Rust type of a Unit Status Word: that of the fields encoded as one."""
+    return encoding_type(spec, "usw")
+
+
+def scale_expr(field: Field, raw: str) -> str:
+    """The engineering value of `raw` (a Rust f64 expression) in the order raw x multiplier / divisor."""
+    if field.scale is None:
+        raise ValueError(f"field {field.name} has no scale")
+    text = raw
+    if field.scale.multiplier != 1:
+        text += f" * {f64_literal(field.scale.multiplier)}"
+    if field.scale.divisor_parameter is not None:
+        text += f" / f64::from(variant.{ident(field.scale.divisor_parameter)}())"
+    elif field.scale.divisor not in (None, 1):
+        text += f" / {f64_literal(field.scale.divisor)}"
+    return text
+
+
+def _number(value: float | str | None) -> float:
+    if isinstance(value, str):
+        raise ValueError(f"a numeric field has the default {value!r}")
+    return float(value or 0)
+
+
+def default_literal(field: Field) -> str:
+    """A Rust expression for the value a builder uses when a field is not given."""
+    if field.kind == "reserved":
+        return f"[0; {field.size}]"
+    if field.kind == "char":
+        text = str(field.default_value or "")
+        if not text:
+            return f"[0; {field.size}]"
+        padded = text.encode("latin-1").ljust(field.size, b"\0")
+        return "*" + byte_string(padded.decode("latin-1"))
+    if field.is_float:
+        return f64_literal(_number(field.default_value))
+    return int_literal(_number(field.default_value))
+
+
+def default_value(field: Field) -> str:
+    """The default as a `Value<'static>` expression."""
+    if field.is_bytes:
+        return (
+            f"Value::Bytes(&{default_literal(field)})"
+            if field.kind == "reserved"
+            else ("Value::Bytes(" + byte_string(str(field.default_value or "")) + ")")
+        )
+    if field.is_float:
+        return f"Value::Float({f64_literal(_number(field.default_value))})"
+    return f"Value::Int({int_literal(_number(field.default_value))})"
+
+
+def derivable_default(payload: Payload) -> bool:
+    """True when every default is zero and every array is small enough for `#[derive(Default)]`."""
+    for field in payload.fields:
+        if field.is_bytes and (field.size > 32 or field.default_value):
+            return False
+        if field.is_numeric and field.default_value:
+            return False
+    return True
+
+
+def header_const(spec: Spec) -> str:
+    return "[" + ", ".join(naming.hex_byte(b) for b in spec.frame.header) + "]"
+
+
+def first_with(items: list[Any] | tuple[Any, ...], attribute: str) -> Any:
+    """The first item whose `attribute` is truthy (for examples in docs)."""
+    for item in items:
+        if getattr(item, attribute):
+            return item
+    raise ValueError(f"no item has {attribute}")
+
+
+def format_pair(name: str) -> str:
+    """`name={}`: one `KEY=VALUE` of an answer line, as a Rust format string piece."""
+    return f"{name}={{}}"
+
+
+FILTERS: dict[str, Callable[..., Any]] = {
+    "format_pair": format_pair,
+    "ident": ident,
+    "const": const,
+    "type_name": type_name,
+    "rust_type": rust_type,
+    "value_kind": value_kind,
+    "f64": f64_literal,
+    "int_lit": int_literal,
+    "byte_string": byte_string,
+    "string": string,
+    "doc": doc,
+    "escape_doc": escape_doc,
+    "accessor": accessor,
+    "unit_doc": unit_doc,
+    "checked_range": checked_range,
+    "nmea_type": nmea_type,
+    "power_of_ten": power_of_ten,
+    "first_with": first_with,
+    "scale_expr": scale_expr,
+    "default_literal": default_literal,
+    "default_value": default_value,
+    "derivable_default": derivable_default,
+}
+
+GLOBALS: dict[str, Any] = {
+    "ack_field": ack_field,
+    "variant_payloads": variant_payloads,
+    "encodings_used": encodings_used,
+    "max_fields": max_fields,
+    "header_const": header_const,
+    "usw_type": usw_type,
+    "encoding_type": encoding_type,
+    "enum_type": enum_type,
+    "wire_types": wire_types,
+    "byte_order": byte_order,
+    "nmea_unit_suffix": nmea_unit_suffix,
+    "nmea_unit_doc": nmea_unit_doc,
+}
