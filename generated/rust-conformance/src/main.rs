@@ -97,11 +97,12 @@ fn frame_decode(data: &[u8]) -> Answer {
 }
 
 fn frame_encode(message_type: &str, payload: &[u8], reserved: Option<&str>) -> Answer {
+    let refusal = Refusal::Named("bad_message_type", "message_type".to_string());
     let message_type = message_type
         .parse::<u8>()
         .ok()
         .and_then(MessageType::from_raw)
-        .ok_or(Refusal::Named("bad_message_type", "message_type".to_string()))?;
+        .ok_or(refusal)?;
     let reserved = match reserved {
         Some(text) => text
             .parse::<u8>()
@@ -215,14 +216,7 @@ fn nmea_encode(pairs: &[&str]) -> Answer {
     let vdd: f64 = get("vdd")?.parse().unwrap_or(f64::NAN);
     let usw_raw = read_int(get("usw")?);
     let usw = u16::try_from(usw_raw).unwrap_or_default();
-    let sentence = PahrSentence::from_engineering(
-        roll,
-        pitch,
-        heading,
-        temperature,
-        vdd,
-        usw,
-    )?;
+    let sentence = PahrSentence::from_engineering(roll, pitch, heading, temperature, vdd, usw)?;
     if u16::try_from(usw_raw).is_err() {
         return Err(Refusal::Named("out_of_range", "usw".to_string()));
     }
@@ -272,7 +266,7 @@ fn read_hex(token: &str) -> Result<Vec<u8>, Refusal> {
         return Ok(Vec::new());
     }
     let digits = token.as_bytes();
-    if digits.len() % 2 != 0 {
+    if !digits.len().is_multiple_of(2) {
         return Err(Refusal::Unsupported);
     }
     digits
@@ -297,7 +291,8 @@ fn read_text(token: &str) -> Result<Vec<u8>, Refusal> {
     let mut index = 0;
     while let Some(&byte) = bytes.get(index) {
         if byte == b'%' {
-            let pair = bytes.get(index + 1..index + 3).ok_or(Refusal::Unsupported)?;
+            let pair = bytes.get(index + 1..index + 3);
+            let pair = pair.ok_or(Refusal::Unsupported)?;
             let text = std::str::from_utf8(pair).map_err(|_| Refusal::Unsupported)?;
             out.push(u8::from_str_radix(text, 16).map_err(|_| Refusal::Unsupported)?);
             index += 3;

@@ -18,10 +18,10 @@
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{self, FrameRepr, MessageType};
-use crate::payload::PayloadKind;
 use crate::payload::ahrs_parameters_load::AhrsParametersLoadRepr;
 use crate::payload::calibration_parameters::CalibrationParametersRepr;
 use crate::payload::calibration_run_parameters::CalibrationRunParametersRepr;
+use crate::payload::PayloadKind;
 
 /// An operating mode of the AHRS (section 6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -377,7 +377,10 @@ impl Command {
             Command::Start2d2tClb => Response::None,
             Command::Start3dClb => Response::None,
             Command::StartClbRun => Response::None,
-            Command::StopClbRun => Response::Data(&[PayloadKind::CalibrationResult, PayloadKind::CalibrationRunResult]),
+            Command::StopClbRun => Response::Data(&[
+                PayloadKind::CalibrationResult,
+                PayloadKind::CalibrationRunResult,
+            ]),
             Command::FinishClb => Response::Data(&[PayloadKind::CalibrationResult]),
             Command::AcceptClb => Response::Ack,
             Command::ExitClb => Response::Ack,
@@ -448,7 +451,10 @@ pub fn decode_command(frame: &[u8]) -> Result<(u8, &'static [Command])> {
         }
     };
     match Command::with_code(code) {
-        [] => Err(Error::at(ErrorKind::UnknownCommand, frame::field::PAYLOAD_START)),
+        [] => {
+            let error = Error::at(ErrorKind::UnknownCommand, frame::field::PAYLOAD_START);
+            Err(error)
+        }
         names => Ok((code, names)),
     }
 }
@@ -477,7 +483,10 @@ pub fn build_start_2d_clb(parameters: &CalibrationParametersRepr, buf: &mut [u8]
 /// data frame into `buf`; returns the size of both (bytes).
 ///
 /// Errors: those of [`CalibrationParametersRepr::build`], `buffer_too_small`.
-pub fn build_start_2d2t_clb(parameters: &CalibrationParametersRepr, buf: &mut [u8]) -> Result<usize> {
+pub fn build_start_2d2t_clb(
+    parameters: &CalibrationParametersRepr,
+    buf: &mut [u8],
+) -> Result<usize> {
     let command = Command::Start2d2tClb.build(buf)?;
     let rest = buf.get_mut(command..).unwrap_or(&mut []);
     Ok(command + parameters.build_frame(rest)?)
@@ -497,7 +506,10 @@ pub fn build_start_3d_clb(parameters: &CalibrationParametersRepr, buf: &mut [u8]
 /// data frame into `buf`; returns the size of both (bytes).
 ///
 /// Errors: those of [`CalibrationRunParametersRepr::build`], `buffer_too_small`.
-pub fn build_start_clb_run(parameters: &CalibrationRunParametersRepr, buf: &mut [u8]) -> Result<usize> {
+pub fn build_start_clb_run(
+    parameters: &CalibrationRunParametersRepr,
+    buf: &mut [u8],
+) -> Result<usize> {
     let command = Command::StartClbRun.build(buf)?;
     let rest = buf.get_mut(command..).unwrap_or(&mut []);
     Ok(command + parameters.build_frame(rest)?)

@@ -296,9 +296,7 @@ impl CalibrationSuccess {
     /// The predicted heading error (degrees), when the device sent one.
     pub fn accuracy_deg(self) -> Option<f64> {
         match self {
-            CalibrationSuccess::Accuracy(accuracy) => {
-                Some(f64::from(accuracy) / 10.0)
-            }
+            CalibrationSuccess::Accuracy(accuracy) => Some(f64::from(accuracy) / 10.0),
             _ => None,
         }
     }

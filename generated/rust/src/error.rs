@@ -94,9 +94,7 @@ impl ErrorKind {
     /// One sentence saying what the kind means.
     pub const fn doc(self) -> &'static str {
         match self {
-            ErrorKind::Truncated => {
-                "The input ends before the frame, payload or sentence does."
-            }
+            ErrorKind::Truncated => "The input ends before the frame, payload or sentence does.",
             ErrorKind::BadHeader => {
                 "The frame does not start with AA 55, or a sentence does not start with the $PAHR identifier."
             }

@@ -112,7 +112,8 @@ impl TryFrom<u8> for MessageType {
 
     /// The type with code `raw`, or `bad_message_type` naming the field.
     fn try_from(raw: u8) -> Result<MessageType> {
-        MessageType::from_raw(raw).ok_or(Error::new(ErrorKind::BadMessageType).with_field("message_type"))
+        let error = Error::new(ErrorKind::BadMessageType).with_field("message_type");
+        MessageType::from_raw(raw).ok_or(error)
     }
 }
 
@@ -284,7 +285,8 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> Frame<T> {
     /// The payload, for writing (its size follows the length field).
     pub fn payload_mut(&mut self) -> &mut [u8] {
         let length = usize::from(self.message_length());
-        self.buffer.as_mut().get_mut(field::payload(length)).unwrap_or(&mut [])
+        let payload = self.buffer.as_mut().get_mut(field::payload(length));
+        payload.unwrap_or(&mut [])
     }
 
     /// Computes the checksum and writes it.
@@ -328,9 +330,7 @@ impl<'a> FrameRepr<'a> {
         let data: &'a [u8] = frame.buffer;
         let length = usize::from(frame.message_length());
         FrameRepr {
-            message_type: frame
-                .message_type_decoded()
-                .unwrap_or(MessageType::Command),
+            message_type: frame.message_type_decoded().unwrap_or(MessageType::Command),
             reserved: frame.reserved(),
             payload: wire::bytes(data, field::payload(length)),
         }

@@ -63,7 +63,8 @@ impl<R: Read> Messages<R> {
     pub fn next_message(&mut self) -> io::Result<Option<OwnedEvent>> {
         loop {
             if self.finished {
-                return Ok(self.decoder.finish_next().map(|event| event.to_owned_event()));
+                let event = self.decoder.finish_next();
+                return Ok(event.map(|event| event.to_owned_event()));
             }
             if self.start < self.end {
                 let input = self.buffer.get(self.start..self.end).unwrap_or(&[]);

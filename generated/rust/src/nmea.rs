@@ -194,7 +194,8 @@ impl PahrSentence {
         }
         let mut values = [0i64; FIELD_COUNT];
         let mut offset = PREFIX.len();
-        for ((part, spec), slot) in body.split(|byte| *byte == b',').zip(FIELDS).zip(&mut values) {
+        let parts = body.split(|byte| *byte == b',');
+        for ((part, spec), slot) in parts.zip(FIELDS).zip(&mut values) {
             let error = |kind| Error::at(kind, offset).with_field(spec.name);
             let value = match spec.format {
                 Format::Decimal { decimals, .. } => parse_decimal(part, decimals),
@@ -399,7 +400,7 @@ fn parse_decimal(text: &[u8], decimals: u32) -> Option<i64> {
     }
     let mut value: i64 = 0;
     for digit in whole {
-        value = value.saturating_mul(10).saturating_add(i64::from(digit - b'0'));
+        value = value.saturating_mul(10).saturating_add(digit_value(*digit));
     }
     let mut places = decimals;
     if let Some(fraction) = fraction {
@@ -410,12 +411,17 @@ fn parse_decimal(text: &[u8], decimals: u32) -> Option<i64> {
             if !digit.is_ascii_digit() {
                 return None;
             }
-            value = value.saturating_mul(10).saturating_add(i64::from(digit - b'0'));
+            value = value.saturating_mul(10).saturating_add(digit_value(*digit));
             places = places.saturating_sub(1);
         }
     }
     value = value.saturating_mul(10i64.saturating_pow(places));
     Some(if negative { -value } else { value })
+}
+
+/// The value of a decimal digit (0 for any other byte).
+fn digit_value(byte: u8) -> i64 {
+    i64::from(byte.saturating_sub(b'0'))
 }
 
 /// A hex field of 1 to `width` digits, either case, or `None`.
@@ -425,7 +431,8 @@ fn parse_hex(text: &[u8], width: usize) -> Option<i64> {
     }
     let mut value: i64 = 0;
     for byte in text {
-        value = value.saturating_mul(16).saturating_add(i64::from(hex_digit(*byte)?));
+        let digit = i64::from(hex_digit(*byte)?);
+        value = value.saturating_mul(16).saturating_add(digit);
     }
     Some(value)
 }
@@ -455,7 +462,8 @@ impl<'a> Cursor<'a> {
         let mut rest = value;
         while rest > 0 || count == 0 {
             if let Some(slot) = scratch.get_mut(count) {
-                *slot = b"0123456789ABCDEF".get((rest % radix) as usize).copied().unwrap_or(b'0');
+                let digit = b"0123456789ABCDEF".get((rest % radix) as usize);
+                *slot = digit.copied().unwrap_or(b'0');
             }
             rest /= radix;
             count += 1;

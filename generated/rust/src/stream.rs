@@ -306,7 +306,9 @@ impl StreamDecoder {
     /// more, and returns the next message behind them (call until it returns `None`).
     pub fn finish_next(&mut self) -> Option<Event<'_>> {
         match self.step(true) {
-            Step::Accepted(from, size) => accepted(self.buffer.get(from..from + size).unwrap_or(&[])),
+            Step::Accepted(from, size) => {
+                accepted(self.buffer.get(from..from + size).unwrap_or(&[]))
+            }
             Step::Empty | Step::Waiting => None,
         }
     }

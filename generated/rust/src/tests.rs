@@ -14,7 +14,9 @@ use crate::stream::StreamDecoder;
 /// Builds a frame of `payload` into an array.
 fn frame_of(message_type: MessageType, payload: &[u8]) -> ([u8; frame::MAX_FRAME_SIZE], usize) {
     let mut buf = [0u8; frame::MAX_FRAME_SIZE];
-    let n = FrameRepr::new(message_type, payload).build(&mut buf).unwrap();
+    let n = FrameRepr::new(message_type, payload)
+        .build(&mut buf)
+        .unwrap();
     (buf, n)
 }
 
@@ -59,7 +61,10 @@ fn frame_checks_run_in_order() {
     bad[..n].copy_from_slice(good);
     bad[1] ^= 0xFF;
     assert_eq!(error(&bad[..n]).offset(), Some(1));
-    assert_eq!(error(&good[..frame::field::PAYLOAD_START - 1]).kind(), ErrorKind::Truncated);
+    assert_eq!(
+        error(&good[..frame::field::PAYLOAD_START - 1]).kind(),
+        ErrorKind::Truncated
+    );
     bad[..n].copy_from_slice(good);
     bad[frame::field::MESSAGE_TYPE.start] = 0xFF;
     assert_eq!(error(&bad[..n]).kind(), ErrorKind::BadMessageType);
@@ -81,9 +86,15 @@ fn frame_builder_refuses_bad_payload_sizes_and_small_buffers() {
     let payload = [0u8; frame::MAX_PAYLOAD + 1];
     let mut buf = [0u8; frame::MAX_FRAME_SIZE + 1];
     let empty = FrameRepr::new(MessageType::Data, &[]);
-    assert_eq!(empty.build(&mut buf).unwrap_err().kind(), ErrorKind::BadLength);
+    assert_eq!(
+        empty.build(&mut buf).unwrap_err().kind(),
+        ErrorKind::BadLength
+    );
     let long = FrameRepr::new(MessageType::Data, &payload);
-    assert_eq!(long.build(&mut buf).unwrap_err().kind(), ErrorKind::BadLength);
+    assert_eq!(
+        long.build(&mut buf).unwrap_err().kind(),
+        ErrorKind::BadLength
+    );
     let small = FrameRepr::new(MessageType::Data, &payload[..1]);
     let error = small.build(&mut buf[..frame::OVERHEAD]).unwrap_err();
     assert_eq!(error.kind(), ErrorKind::BufferTooSmall);
@@ -94,7 +105,12 @@ fn unchecked_views_never_panic() {
     for len in 0..frame::MAX_FRAME_SIZE {
         let data = [0xFFu8; frame::MAX_FRAME_SIZE];
         let view = Frame::new_unchecked(&data[..len]);
-        let _ = (view.payload(), view.checksum(), view.compute_checksum(), view.as_bytes());
+        let _ = (
+            view.payload(),
+            view.checksum(),
+            view.compute_checksum(),
+            view.as_bytes(),
+        );
     }
 }
 
@@ -118,14 +134,23 @@ fn every_payload_parses_and_builds_its_defaults() {
             // that field.
             Err(error) => {
                 assert_eq!(error.kind(), ErrorKind::OutOfRange);
-                let info = kind.fields().iter().find(|info| Some(info.name) == error.field());
+                let info = kind
+                    .fields()
+                    .iter()
+                    .find(|info| Some(info.name) == error.field());
                 assert_eq!(error.offset(), info.map(|info| info.offset));
             }
         }
         let short = AnyPayload::parse(kind, &buf[..kind.size() - 1]).unwrap_err();
-        assert_eq!((short.kind(), short.offset()), (ErrorKind::Truncated, Some(kind.size() - 1)));
+        assert_eq!(
+            (short.kind(), short.offset()),
+            (ErrorKind::Truncated, Some(kind.size() - 1))
+        );
         let long = AnyPayload::parse(kind, &buf[..kind.size() + 1]).unwrap_err();
-        assert_eq!((long.kind(), long.offset()), (ErrorKind::TrailingData, Some(kind.size())));
+        assert_eq!(
+            (long.kind(), long.offset()),
+            (ErrorKind::TrailingData, Some(kind.size()))
+        );
     }
 }
 
@@ -236,5 +261,8 @@ fn stream_decoder_finds_messages_byte_by_byte() {
     bytewise.finish(|_| split += 1);
     assert_eq!(whole, split);
     assert_eq!(decoder.discarded(), bytewise.discarded());
-    assert_eq!(whole as u64 * (frame::OVERHEAD as u64 + 1) + decoder.discarded(), n as u64);
+    assert_eq!(
+        whole as u64 * (frame::OVERHEAD as u64 + 1) + decoder.discarded(),
+        n as u64
+    );
 }

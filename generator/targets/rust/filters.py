@@ -116,6 +116,19 @@ def f64_literal(value: float | int) -> str:
     return f"{text}.0"
 
 
+def f32_literal(value: float | int) -> str:
+    """The shortest Rust literal that reads back as the same float32 (clippy: no excess precision)."""
+    import struct
+
+    number = struct.unpack("<f", struct.pack("<f", float(value)))[0]
+    for digits in range(1, 10):
+        text = f"{number:.{digits}g}"
+        if struct.unpack("<f", struct.pack("<f", float(text)))[0] == number:
+            break
+    text = repr(float(text))
+    return text.replace("e+", "e") if ("e" in text or "." in text) else f"{text}.0"
+
+
 def int_literal(value: float | int) -> str:
     """An integer bound or default as a Rust literal."""
     if float(value) != int(value):
@@ -303,7 +316,7 @@ def default_literal(field: Field) -> str:
         padded = text.encode("latin-1").ljust(field.size, b"\0")
         return "*" + byte_string(padded.decode("latin-1"))
     if field.is_float:
-        return f64_literal(_number(field.default_value))
+        return f32_literal(_number(field.default_value))
     return int_literal(_number(field.default_value))
 
 
@@ -347,7 +360,94 @@ def format_pair(name: str) -> str:
     return f"{name}={{}}"
 
 
+# Layout: the generated code must be what rustfmt (default configuration, edition 2021) would
+# write, without running rustfmt. Data-dependent lines pick rustfmt's one-line or vertical form
+# by the same widths rustfmt uses.
+MAX_WIDTH = 100
+SHORT_WIDTH = 60  # fn_call_width, array_width, chain_width
+STRUCT_LIT_WIDTH = 18
+
+
+def fits(text: str, indent: int = 0) -> bool:
+    """True if `text`, indented by `indent` spaces, fits rustfmt's line width."""
+    return indent + len(text) <= MAX_WIDTH
+
+
+def _lines(items: list[str], indent: int) -> str:
+    return "".join(f"{' ' * (indent + 4)}{item},\n" for item in items)
+
+
+def arm(pattern: str, body: str, indent: int) -> str:
+    """A match arm: `pattern => body,` or, when too long, its body in a block."""
+    one = f"{pattern} => {body},"
+    if fits(one, indent):
+        return one
+    pad = " " * indent
+    return f"{pattern} => {{\n{pad}    {body}\n{pad}}}"
+
+
+def seq(items: list[str], indent: int, head: str = "", tail: str = "", brackets: str = "[]") -> str:
+    """`head[a, b]tail` on one line when it fits, else one item per line (rustfmt's vertical list)."""
+    inner = ", ".join(items)
+    one = f"{head}{brackets[0]}{inner}{brackets[1]}{tail}"
+    if fits(one, indent) and len(inner) <= SHORT_WIDTH:
+        return one
+    return f"{head}{brackets[0]}\n{_lines(items, indent)}{' ' * indent}{brackets[1]}{tail}"
+
+
+def signature(head: str, params: list[str], tail: str, indent: int) -> str:
+    """`head(params) tail {` on one line when it fits, else one parameter per line."""
+    one = f"{head}({', '.join(params)}){tail} {{"
+    if fits(one, indent):
+        return one
+    return f"{head}(\n{_lines(params, indent)}{' ' * indent}){tail} {{"
+
+
+def struct_lit(name: str, fields: list[str], indent: int, tail: str = "") -> str:
+    """A struct literal: on one line only when its fields are short (rustfmt's struct_lit_width)."""
+    inner = ", ".join(fields)
+    one = f"{name} {{ {inner} }}{tail}"
+    if len(inner) <= STRUCT_LIT_WIDTH and fits(one, indent):
+        return one
+    return f"{name} {{\n{_lines(fields, indent)}{' ' * indent}}}{tail}"
+
+
+def init(name: str, value: str, indent: int) -> str:
+    """A struct field initialiser, `name: value,`, moving a long value to the next line."""
+    one = f"{name}: {value},"
+    if fits(one, indent):
+        return one
+    return f"{name}:\n{' ' * (indent + 4)}{value},"
+
+
+def _use_key(path: str) -> list[tuple[int, str]]:
+    key = []
+    for segment in path.replace("{", "").split("::"):
+        if segment in ("self", "super", "crate"):
+            rank = 0
+        elif segment[:1].islower():
+            rank = 1
+        elif segment.isupper():
+            rank = 3
+        else:
+            rank = 2
+        key.append((rank, segment))
+    return key
+
+
+def sort_uses(paths: list[str]) -> list[str]:
+    """`use` paths in rustfmt's order (lower-case segments before types)."""
+    return sorted(set(paths), key=_use_key)
+
+
+def prefix(text: str, head: str) -> str:
+    """`head` + `text` (to map a list of names to paths)."""
+    return head + text
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
+    "prefix": prefix,
+    "sort_uses": sort_uses,
     "format_pair": format_pair,
     "ident": ident,
     "const": const,
@@ -373,6 +473,12 @@ FILTERS: dict[str, Callable[..., Any]] = {
 }
 
 GLOBALS: dict[str, Any] = {
+    "fits": fits,
+    "arm": arm,
+    "seq": seq,
+    "signature": signature,
+    "struct_lit": struct_lit,
+    "init": init,
     "ack_field": ack_field,
     "variant_payloads": variant_payloads,
     "encodings_used": encodings_used,

@@ -44,9 +44,7 @@ pub mod info {
 }
 
 /// Every field, in wire order.
-pub static FIELDS: [crate::payload::FieldInfo; 1] = [
-    info::CHECKSUM,
-];
+pub static FIELDS: [crate::payload::FieldInfo; 1] = [info::CHECKSUM];
 
 /// 6.3.1 (Table 6.2 with a one-word payload), Acknowledgement: a zero-copy view over a payload.
 ///
@@ -158,9 +156,7 @@ impl AcknowledgementRepr {
 
     /// Every raw value, in table order (text without its trailing NULs).
     pub fn values(&self) -> [Value<'_>; 1] {
-        [
-            Value::Int(i64::from(self.checksum)),
-        ]
+        [Value::Int(i64::from(self.checksum))]
     }
 
     /// The raw value of field `index` (table order), or `None` past the last field.

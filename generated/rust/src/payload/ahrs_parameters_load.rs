@@ -6,11 +6,11 @@
 //! The data message the host sends right after LoadAHRSPar (6.3.6). Read the block first
 //! (ReadAHRSPar), change it, send it back.
 
+use crate::encoding::Date;
+use crate::encoding::Declination;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
-use crate::encoding::Declination;
-use crate::encoding::Date;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -88,7 +88,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::S),
         encoding: None,
-        doc: "Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.",
+        doc:
+            "Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.",
     };
 
     /// Magnetic declination, Mdec, f32, degrees.
@@ -104,7 +105,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::Deg),
         encoding: Some(crate::payload::Encoding::Declination),
-        doc: "Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.",
+        doc:
+            "Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.",
     };
 
     /// Latitude, f32, degrees.
@@ -184,7 +186,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::Deg),
         encoding: None,
-        doc: "Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).",
+        doc:
+            "Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).",
     };
 
     /// Alignment angle A2, f32, degrees.
@@ -200,7 +203,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::Deg),
         encoding: None,
-        doc: "Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).",
+        doc:
+            "Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).",
     };
 
     /// Alignment angle A3, f32, degrees.
@@ -216,7 +220,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::Deg),
         encoding: None,
-        doc: "Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).",
+        doc:
+            "Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).",
     };
 
     /// Reserved, reserved[14].
@@ -446,7 +451,7 @@ impl Default for AhrsParametersLoadRepr {
             latitude: 0.0,
             longitude: 0.0,
             altitude: 0.0,
-            date: 1900.002685546875,
+            date: 1900.0027,
             alignment_angle_a1: 0.0,
             alignment_angle_a2: 0.0,
             alignment_angle_a3: 0.0,

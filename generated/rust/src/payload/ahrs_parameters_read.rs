@@ -5,11 +5,11 @@
 //!
 //! The AHRS answer to ReadAHRSPar (6.3.7).
 
+use crate::encoding::Date;
+use crate::encoding::Declination;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
-use crate::encoding::Declination;
-use crate::encoding::Date;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -481,7 +481,7 @@ impl Default for AhrsParametersReadRepr {
             latitude: 0.0,
             longitude: 0.0,
             altitude: 0.0,
-            date: 1900.002685546875,
+            date: 1900.0027,
             alignment_angle_a1: 0.0,
             alignment_angle_a2: 0.0,
             alignment_angle_a3: 0.0,

@@ -67,10 +67,7 @@ pub mod info {
 }
 
 /// Every field, in wire order.
-pub static FIELDS: [crate::payload::FieldInfo; 2] = [
-    info::UTERMO100,
-    info::USW,
-];
+pub static FIELDS: [crate::payload::FieldInfo; 2] = [info::UTERMO100, info::USW];
 
 /// Table 6.12, Built-in test answer: a zero-copy view over a payload.
 ///

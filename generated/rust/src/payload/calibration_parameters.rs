@@ -6,10 +6,10 @@
 //! The data message the host sends right after Start3DClb, Start2D2TClb or Start2DClb (6.4.1,
 //! 6.4.5, 6.4.8).
 
+use crate::encoding::Date;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
-use crate::encoding::Date;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -279,7 +279,7 @@ impl Default for CalibrationParametersRepr {
             latitude: 0.0,
             longitude: 0.0,
             altitude: 0.0,
-            date: 1900.002685546875,
+            date: 1900.0027,
         }
     }
 }

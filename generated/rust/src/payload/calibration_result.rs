@@ -5,11 +5,11 @@
 //!
 //! Sent when a calibration completes (after the accumulation time, StopClbRun, or FinishClb).
 
+use crate::encoding::CalibrationSuccess;
+use crate::encoding::CalibrationType;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
-use crate::encoding::CalibrationSuccess;
-use crate::encoding::CalibrationType;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -134,7 +134,8 @@ pub mod info {
         scale: None,
         unit: None,
         encoding: Some(crate::payload::Encoding::CalibrationSuccess),
-        doc: "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.",
+        doc:
+            "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.",
     };
 
     /// Matrix for soft iron correction, f32, dimensionless.

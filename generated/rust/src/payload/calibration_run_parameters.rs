@@ -45,9 +45,7 @@ pub mod info {
 }
 
 /// Every field, in wire order.
-pub static FIELDS: [crate::payload::FieldInfo; 1] = [
-    info::RESERVED,
-];
+pub static FIELDS: [crate::payload::FieldInfo; 1] = [info::RESERVED];
 
 /// Table 6.16, Calibration run parameters: a zero-copy view over a payload.
 ///
@@ -113,7 +111,9 @@ impl CalibrationRunParametersRepr {
     }
 
     /// The value of a view.
-    pub fn from_view<T: AsRef<[u8]>>(view: &CalibrationRunParameters<T>) -> CalibrationRunParametersRepr {
+    pub fn from_view<T: AsRef<[u8]>>(
+        view: &CalibrationRunParameters<T>,
+    ) -> CalibrationRunParametersRepr {
         CalibrationRunParametersRepr {
             reserved: wire::array(view.as_bytes(), field::RESERVED),
         }
@@ -159,9 +159,7 @@ impl CalibrationRunParametersRepr {
 
     /// Every raw value, in table order (text without its trailing NULs).
     pub fn values(&self) -> [Value<'_>; 1] {
-        [
-            Value::Bytes(&self.reserved),
-        ]
+        [Value::Bytes(&self.reserved)]
     }
 
     /// The raw value of field `index` (table order), or `None` past the last field.

@@ -5,12 +5,12 @@
 //!
 //! Sent after each run of a 2D-2T calibration (6.4.5).
 
+use crate::encoding::CalibrationSuccess;
+use crate::encoding::CalibrationType;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
 use crate::status::StatusWord;
-use crate::encoding::CalibrationSuccess;
-use crate::encoding::CalibrationType;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -114,7 +114,8 @@ pub mod info {
         scale: None,
         unit: None,
         encoding: Some(crate::payload::Encoding::CalibrationSuccess),
-        doc: "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
+        doc:
+            "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
     };
 
     /// Reserved, reserved[4].

@@ -5,11 +5,11 @@
 //!
 //! The AHRS answer to GetClbRes (6.4.10).
 
+use crate::encoding::CalibrationStatusType;
+use crate::encoding::CalibrationSuccess;
 use crate::error::{Error, ErrorKind, Result};
 use crate::frame::{FrameRepr, MessageType};
 use crate::payload::{check_size, Value};
-use crate::encoding::CalibrationSuccess;
-use crate::encoding::CalibrationStatusType;
 use crate::wire;
 
 /// Size of the payload (bytes).
@@ -86,7 +86,8 @@ pub mod info {
         scale: None,
         unit: None,
         encoding: None,
-        doc: "0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.",
+        doc:
+            "0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.",
     };
 
     /// Number of used calibration runs, u8.
@@ -134,7 +135,8 @@ pub mod info {
         scale: None,
         unit: None,
         encoding: Some(crate::payload::Encoding::CalibrationSuccess),
-        doc: "0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
+        doc:
+            "0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
     };
 
     /// Matrix for soft iron correction, f32, dimensionless.

@@ -44,9 +44,7 @@ pub mod info {
 }
 
 /// Every field, in wire order.
-pub static FIELDS: [crate::payload::FieldInfo; 1] = [
-    info::VERSION,
-];
+pub static FIELDS: [crate::payload::FieldInfo; 1] = [info::VERSION];
 
 /// Table 6.11, Firmware version: a zero-copy view over a payload.
 ///
@@ -110,9 +108,7 @@ pub struct FirmwareVersionRepr {
 impl Default for FirmwareVersionRepr {
     /// Every field at its default: otherwise zero.
     fn default() -> FirmwareVersionRepr {
-        FirmwareVersionRepr {
-            version: [0; 50],
-        }
+        FirmwareVersionRepr { version: [0; 50] }
     }
 }
 
@@ -171,9 +167,7 @@ impl FirmwareVersionRepr {
 
     /// Every raw value, in table order (text without its trailing NULs).
     pub fn values(&self) -> [Value<'_>; 1] {
-        [
-            Value::Bytes(wire::trim_nul(&self.version)),
-        ]
+        [Value::Bytes(wire::trim_nul(&self.version))]
     }
 
     /// The raw value of field `index` (table order), or `None` past the last field.

@@ -321,7 +321,8 @@ pub mod info {
         }),
         unit: Some(crate::payload::Unit::V),
         encoding: None,
-        doc: "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.",
+        doc:
+            "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.",
     };
 
     /// Utermo, s16, ADC codes (no physical scale given by the ICD).
@@ -337,7 +338,8 @@ pub mod info {
         scale: None,
         unit: Some(crate::payload::Unit::Adc),
         encoding: None,
-        doc: "ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.",
+        doc:
+            "ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.",
     };
 }
 

@@ -24,35 +24,35 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::variant::{Variant, VariantParameter};
 use crate::wire::{self, Field};
 
-pub mod full_output;
-pub mod quaternion;
-pub mod orientation_sensors;
-pub mod initial_alignment;
+pub mod acknowledgement;
 pub mod ahrs_parameters_load;
 pub mod ahrs_parameters_read;
-pub mod firmware_version;
 pub mod bit_result;
 pub mod calibration_parameters;
 pub mod calibration_result;
-pub mod calibration_run_result;
 pub mod calibration_run_parameters;
+pub mod calibration_run_result;
 pub mod calibration_status;
-pub mod acknowledgement;
+pub mod firmware_version;
+pub mod full_output;
+pub mod initial_alignment;
+pub mod orientation_sensors;
+pub mod quaternion;
 
-pub use full_output::{FullOutput, FullOutputRepr};
-pub use quaternion::{Quaternion, QuaternionRepr};
-pub use orientation_sensors::{OrientationSensors, OrientationSensorsRepr};
-pub use initial_alignment::{InitialAlignment, InitialAlignmentRepr};
+pub use acknowledgement::{Acknowledgement, AcknowledgementRepr};
 pub use ahrs_parameters_load::{AhrsParametersLoad, AhrsParametersLoadRepr};
 pub use ahrs_parameters_read::{AhrsParametersRead, AhrsParametersReadRepr};
-pub use firmware_version::{FirmwareVersion, FirmwareVersionRepr};
 pub use bit_result::{BitResult, BitResultRepr};
 pub use calibration_parameters::{CalibrationParameters, CalibrationParametersRepr};
 pub use calibration_result::{CalibrationResult, CalibrationResultRepr};
-pub use calibration_run_result::{CalibrationRunResult, CalibrationRunResultRepr};
 pub use calibration_run_parameters::{CalibrationRunParameters, CalibrationRunParametersRepr};
+pub use calibration_run_result::{CalibrationRunResult, CalibrationRunResultRepr};
 pub use calibration_status::{CalibrationStatus, CalibrationStatusRepr};
-pub use acknowledgement::{Acknowledgement, AcknowledgementRepr};
+pub use firmware_version::{FirmwareVersion, FirmwareVersionRepr};
+pub use full_output::{FullOutput, FullOutputRepr};
+pub use initial_alignment::{InitialAlignment, InitialAlignmentRepr};
+pub use orientation_sensors::{OrientationSensors, OrientationSensorsRepr};
+pub use quaternion::{Quaternion, QuaternionRepr};
 
 /// The greatest finite float32, as a double.
 pub const F32_MAX: f64 = f32::MAX as f64;
@@ -277,7 +277,8 @@ impl FieldInfo {
                 (self.min..=self.max).contains(&(raw as f64))
             }
             (FieldKind::Float, Value::Float(raw)) => {
-                raw.is_finite() && (self.min..=self.max).contains(&raw) && self.encoding_accepts(raw)
+                let inside = (self.min..=self.max).contains(&raw);
+                raw.is_finite() && inside && self.encoding_accepts(raw)
             }
             (FieldKind::Float, Value::Int(raw)) => return self.check(Value::Float(raw as f64)),
             (FieldKind::Char, Value::Bytes(text)) => text.len() <= self.size,
@@ -531,7 +532,9 @@ impl PayloadKind {
             PayloadKind::CalibrationRunResult => "Table 6.15, 2D-2T calibration run result",
             PayloadKind::CalibrationRunParameters => "Table 6.16, Calibration run parameters",
             PayloadKind::CalibrationStatus => "Table 6.17, Calibration results read back",
-            PayloadKind::Acknowledgement => "6.3.1 (Table 6.2 with a one-word payload), Acknowledgement",
+            PayloadKind::Acknowledgement => {
+                "6.3.1 (Table 6.2 with a one-word payload), Acknowledgement"
+            }
         }
     }
 
@@ -622,10 +625,16 @@ impl AnyPayload {
             PayloadKind::AhrsParametersRead => AnyPayload::AhrsParametersRead(Default::default()),
             PayloadKind::FirmwareVersion => AnyPayload::FirmwareVersion(Default::default()),
             PayloadKind::BitResult => AnyPayload::BitResult(Default::default()),
-            PayloadKind::CalibrationParameters => AnyPayload::CalibrationParameters(Default::default()),
+            PayloadKind::CalibrationParameters => {
+                AnyPayload::CalibrationParameters(Default::default())
+            }
             PayloadKind::CalibrationResult => AnyPayload::CalibrationResult(Default::default()),
-            PayloadKind::CalibrationRunResult => AnyPayload::CalibrationRunResult(Default::default()),
-            PayloadKind::CalibrationRunParameters => AnyPayload::CalibrationRunParameters(Default::default()),
+            PayloadKind::CalibrationRunResult => {
+                AnyPayload::CalibrationRunResult(Default::default())
+            }
+            PayloadKind::CalibrationRunParameters => {
+                AnyPayload::CalibrationRunParameters(Default::default())
+            }
             PayloadKind::CalibrationStatus => AnyPayload::CalibrationStatus(Default::default()),
             PayloadKind::Acknowledgement => AnyPayload::Acknowledgement(Default::default()),
         }
@@ -636,18 +645,40 @@ impl AnyPayload {
         Ok(match kind {
             PayloadKind::FullOutput => AnyPayload::FullOutput(FullOutputRepr::parse(data)?),
             PayloadKind::Quaternion => AnyPayload::Quaternion(QuaternionRepr::parse(data)?),
-            PayloadKind::OrientationSensors => AnyPayload::OrientationSensors(OrientationSensorsRepr::parse(data)?),
-            PayloadKind::InitialAlignment => AnyPayload::InitialAlignment(InitialAlignmentRepr::parse(data)?),
-            PayloadKind::AhrsParametersLoad => AnyPayload::AhrsParametersLoad(AhrsParametersLoadRepr::parse(data)?),
-            PayloadKind::AhrsParametersRead => AnyPayload::AhrsParametersRead(AhrsParametersReadRepr::parse(data)?),
-            PayloadKind::FirmwareVersion => AnyPayload::FirmwareVersion(FirmwareVersionRepr::parse(data)?),
+            PayloadKind::OrientationSensors => {
+                AnyPayload::OrientationSensors(OrientationSensorsRepr::parse(data)?)
+            }
+            PayloadKind::InitialAlignment => {
+                AnyPayload::InitialAlignment(InitialAlignmentRepr::parse(data)?)
+            }
+            PayloadKind::AhrsParametersLoad => {
+                AnyPayload::AhrsParametersLoad(AhrsParametersLoadRepr::parse(data)?)
+            }
+            PayloadKind::AhrsParametersRead => {
+                AnyPayload::AhrsParametersRead(AhrsParametersReadRepr::parse(data)?)
+            }
+            PayloadKind::FirmwareVersion => {
+                AnyPayload::FirmwareVersion(FirmwareVersionRepr::parse(data)?)
+            }
             PayloadKind::BitResult => AnyPayload::BitResult(BitResultRepr::parse(data)?),
-            PayloadKind::CalibrationParameters => AnyPayload::CalibrationParameters(CalibrationParametersRepr::parse(data)?),
-            PayloadKind::CalibrationResult => AnyPayload::CalibrationResult(CalibrationResultRepr::parse(data)?),
-            PayloadKind::CalibrationRunResult => AnyPayload::CalibrationRunResult(CalibrationRunResultRepr::parse(data)?),
-            PayloadKind::CalibrationRunParameters => AnyPayload::CalibrationRunParameters(CalibrationRunParametersRepr::parse(data)?),
-            PayloadKind::CalibrationStatus => AnyPayload::CalibrationStatus(CalibrationStatusRepr::parse(data)?),
-            PayloadKind::Acknowledgement => AnyPayload::Acknowledgement(AcknowledgementRepr::parse(data)?),
+            PayloadKind::CalibrationParameters => {
+                AnyPayload::CalibrationParameters(CalibrationParametersRepr::parse(data)?)
+            }
+            PayloadKind::CalibrationResult => {
+                AnyPayload::CalibrationResult(CalibrationResultRepr::parse(data)?)
+            }
+            PayloadKind::CalibrationRunResult => {
+                AnyPayload::CalibrationRunResult(CalibrationRunResultRepr::parse(data)?)
+            }
+            PayloadKind::CalibrationRunParameters => {
+                AnyPayload::CalibrationRunParameters(CalibrationRunParametersRepr::parse(data)?)
+            }
+            PayloadKind::CalibrationStatus => {
+                AnyPayload::CalibrationStatus(CalibrationStatusRepr::parse(data)?)
+            }
+            PayloadKind::Acknowledgement => {
+                AnyPayload::Acknowledgement(AcknowledgementRepr::parse(data)?)
+            }
         })
     }
 

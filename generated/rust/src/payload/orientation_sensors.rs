@@ -142,9 +142,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Kg,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Kg),
         }),
         unit: Some(crate::payload::Unit::DegPerS),
         encoding: None,
@@ -163,9 +161,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Kg,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Kg),
         }),
         unit: Some(crate::payload::Unit::DegPerS),
         encoding: None,
@@ -184,9 +180,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Kg,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Kg),
         }),
         unit: Some(crate::payload::Unit::DegPerS),
         encoding: None,
@@ -205,9 +199,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Ka,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Ka),
         }),
         unit: Some(crate::payload::Unit::G),
         encoding: None,
@@ -226,9 +218,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Ka,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Ka),
         }),
         unit: Some(crate::payload::Unit::G),
         encoding: None,
@@ -247,9 +237,7 @@ pub mod info {
         default: Value::Int(0),
         scale: Some(crate::payload::Scale {
             multiplier: 1,
-            divisor: crate::payload::Divisor::Parameter(
-                crate::variant::VariantParameter::Ka,
-            ),
+            divisor: crate::payload::Divisor::Parameter(crate::variant::VariantParameter::Ka),
         }),
         unit: Some(crate::payload::Unit::G),
         encoding: None,
