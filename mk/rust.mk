@@ -53,3 +53,45 @@ SETUP_TARGETS += setup-rust
 BUILD_TARGETS += build-rust
 LINT_TARGETS += lint-rust
 TEST_TARGETS += test-rust
+
+# --- bench: the Rust decoder next to C's and a byte-summing loop, on the same capture ----------
+RUST_CAPTURE := $(BUILD)/bench/capture.bin
+C_BENCH := $(BUILD)/c/bench_stream
+
+bench-rust: setup-rust
+	$(CARGO) build --quiet --release --manifest-path bench/rust/Cargo.toml
+	@if [ -x $(C_BENCH) ]; then $(C_BENCH) | tee $(RUST_BUILD)/bench-c.txt; else echo "c: $(C_BENCH) not built (make build-c); no C numbers" | tee $(RUST_BUILD)/bench-c.txt; fi
+	@$(RUST_BUILD)/target/release/ilahrs-bench $(RUST_CAPTURE) | tee $(RUST_BUILD)/bench-rust.txt
+	@c=$$(sed -n 's/^c_stream_next: \([0-9.]*\) MiB\/s/\1/p' $(RUST_BUILD)/bench-c.txt); \
+	 r=$$(sed -n 's/^rust_stream: \([0-9.]*\) MiB\/s/\1/p' $(RUST_BUILD)/bench-rust.txt); \
+	 if [ -n "$$c" ] && [ -n "$$r" ]; then awk -v r="$$r" -v c="$$c" 'BEGIN { printf "rust_stream / c_stream_next: %.2f (target >= 0.90)\n", r / c }'; fi
+
+# --- footprint: code and RAM on a Cortex-M4, when the target can be installed -------------------
+footprint-rust: setup-rust
+	@if ! rustup target list --installed 2>/dev/null | grep -q '^$(RUST_FOOTPRINT_TARGET)$$' \
+	    && ! rustup target add $(RUST_FOOTPRINT_TARGET) >/dev/null 2>&1; then \
+	  echo "footprint-rust: the $(RUST_FOOTPRINT_TARGET) target cannot be installed here; no numbers"; exit 0; fi; \
+	CARGO_TARGET_DIR=$(RUST_TARGET) RUSTFLAGS="-C link-arg=-T$(ROOT)/bench/rust/footprint/link.x" \
+	  cargo build --quiet --release --target $(RUST_FOOTPRINT_TARGET) --manifest-path bench/rust/footprint/Cargo.toml; \
+	elf=$(RUST_TARGET)/$(RUST_FOOTPRINT_TARGET)/release/ilahrs-footprint; \
+	size=$$(command -v arm-none-eabi-size || command -v size); \
+	$$size -A $$elf | awk '/^\.(text|rodata|data|bss|vector_table) / { s[$$1] = $$2 } \
+	  END { printf "rust_footprint_flash: %d bytes (.text %d, .rodata %d, .data %d)\nrust_footprint_static_ram: %d bytes (.data + .bss)\n", \
+	  s[".text"] + s[".rodata"] + s[".data"] + s[".vector_table"], s[".text"], s[".rodata"], s[".data"], s[".data"] + s[".bss"] }'
+	@$(CARGO) build --quiet --release --manifest-path bench/rust/Cargo.toml
+	@$(RUST_BUILD)/target/release/ilahrs-bench --sizes
+
+# --- fuzz: cargo-fuzz on nightly, FUZZ_SECONDS per target ---------------------------------------
+FUZZ_SECONDS ?= 60
+
+fuzz-rust: setup-rust
+	@command -v cargo-fuzz >/dev/null || cargo install --quiet --locked cargo-fuzz
+	@rustup toolchain list | grep -q '^nightly' || rustup toolchain install --profile minimal nightly
+	for target in stream payloads; do \
+	  cargo +nightly fuzz run --fuzz-dir fuzz/rust --target-dir $(RUST_TARGET)/fuzz $$target -- \
+	    -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 || exit 1; \
+	done
+
+BENCH_TARGETS += bench-rust
+FOOTPRINT_TARGETS += footprint-rust
+FUZZ_TARGETS += fuzz-rust

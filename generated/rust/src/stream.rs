@@ -246,6 +246,13 @@ impl StreamDecoder {
                 used += take;
                 match self.step(false) {
                     Step::Accepted(from, size) => {
+                        // Give back the bytes held behind the message when they all came
+                        // from this input, so that the next call scans them where they lie.
+                        let behind = self.end - self.start;
+                        if behind <= used {
+                            used -= behind;
+                            self.start = self.end;
+                        }
                         let bytes = self.buffer.get(from..from + size).unwrap_or(&[]);
                         return (used, accepted(bytes));
                     }
