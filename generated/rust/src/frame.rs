@@ -123,11 +123,11 @@ impl TryFrom<u8> for MessageType {
 /// assert_eq!(ilahrs::checksum(&[0xFF, 0xFF, 0x02]), 0x0200);
 /// ```
 pub fn checksum(data: &[u8]) -> u16 {
-    let mut sum: u16 = 0;
-    for byte in data {
-        sum = sum.wrapping_add(u16::from(*byte));
-    }
-    sum
+    // Summed in 32 bits (wrapping keeps the sum modulo 2^16 right) so that it vectorises.
+    let sum = data
+        .iter()
+        .fold(0u32, |sum, byte| sum.wrapping_add(u32::from(*byte)));
+    (sum & 0xFFFF) as u16
 }
 
 /// Checks that `data` starts with a whole frame and returns the frame's size (bytes).

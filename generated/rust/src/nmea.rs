@@ -189,14 +189,24 @@ impl PahrSentence {
             return Err(Error::at(ErrorKind::BadChecksum, star + 1));
         }
         let body = data.get(PREFIX.len()..star).unwrap_or(&[]);
-        if body.split(|byte| *byte == b',').count() != FIELD_COUNT {
+        // One pass over the body: where each field starts and ends (offsets into `data`).
+        let mut spans = [(0usize, 0usize); FIELD_COUNT];
+        let mut count = 0;
+        let mut start = PREFIX.len();
+        for part in body.split(|byte| *byte == b',') {
+            if let Some(span) = spans.get_mut(count) {
+                *span = (start, start + part.len());
+            }
+            count += 1;
+            start += part.len() + 1;
+        }
+        if count != FIELD_COUNT {
             return Err(Error::at(ErrorKind::Malformed, PREFIX.len()));
         }
         let mut values = [0i64; FIELD_COUNT];
-        let mut offset = PREFIX.len();
-        let parts = body.split(|byte| *byte == b',');
-        for ((part, spec), slot) in parts.zip(FIELDS).zip(&mut values) {
-            let error = |kind| Error::at(kind, offset).with_field(spec.name);
+        for ((spec, &(from, to)), slot) in FIELDS.iter().zip(&spans).zip(&mut values) {
+            let part = data.get(from..to).unwrap_or(&[]);
+            let error = |kind| Error::at(kind, from).with_field(spec.name);
             let value = match spec.format {
                 Format::Decimal { decimals, .. } => parse_decimal(part, decimals),
                 Format::Hex { width } => parse_hex(part, width),
@@ -206,7 +216,6 @@ impl PahrSentence {
                 return Err(error(ErrorKind::OutOfRange));
             }
             *slot = value;
-            offset += part.len() + 1;
         }
         PahrSentence::from_scaled(values)
     }
@@ -246,7 +255,7 @@ impl PahrSentence {
     /// Checks every field against its range, in sentence order: `out_of_range` naming the
     /// field (no offset).
     pub fn validate(&self) -> Result<()> {
-        for (index, (value, spec)) in self.scaled().into_iter().zip(FIELDS).enumerate() {
+        for (index, (value, spec)) in self.scaled().into_iter().zip(FIELDS.iter()).enumerate() {
             if value < spec.min || value > spec.max {
                 return Err(refuse(index));
             }
@@ -335,7 +344,7 @@ impl PahrSentence {
         for byte in PREFIX {
             out.push(*byte);
         }
-        for (index, (value, spec)) in self.scaled().into_iter().zip(FIELDS).enumerate() {
+        for (index, (value, spec)) in self.scaled().into_iter().zip(FIELDS.iter()).enumerate() {
             if index > 0 {
                 out.push(b',');
             }
@@ -385,36 +394,32 @@ fn hex_digit(byte: u8) -> Option<u8> {
 }
 
 /// A decimal field scaled by 10^decimals (saturating for absurdly long numbers, which then
-/// fail the range check), or `None` when it does not follow the grammar.
+/// fail the range check), or `None` when it does not follow the grammar: an optional `-`, one
+/// or more digits, and optionally `.` with 1 to `decimals` digits.
 fn parse_decimal(text: &[u8], decimals: u32) -> Option<i64> {
     let (negative, body) = match text {
         [b'-', rest @ ..] => (true, rest),
         _ => (false, text),
     };
-    let (whole, fraction) = match body.iter().position(|byte| *byte == b'.') {
-        Some(dot) => (body.get(..dot)?, Some(body.get(dot + 1..)?)),
-        None => (body, None),
-    };
-    if whole.is_empty() || !whole.iter().all(u8::is_ascii_digit) {
+    let mut value: i64 = 0;
+    let mut whole_digits = 0usize;
+    let mut fraction_digits: Option<u32> = None;
+    for &byte in body {
+        match (byte, fraction_digits) {
+            (b'0'..=b'9', None) => whole_digits += 1,
+            (b'0'..=b'9', Some(count)) if count < decimals => fraction_digits = Some(count + 1),
+            (b'.', None) => {
+                fraction_digits = Some(0);
+                continue;
+            }
+            _ => return None,
+        }
+        value = value.saturating_mul(10).saturating_add(digit_value(byte));
+    }
+    if whole_digits == 0 || fraction_digits == Some(0) {
         return None;
     }
-    let mut value: i64 = 0;
-    for digit in whole {
-        value = value.saturating_mul(10).saturating_add(digit_value(*digit));
-    }
-    let mut places = decimals;
-    if let Some(fraction) = fraction {
-        if fraction.is_empty() || fraction.len() > decimals as usize {
-            return None;
-        }
-        for digit in fraction {
-            if !digit.is_ascii_digit() {
-                return None;
-            }
-            value = value.saturating_mul(10).saturating_add(digit_value(*digit));
-            places = places.saturating_sub(1);
-        }
-    }
+    let places = decimals.saturating_sub(fraction_digits.unwrap_or(0));
     value = value.saturating_mul(10i64.saturating_pow(places));
     Some(if negative { -value } else { value })
 }
