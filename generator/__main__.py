@@ -15,7 +15,16 @@ from .load import SpecError
 from .render import derived_files, render, target_names
 
 # Build products that may sit inside generated/ without being generated.
-IGNORED_PARTS = {"target", "__pycache__", ".mypy_cache", ".ruff_cache", ".pytest_cache", "node_modules", "build"}
+IGNORED_PARTS = {
+    "target",
+    "__pycache__",
+    ".mypy_cache",
+    ".ruff_cache",
+    ".pytest_cache",
+    "node_modules",
+    "build",
+    "Cargo.lock",
+}
 
 
 def _on_disk(out: Path, targets: list[str]) -> set[str]:

@@ -185,7 +185,7 @@ DATE_2199_12_01 = 2199 + (12 - 1) / 12 + 1 / 365
 DATE_2199_12_31 = 2199 + (12 - 1) / 12 + 31 / 365  # above 2200.0 (E15)
 DEFAULTS = (
     "fields not given take the builders' default: the field's default, else 0 (zeros, empty text) "
-    "when its range allows, else the lowest value of its range; date 1900.0"
+    "when its range allows, else the lowest value of its range (a date: the float32 at or below 1900-01-01)"
 )
 HERNDON = (38.9586, -77.357)  # the ICD's address, Herndon VA
 
@@ -678,9 +678,15 @@ def suite_payloads() -> list[Vector]:
         {**typical, "date": DATE_2199_12_31},
     )
     p.ok(
-        "date-1900",
-        "raw date 1900.0, the lower bound the model derives from year_range (encodings.date)",
-        {**typical, "date": 1900.0},
+        "date-1900-01-01",
+        "date 1900-01-01 = 1900 + 0/12 + 1/365, the first real date of year_range (encodings.date)",
+        {**typical, "date": 1900 + 0 / 12 + 1 / 365},
+    )
+    p.refuse(
+        "refuse-date-1900.0",
+        "raw date 1900.0 is day 0 of 1900, below the encoding of 1900-01-01 (spec/README.md)",
+        typical,
+        date=1900.0,
     )
     p.refuse("refuse-date-1899.5", "a date float below year_range [1900, 2199] (encodings.date)", typical, date=1899.5)
     p.refuse("refuse-date-2201", "a date float above year_range [1900, 2199] (encodings.date)", typical, date=2201.0)

@@ -223,11 +223,22 @@ def _xyz(prefix: str, type_: str, offset: int, step: int, **kw: object) -> list[
     return [Field(f"{prefix}{axis}", type_, offset + i * step, **kw) for i, axis in enumerate("xyz")]  # type: ignore[arg-type]
 
 
+def f32_toward(value: float, upward: bool) -> float:
+    """The nearest float32 at or beyond `value` in the given direction."""
+    rounded: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    if (upward and rounded < value) or (not upward and rounded > value):
+        bits: int = struct.unpack("<i", struct.pack("<f", rounded))[0]
+        bits += 1 if (rounded >= 0) == upward else -1
+        rounded = struct.unpack("<f", struct.pack("<i", bits))[0]
+    return rounded
+
+
 # encodings.date: year_range [1900, 2199]; Year + (Month - 1)/12 + Day/365 (E15). A raw date float
-# lies between 1900.0 (the lower bound the generator's model derives) and the encoding of the last
-# real date, 2199-12-31, which is above 2200.0 because Day/365 overlaps the next year (E15).
-DATE_MIN = 1900.0
-DATE_MAX = 2199 + (12 - 1) / 12 + 31 / 365
+# lies between the encodings of the first real date, 1900-01-01, and the last, 2199-12-31 (above
+# 2200.0 because Day/365 overlaps the next year, E15), widened outward to float32 values
+# (spec/README.md, payload encode).
+DATE_MIN = f32_toward(1900 + (1 - 1) / 12 + 1 / 365, upward=False)
+DATE_MAX = f32_toward(2199 + (12 - 1) / 12 + 31 / 365, upward=True)
 
 
 def _location(offset: int) -> list[Field]:
