@@ -4,6 +4,10 @@
 
 Frames, the commands of Table C.1, every payload table, the Unit Status Word, the $PAHR sentence
 and a sans-I/O stream decoder, generated from spec/ilahrs.yaml (spec 1.0.0).
+The device's behaviour is a table (`ilahrs.statemachine`) that a reference device model
+(`Device`) and a host session (`Host`) interpret, both sans-I/O; `ilahrs.simulate` serves the
+model as a virtual AHRS on a pty or loopback socket (`ilahrs simulate`), and `ilahrs.serial`
+drives a real or virtual AHRS over pyserial (the optional `serial` extra).
 Standard library only.
 
 >>> import ilahrs
@@ -27,6 +31,7 @@ from .commands import (
     command_names,
     decode_command,
 )
+from .device import Device
 from .encodings import (
     DECLINATION_COMPUTE,
     VARIANTS,
@@ -41,6 +46,7 @@ from .encodings import (
 )
 from .errors import ErrorKind, IlahrsError
 from .frame import MAX_FRAME_SIZE, Frame, MessageType, checksum
+from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import PahrSentence
 from .payloads import (
     PAYLOADS,
@@ -77,6 +83,7 @@ __all__ = [
     "SPEC_SHA256",
     "SPEC_VERSION",
     "VARIANTS",
+    "Acknowledged",
     "Acknowledgement",
     "AhrsParametersLoad",
     "AhrsParametersRead",
@@ -89,17 +96,24 @@ __all__ = [
     "CalibrationStatusType",
     "CalibrationType",
     "CommandInfo",
+    "DataBlock",
+    "Device",
+    "Discarded",
     "ErrorKind",
     "FieldInfo",
     "FirmwareVersion",
     "Frame",
     "FullOutput",
+    "Host",
+    "HostEvent",
     "IlahrsError",
     "InitialAlignment",
     "MessageType",
     "OrientationSensors",
+    "Output",
     "PahrSentence",
     "Payload",
+    "ProtocolError",
     "Quaternion",
     "StreamDecoder",
     "StreamEvent",

@@ -921,9 +921,9 @@ class AhrsParametersLoad:
     """Longitude. (f32, at offset 12, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 16, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 1900.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range 1900.0..2200.0, ICD:
-    Date (Year, Month, Day))"""
+    date: float = 1900.002685546875
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range
+    1900.002685546875..2200.001708984375, ICD: Date (Year, Month, Day))"""
     alignment_angle_a1: float = 0.0
     """Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane,
     clockwise positive (Appendix B). (f32, at offset 24, unit deg, range -360..360, ICD: Alignment angle
@@ -958,7 +958,7 @@ class AhrsParametersLoad:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_float(self.date, 1900.0, 2200.0, 'date', 20)
+        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 20)
         _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
         _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
         _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
@@ -1056,9 +1056,9 @@ class AhrsParametersRead:
     """Longitude. (f32, at offset 12, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 16, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 1900.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range 1900.0..2200.0, ICD:
-    Date (Year, Month, Day))"""
+    date: float = 1900.002685546875
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 20, unit year, range
+    1900.002685546875..2200.001708984375, ICD: Date (Year, Month, Day))"""
     alignment_angle_a1: float = 0.0
     """Mounting angle 1 (Appendix B). (f32, at offset 24, unit deg, range -360..360, ICD: Alignment angle A1;
     erratum E31)"""
@@ -1096,7 +1096,7 @@ class AhrsParametersRead:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_float(self.date, 1900.0, 2200.0, 'date', 20)
+        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 20)
         _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
         _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
         _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
@@ -1323,9 +1323,9 @@ class CalibrationParameters:
     """Longitude. (f32, at offset 10, unit deg, range -180..180, ICD: Longitude)"""
     altitude: float = 0.0
     """Altitude. (f32, at offset 14, unit m, range -20000..100000, ICD: Altitude; erratum E31)"""
-    date: float = 1900.0
-    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, range 1900.0..2200.0, ICD:
-    Date (Year, Month, Day))"""
+    date: float = 1900.002685546875
+    """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, range
+    1900.002685546875..2200.001708984375, ICD: Date (Year, Month, Day))"""
 
     @classmethod
     def parse(cls, data: Buffer) -> Self:
@@ -1347,7 +1347,7 @@ class CalibrationParameters:
         _check_float(self.latitude, -90.0, 90.0, 'latitude', 6)
         _check_float(self.longitude, -180.0, 180.0, 'longitude', 10)
         _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 14)
-        _check_float(self.date, 1900.0, 2200.0, 'date', 18)
+        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 18)
 
     def build(self) -> bytes:
         """Encode the 22-byte payload; refuse out-of-range values."""

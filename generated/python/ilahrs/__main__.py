@@ -1,0 +1,98 @@
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""Command line: `ilahrs simulate` (a virtual AHRS on a pty or loopback socket) and `ilahrs
+diagram` (the state machine as a Mermaid diagram). Run `ilahrs simulate --help` for the options."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from contextlib import ExitStack
+
+from . import SPEC_VERSION
+from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
+from .encodings import VARIANTS
+from .errors import IlahrsError
+from .payloads import AhrsParametersRead
+from .simulate import Faults, Line, run_pty, run_tcp
+from .statemachine import DEFAULT_FIRMWARE, TIMER_FIELDS, mermaid
+
+__all__ = ["main"]
+
+
+def _rate(text: str) -> float:
+    value = float(text)
+    if not 0.0 <= value <= 1.0:
+        raise argparse.ArgumentTypeError(f"{text} is not a probability between 0 and 1")
+    return value
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="ilahrs", description=f"ilahrs {SPEC_VERSION}: Inertial Labs AHRS tools")
+    commands = parser.add_subparsers(dest="command", required=True)
+    sim = commands.add_parser(
+        "simulate",
+        help="run a virtual AHRS on a pseudo-terminal (default) or a loopback TCP port",
+        description="Run a virtual AHRS. The first line of output is the device path (or HOST:PORT with --tcp); "
+        "connect at 115200 baud 8N1. Stop with Ctrl-C or SIGTERM.",
+    )
+    sim.add_argument("--tcp", metavar="HOST:PORT", help="serve one client on a loopback address (port 0: any port)")
+    sim.add_argument("--seed", type=int, default=0, help="seed of the motion, noise, calibration and faults")
+    sim.add_argument("--variant", choices=sorted(VARIANTS), default=DEFAULT_VARIANT, help="device variant (KG, KA)")
+    sim.add_argument("--firmware", default=DEFAULT_FIRMWARE, help=f"firmware version (default {DEFAULT_FIRMWARE})")
+    sim.add_argument("--firmware-text", help="the GetVerFirmware answer")
+    sim.add_argument("--device-id", default=DEFAULT_DEVICE_ID, help="the device id of ReadAHRSPar")
+    sim.add_argument("--alignment-time", type=int, metavar="S", help="initial alignment time in seconds")
+    sim.add_argument("--update-rate", type=int, metavar="HZ", help="output rate in Hz")
+    sim.add_argument("--corrupt-rate", type=_rate, default=0.0, metavar="P", help="probability of corrupting a byte")
+    sim.add_argument("--drop-rate", type=_rate, default=0.0, metavar="P", help="probability of dropping a byte")
+    sim.add_argument(
+        "--garbage-rate", type=_rate, default=0.0, metavar="P", help="probability of noise before a message"
+    )
+    sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
+    commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
+    return parser
+
+
+def _device(args: argparse.Namespace) -> Device:
+    raw = default_parameters(args.device_id).raw()
+    settings = {"alignment": args.alignment_time, "output": args.update_rate}
+    for timer, value in settings.items():
+        if value is not None:
+            raw[TIMER_FIELDS[timer][1]] = value
+    parameters = AhrsParametersRead.from_raw(raw)
+    return Device(
+        seed=args.seed,
+        variant=args.variant,
+        firmware=args.firmware,
+        firmware_text=args.firmware_text,
+        parameters=parameters,
+    )
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    if args.command == "diagram":
+        sys.stdout.write(mermaid())
+        return 0
+    try:
+        device = _device(args)
+    except IlahrsError as exc:
+        print(f"ilahrs simulate: {exc}", file=sys.stderr)
+        return 2
+    faults = Faults(args.corrupt_rate, args.drop_rate, args.garbage_rate, args.seed)
+    with ExitStack() as stack:
+        log = stack.enter_context(open(args.log, "w", encoding="utf-8")) if args.log else None
+        line = Line(device, faults, log)
+        try:
+            status = run_tcp(line, args.tcp) if args.tcp else run_pty(line)
+        except (ValueError, OSError) as exc:
+            print(f"ilahrs simulate: {exc}", file=sys.stderr)
+            return 2
+    print(f"ilahrs simulate: sent {line.sent} messages, {line.intact} intact, {line.lost} lost", file=sys.stderr)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())

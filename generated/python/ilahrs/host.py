@@ -1,0 +1,426 @@
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""The host session: the client side of the protocol, sans-I/O (h11 style).
+
+The host builds commands and the parameter block that must follow them (E5, E13), and keeps track
+of what the device owes it, from the same table the device model interprets
+(`ilahrs.statemachine`): the answers to the last command (an acknowledgement carrying the
+checksum of what was sent, E12; a data block of a known table; one output block), and what the
+device sends as time passes in its state (the alignment block, output blocks, calibration
+results). Every incoming frame is decoded by that context into the right payload class (a 50- or
+52-byte block is only ever read as the table the context says, E7). An answer that is missing
+(timed out on the host's own clock), wrong (an acknowledgement with another checksum) or
+unexpected is reported as a ProtocolError; nothing is guessed.
+
+>>> from ilahrs.device import Device
+>>> host, device = Host(), Device(seed=1)
+>>> answer = device.receive(host.send("ReadAHRSPar"))
+>>> [type(event).__name__ for event in host.receive(answer)]
+['DataBlock']
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Final
+
+from .commands import COMMANDS, build_command
+from .errors import ErrorKind, IlahrsError
+from .frame import Frame, MessageType
+from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
+from .payloads import PAYLOADS, Payload
+from .statemachine import (
+    ACK,
+    DEFAULT_ALIGNMENT_TIME_S,
+    DEFAULT_UPDATE_RATE_HZ,
+    INITIAL,
+    OUTPUT,
+    OUTPUT_FORMATS,
+    OUTPUT_PREFIX,
+    PARAMETER_BLOCK,
+    STATES,
+    TIMER_FIELDS,
+    command_event,
+    lookup,
+    timer_transition,
+)
+from .status import UnitStatusWord
+from .stream import StreamDecoder, StreamEvent
+
+__all__ = [
+    "DEFAULT_REPLY_TIMEOUT_S",
+    "Acknowledged",
+    "DataBlock",
+    "Discarded",
+    "Host",
+    "HostEvent",
+    "Output",
+    "ProtocolError",
+]
+
+DEFAULT_REPLY_TIMEOUT_S: Final = 1.0
+"""How long the host waits for an answer, and the margin it adds to timed events (covers the
+0.5 s a calibration result may take, E38)."""
+_NS: Final = 1_000_000_000
+_USW_FIELDS: Final = {
+    'full_output': 'usw',
+    'quaternion': 'usw',
+    'orientation_sensors': 'usw',
+    'initial_alignment': 'usw',
+    'bit_result': 'usw',
+    'calibration_run_result': 'usw',
+}
+"""Payload table -> its USW field."""
+_SENTENCE_USW: Final = 'usw'
+_TIMER_IS_RATE: Final = {
+    'accumulation': False,
+    'alignment': False,
+    'output': True,
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Acknowledged:
+    """The device acknowledged `message` (a command name, or the table of a parameter block) with
+    the right checksum."""
+
+    message: str
+    checksum: int
+    raw: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class DataBlock:
+    """A data block, decoded as the table the context says. `source`: the command or the event
+    (alignment_done, accumulation_done ...) that made the device send it."""
+
+    source: str
+    payload: Payload
+    raw: bytes = b""
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """One block of the current output format: a payload object or a $PAHR sentence. `source`:
+    the command or event that made the device send it; `late`: it arrived after the host left the
+    state that sends it (it was in flight when the command went out)."""
+
+    data: Payload | PahrSentence
+    source: str = ""
+    late: bool = False
+    raw: bytes = b""
+
+    @property
+    def usw(self) -> UnitStatusWord:
+        """The block's Unit Status Word."""
+        if isinstance(self.data, PahrSentence):
+            return UnitStatusWord(getattr(self.data, _SENTENCE_USW))
+        return UnitStatusWord(getattr(self.data, _USW_FIELDS[self.data.NAME]))
+
+
+@dataclass(frozen=True, slots=True)
+class ProtocolError:
+    """The device did not answer as the protocol says: `problem` is "missing" (nothing within the
+    timeout), "wrong" (an acknowledgement with another checksum) or "unexpected" (a message
+    nothing in the current state explains). `expected`: what the host was waiting for."""
+
+    kind: ErrorKind
+    problem: str
+    detail: str
+    expected: str | None = None
+    raw: bytes | None = None
+    source: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Discarded:
+    """Received bytes that belong to no valid frame or sentence (noise, a broken message)."""
+
+    count: int
+
+
+HostEvent = Acknowledged | DataBlock | Output | ProtocolError | Discarded
+
+
+@dataclass(slots=True)
+class _Owed:
+    item: str
+    source: str
+    checksum: int | None
+    deadline: int
+
+
+class Host:
+    """The client side of one serial line.
+
+    `send(command, block)` returns the bytes to write; `receive(data)` and `advance(seconds)`
+    return HostEvents. `state` is the state the host believes the device is in (the table's
+    names); `owed` lists what the device still owes for the last command. `firmware`: the
+    device's firmware version, for the rows of the table that depend on it (E29).
+    """
+
+    def __init__(
+        self,
+        *,
+        firmware: str | None = None,
+        reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S,
+        state: str = INITIAL,
+    ) -> None:
+        self.firmware = firmware
+        self.reply_timeout = reply_timeout
+        self._decoder = StreamDecoder()
+        self._now = 0
+        self._state = state
+        self._owed: list[_Owed] = []
+        self._target = state
+        self._output: str | None = None
+        self._timer_deadline: int | None = None
+        self._timer_index = 0
+        self._late_state: str | None = None
+        self._late_until = 0
+        self._settings: dict[str, float] = {}
+        self._arm_timer()
+
+    @property
+    def state(self) -> str:
+        """The state the host believes the device is in."""
+        return self._state
+
+    @property
+    def owed(self) -> tuple[str, ...]:
+        """What the device still owes for the last command (ack, output, payload names)."""
+        return tuple(o.item for o in self._owed)
+
+    @property
+    def output_format(self) -> str | None:
+        """The output format the last start command chose."""
+        return self._output
+
+    @property
+    def now(self) -> float:
+        """Seconds on the host's clock."""
+        return self._now / _NS
+
+    def setting(self, timer: str) -> float:
+        """What the host knows of a timer's parameter (alignment time, accumulation time in s;
+        update rate in Hz): learned from blocks sent and parameter blocks read, else the default."""
+        default = DEFAULT_UPDATE_RATE_HZ if _TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
+        return self._settings.get(timer, default)
+
+    def resync(self, state: str = INITIAL) -> None:
+        """Forget what is owed and believe the device is in `state` (after a Stop and a quiet line)."""
+        if state not in STATES:
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, "state", f"no state {state!r}")
+        self._owed = []
+        self._late_state = None
+        self._state = self._target = state
+        self._arm_timer()
+
+    def send(self, command: str, block: Payload | None = None) -> bytes:
+        """The bytes of `command` (ICD name), followed by its parameter block if it takes one.
+        Refused (IlahrsError UNEXPECTED_MESSAGE) while answers are owed, or if the device would
+        ignore the command in its state (E33)."""
+        info = COMMANDS.get(command)
+        if info is None:
+            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command is called {command!r}")
+        if self._owed:
+            detail = f"still waiting for {', '.join(self.owed)}"
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
+        event = command_event(info.code, self._state) or command
+        transition = lookup(self._state, event, self.firmware)
+        if transition is None:
+            detail = f"{command} is ignored in state {self._state} (E33)"
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
+        data = build_command(command)
+        deadline = self._now + round(self.reply_timeout * _NS)
+        owed = [_Owed(item, event, Frame.parse(data).checksum, deadline) for item in transition.send]
+        target = transition.to
+        expects = STATES[target].expects
+        if expects is not None:
+            if block is None or expects != block.NAME:
+                got = "nothing" if block is None else block.NAME
+                detail = f"{command} must be followed by a {expects} block, not {got} (E13)"
+                raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
+            block_frame = Frame(MessageType.DATA, block.build()).build()
+            after = lookup(target, PARAMETER_BLOCK, self.firmware)
+            assert after is not None
+            owed += [_Owed(item, block.NAME, Frame.parse(block_frame).checksum, deadline) for item in after.send]
+            target = after.to
+            data += block_frame
+            self._learn(block)
+        elif block is not None:
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"{command} takes no parameter block")
+        if info.starts_output is not None:
+            self._output = info.starts_output
+        self._owed = owed
+        self._target = target
+        if not owed:
+            self._enter(target)
+        return data
+
+    def receive(self, data: bytes | bytearray | memoryview) -> list[HostEvent]:
+        """Bytes from the device -> events, in order (Discarded last, if any bytes were dropped)."""
+        before = self._decoder.discarded
+        events: list[HostEvent] = []
+        for message in self._decoder.feed(data):
+            events += self._message(message)
+        dropped = self._decoder.discarded - before
+        if dropped:
+            events.append(Discarded(dropped))
+        return events
+
+    def advance(self, seconds: float) -> list[HostEvent]:
+        """Let time pass on the host's clock; report answers that did not come in time."""
+        if not seconds >= 0:
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "seconds", f"{seconds!r} is not a time step")
+        self._now += round(seconds * _NS)
+        events: list[HostEvent] = []
+        if self._owed and self._owed[0].deadline < self._now:
+            missing = ", ".join(self.owed)
+            detail = f"no {missing} within {self.reply_timeout} s of {self._owed[0].source}"
+            owed = self._owed[0]
+            events.append(ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "missing", detail, owed.item, None, owed.source))
+            self._owed = []
+            self._enter(self._target)
+        if not self._owed and self._timer_deadline is not None and self._timer_deadline < self._now:
+            timed = timer_transition(self._state)
+            assert timed is not None
+            event, transition = timed
+            item = transition.send[self._timer_index] if transition.send else event
+            detail = f"no {item} ({event}) in state {self._state}"
+            events.append(ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "missing", detail, item, None, event))
+            self._timer_done(transition.to)
+        return events
+
+    # --- Matching messages against what is owed --------------------------------------------------
+
+    def _message(self, message: StreamEvent) -> list[HostEvent]:
+        if self._owed:
+            owed = self._owed[0]
+            result = self._match(owed.item, owed.source, owed.checksum, message)
+            if result is not None:
+                self._owed.pop(0)
+                if not self._owed:
+                    self._enter(self._target)
+                return [result]
+        timed = timer_transition(self._state)
+        if timed is not None and timed[1].send:
+            event, transition = timed
+            result = self._match(transition.send[self._timer_index], event, None, message)
+            if result is not None:
+                self._timer_index += 1
+                if self._timer_index == len(transition.send):
+                    self._timer_done(transition.to)
+                return [result]
+            following = timer_transition(transition.to) if transition.to != self._state else None
+            if (
+                following is not None
+                and following[1].send
+                and not self._owed
+                and self._match(following[1].send[0], following[0], None, message) is not None
+            ):
+                missing = transition.send[self._timer_index]
+                detail = f"{missing} never came: {following[0]} output arrived first"
+                error = ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "missing", detail, missing, None, event)
+                self._timer_done(transition.to)
+                return [error, *self._message(message)]
+        if self._late_state is not None and self._now <= self._late_until:
+            late = timer_transition(self._late_state)
+            if late is not None:
+                for item in late[1].send:
+                    result = self._match(item, late[0], None, message)
+                    if isinstance(result, Output):
+                        return [Output(result.data, result.source, True, result.raw)]
+        expected = self._owed[0].item if self._owed else None
+        detail = f"{_describe(message)} in state {self._state}"
+        if expected is not None:
+            detail += f" while waiting for {expected}"
+        source = self._owed[0].source if self._owed else None
+        return [ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "unexpected", detail, expected, message.raw, source)]
+
+    def _match(self, item: str, source: str, checksum: int | None, message: StreamEvent) -> HostEvent | None:
+        """The event if `message` is `item`; None if it is not."""
+        frame = message.frame
+        if item == OUTPUT or item.startswith(OUTPUT_PREFIX):
+            mode = None if item == OUTPUT else item.removeprefix(OUTPUT_PREFIX)
+            output = self._output_of(message)
+            if output is None or (mode is not None and output.usw.mode != mode):
+                return None
+            return Output(output.data, source, False, message.raw)
+        if frame is None or frame.message_type != MessageType.DATA:
+            return None
+        if item == ACK:
+            cls = PAYLOADS['acknowledgement']
+            if len(frame.payload) != cls.SIZE:
+                return None
+            ack = cls.parse(frame.payload)
+            value = getattr(ack, cls.FIELDS[0].name)
+            if checksum is not None and value != checksum:
+                detail = f"acknowledgement of {source} carries {value:#06x}, sent {checksum:#06x} (E12)"
+                return ProtocolError(ErrorKind.BAD_CHECKSUM, "wrong", detail, ACK, message.raw, source)
+            return Acknowledged(source, value, message.raw)
+        cls = PAYLOADS[item]
+        if len(frame.payload) != cls.SIZE:
+            return None
+        payload = cls.parse(frame.payload)
+        self._learn(payload)
+        return DataBlock(source, payload, message.raw)
+
+    def _output_of(self, message: StreamEvent) -> Output | None:
+        if self._output is None:
+            return None
+        table = OUTPUT_FORMATS.get(self._output)
+        if table is None:
+            return Output(message.sentence) if message.sentence is not None else None
+        frame = message.frame
+        cls = PAYLOADS[table]
+        if frame is None or frame.message_type != MessageType.DATA or len(frame.payload) != cls.SIZE:
+            return None
+        return Output(cls.parse(frame.payload))
+
+    # --- State ---------------------------------------------------------------------------------
+
+    def _enter(self, state: str) -> None:
+        old = self._state
+        if state != old:
+            self._late_state, self._late_until = old, self._now + round(self.reply_timeout * _NS)
+        self._state = self._target = state
+        if state != old:
+            self._arm_timer()
+
+    def _timer_done(self, state: str) -> None:
+        self._timer_index = 0
+        if state == self._state:
+            self._arm_timer()
+        else:
+            self._enter(state)
+
+    def _arm_timer(self) -> None:
+        self._timer_index = 0
+        timer = STATES[self._state].timer
+        if timer is None:
+            self._timer_deadline = None
+            return
+        seconds = self.setting(timer)
+        if _TIMER_IS_RATE.get(timer):
+            rate = seconds
+            if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
+                rate = min(rate, NMEA_MAX_RATE_HZ)
+            seconds = 1.0 / rate
+        self._timer_deadline = self._now + round((seconds + self.reply_timeout) * _NS)
+
+    def _learn(self, block: Payload) -> None:
+        """Remember the timer parameters a block carries (one the host sends or reads)."""
+        raw = block.raw()
+        for timer, (_table, name) in TIMER_FIELDS.items():
+            value = raw.get(name)
+            if isinstance(value, (int, float)) and value > 0:
+                self._settings[timer] = float(value)
+
+
+def _describe(message: StreamEvent) -> str:
+    if message.sentence is not None:
+        return "a $PAHR sentence"
+    assert message.frame is not None
+    kind = "command" if message.frame.message_type == MessageType.COMMAND else "data"
+    return f"a {kind} frame with a {len(message.frame.payload)}-byte payload"

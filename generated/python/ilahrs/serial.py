@@ -1,0 +1,357 @@
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
+
+pyserial is the optional dependency (`pip install ilahrs[serial]`) and is imported only when a
+client is opened, so the rest of the package stays standard-library only. `port` is anything
+`serial.serial_for_url` opens: a device path (/dev/ttyUSB0, the pty `ilahrs simulate` prints) or
+`socket://127.0.0.1:PORT` for `ilahrs simulate --tcp`.
+
+    with AhrsClient("/dev/ttyUSB0") as ahrs:
+        ahrs.stop()
+        params = ahrs.read_parameters()
+        ahrs.load_parameters(params.raw() | {"update_rate": 50})
+        ahrs.start("AHRScont3")
+        for block in ahrs.frames(100):
+            print(block.heading_deg)
+
+Every method waits for exactly the answers the protocol defines and raises ClientError if they do
+not come (or come wrong). Flows that start from idle are retried after a Stop (`retries`), so a
+line that loses a message now and then still completes them. Everything the host saw is in
+`events`; protocol errors in `errors`; bytes that belonged to no message in `discarded`.
+"""
+
+from __future__ import annotations
+
+import importlib
+import time
+from collections import deque
+from collections.abc import Callable, Mapping
+from types import TracebackType
+from typing import Any, Final, Self
+
+from .commands import COMMANDS, build_command
+from .errors import ErrorKind, IlahrsError
+from .host import DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
+from .nmea import PahrSentence
+from .payloads import PAYLOADS, Payload
+from .statemachine import INITIAL, TIMER_EVENTS, lookup
+
+__all__ = ["LINE", "AhrsClient", "ClientError"]
+
+LINE: Final[Mapping[str, object]] = {'baudrate': 115200, 'bytesize': 8, 'parity': 'N', 'stopbits': 1}
+"""pyserial settings of the AHRS line (section 6)."""
+_POLL: Final = 0.01
+
+
+class ClientError(IlahrsError):
+    """A flow did not complete: the device did not answer as the protocol says."""
+
+
+def _pyserial() -> Any:
+    try:
+        return importlib.import_module("serial")
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise ImportError("ilahrs.serial needs pyserial: pip install 'ilahrs[serial]'") from exc
+
+
+def _as_block(table: str | None, block: Payload | Mapping[str, object]) -> Payload:
+    """A parameter block from a payload object or raw field values of `table`."""
+    if not isinstance(block, Mapping):
+        return block
+    if table is None:
+        raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, "the command takes no parameter block")
+    return PAYLOADS[table].from_raw(block)
+
+
+class AhrsClient:
+    """One AHRS on one serial port, driven through a Host session."""
+
+    def __init__(
+        self,
+        port: str,
+        *,
+        timeout: float = 1.0,
+        firmware: str | None = None,
+        retries: int = 3,
+        quiet: float = 0.25,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
+        self.host = Host(firmware=firmware, reply_timeout=timeout)
+        self.retries = retries
+        self.quiet = quiet
+        self.events: list[HostEvent] = []
+        """Every event the host reported, in order."""
+        self.errors: list[ProtocolError] = []
+        """Protocol errors outside the quiet period after a Stop."""
+        self.received: list[bytes] = []
+        """Every valid message received, as received."""
+        self._queue: deque[HostEvent] = deque()
+        self._clock = clock
+        self._last = clock()
+        self._draining = False
+        self._port = _pyserial().serial_for_url(port, timeout=_POLL, write_timeout=5.0, **LINE)
+
+    # --- Lifetime ----------------------------------------------------------------------------
+
+    def close(self) -> None:
+        self._port.close()
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(
+        self, kind: type[BaseException] | None, value: BaseException | None, traceback: TracebackType | None
+    ) -> None:
+        self.close()
+
+    @property
+    def discarded(self) -> int:
+        """Bytes received that belonged to no valid message."""
+        return sum(e.count for e in self.events if isinstance(e, Discarded))
+
+    # --- The line ----------------------------------------------------------------------------
+
+    def poll(self, seconds: float = _POLL) -> list[HostEvent]:
+        """Read for up to `seconds` (at least one read); return the new events."""
+        end = self._clock() + seconds
+        new: list[HostEvent] = []
+        while True:
+            waiting = self._port.in_waiting
+            data: bytes = self._port.read(max(1, waiting))
+            now = self._clock()
+            events = self.host.receive(data) if data else []
+            events += self.host.advance(max(0.0, now - self._last))
+            self._last = now
+            for event in events:
+                self._record(event)
+            new += events
+            if now >= end:
+                return new
+
+    def _record(self, event: HostEvent) -> None:
+        self.events.append(event)
+        raw = getattr(event, "raw", None)
+        if raw:
+            self.received.append(raw)
+        if isinstance(event, ProtocolError) and not self._draining:
+            self.errors.append(event)
+        if not self._draining and not isinstance(event, Discarded):
+            self._queue.append(event)
+
+    def _write(self, data: bytes) -> None:
+        self._port.write(data)
+        self._port.flush()
+
+    # --- Requests ----------------------------------------------------------------------------
+
+    def stop(self) -> None:
+        """Send Stop (0xFE: ExitClb in calibration), wait until the line is quiet, and take the
+        device to be idle (6.3.5: send Stop before any other command)."""
+        self._draining = True
+        try:
+            self._write(build_command('Stop'))
+            deadline = self._clock() + max(2.0, 4 * self.quiet)
+            quiet_since = self._clock()
+            while self._clock() < deadline:
+                if self.poll(_POLL):
+                    quiet_since = self._clock()
+                elif self._clock() - quiet_since >= self.quiet:
+                    break
+        finally:
+            self._draining = False
+        self._queue.clear()
+        self.host.resync(INITIAL)
+
+    def request(self, command: str, block: Payload | Mapping[str, object] | None = None) -> list[HostEvent]:
+        """Send `command` (and its parameter block: a payload object or raw field values) and
+        wait for every answer the table lists; return them. Retried after a Stop when the
+        command is one that starts from idle."""
+        result: list[HostEvent] = self._retry(command, lambda: self._request(command, block))
+        return result
+
+    def _request(self, command: str, block: Payload | Mapping[str, object] | None) -> list[HostEvent]:
+        info = COMMANDS.get(command)
+        if info is None:
+            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command is called {command!r}")
+        if isinstance(block, Mapping):
+            block = _as_block(info.parameter_block, block)
+        self._queue.clear()
+        self._write(self.host.send(command, block))
+        answers: list[HostEvent] = []
+        sources = {command, *(name for name in COMMANDS if COMMANDS[name].code == info.code)}
+        if block is not None:
+            sources.add(block.NAME)
+        while self.host.owed:
+            self.poll(_POLL)
+            answers += self._take(sources)
+        answers += self._take(sources)
+        failures = [e for e in answers if isinstance(e, ProtocolError)]
+        if failures:
+            raise ClientError(failures[0].kind, None, None, f"{command}: {failures[0].detail}")
+        return answers
+
+    def _take(self, sources: set[str]) -> list[HostEvent]:
+        """Remove and return the queued answers to the command (or its block)."""
+        taken: list[HostEvent] = []
+        for event in list(self._queue):
+            source = getattr(event, "source", None)
+            if source in sources or (isinstance(event, ProtocolError) and event.problem != "unexpected"):
+                self._queue.remove(event)
+                taken.append(event)
+        return taken
+
+    def _retry(self, command: str, attempt: Callable[[], Any]) -> Any:
+        """Run `attempt`; after a failure, Stop and try again if `command` starts from idle."""
+        retry = lookup(INITIAL, command) is not None
+        for remaining in range(self.retries, -1, -1):
+            try:
+                return attempt()
+            except ClientError:
+                if not retry or remaining == 0:
+                    raise
+                self.stop()
+        raise AssertionError("unreachable")
+
+    def wait_for(self, predicate: Callable[[HostEvent], bool], timeout: float) -> HostEvent:
+        """The first queued or new event that satisfies `predicate`; ClientError after `timeout`
+        seconds or a protocol error about a missing answer."""
+        end = self._clock() + timeout
+        while True:
+            while self._queue:
+                event = self._queue.popleft()
+                if predicate(event):
+                    return event
+                if isinstance(event, ProtocolError) and event.problem == "missing":
+                    raise ClientError(event.kind, None, None, event.detail)
+            if self._clock() >= end:
+                raise ClientError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"nothing came within {timeout} s")
+            self.poll(_POLL)
+
+    def _block(self, answers: list[HostEvent]) -> Payload:
+        for event in answers:
+            if isinstance(event, DataBlock):
+                return event.payload
+        raise ClientError(ErrorKind.UNEXPECTED_MESSAGE, None, None, "no data block in the answer")
+
+    # --- Flows -------------------------------------------------------------------------------
+
+    def read_parameters(self) -> Payload:
+        """ReadAHRSPar: the parameter block (Table 6.10 form)."""
+        return self._block(self.request('ReadAHRSPar'))
+
+    def load_parameters(self, block: Payload | Mapping[str, object]) -> None:
+        """LoadAHRSPar and the block (Table 6.9, a payload object or raw values; values
+        the load table does not have, such as a read block's device id, are left out)."""
+        if isinstance(block, Mapping):
+            table = PAYLOADS[COMMANDS['LoadAHRSPar'].parameter_block or ""]
+            names = {f.name for f in table.FIELDS if f.type != "reserved"}
+            block = table.from_raw({k: v for k, v in block.items() if k in names})
+        self.request('LoadAHRSPar', block)
+
+    def firmware_version(self) -> str:
+        """GetVerFirmware: the firmware version text."""
+        block = self._block(self.request('GetVerFirmware'))
+        return str(next(iter(block.raw().values())))
+
+    def built_in_test(self) -> Payload:
+        """GetBIT: temperature and Unit Status Word."""
+        return self._block(self.request('GetBIT'))
+
+    def start(self, command: str) -> Payload:
+        """Start output (a command that starts continuous or on-request mode): wait for the
+        acknowledgement and the initial alignment block, and return the block."""
+        if COMMANDS[command].starts_mode is None:
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"{command} starts no output")
+
+        def attempt() -> Payload:
+            self._request(command, None)
+            event = self.wait_for(
+                lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["alignment"],
+                self.host.setting("alignment") + 2 * self.host.reply_timeout,
+            )
+            assert isinstance(event, DataBlock)
+            return event.payload
+
+        result: Payload = self._retry(command, attempt)
+        return result
+
+    def frames(self, count: int, timeout: float | None = None) -> list[Payload | PahrSentence]:
+        """The next `count` output blocks (payload objects or $PAHR sentences)."""
+        if timeout is None:
+            timeout = 2 * count / self.host.setting("output") + 2 * self.host.reply_timeout
+        end = self._clock() + timeout
+        blocks: list[Payload | PahrSentence] = []
+        while len(blocks) < count:
+            remaining = end - self._clock()
+            event = self.wait_for(lambda e: isinstance(e, Output) and not e.late, max(0.0, remaining))
+            assert isinstance(event, Output)
+            blocks.append(event.data)
+        return blocks
+
+    def get_data(self) -> Payload | PahrSentence:
+        """GetDataReq: one output block in on-request mode."""
+        for event in self.request('GetDataReq'):
+            if isinstance(event, Output):
+                return event.data
+        raise ClientError(ErrorKind.UNEXPECTED_MESSAGE, None, None, "no output block in the answer")
+
+    def low_power(self, on: bool) -> Payload | PahrSentence | None:
+        """LowPowerOn or LowPowerOff. Going to sleep from continuous output returns the last
+        block, which carries the sleep mode bits (E35)."""
+        command = 'LowPowerOn' if on else 'LowPowerOff'
+        for event in self._request(command, None):
+            if isinstance(event, Output):
+                return event.data
+        return None
+
+    def get_calibration_results(self) -> Payload:
+        """GetClbRes: the results of the last calibration (Table 6.17)."""
+        return self._block(self.request('GetClbRes'))
+
+    def clear_calibration(self) -> None:
+        """ClearClb: clear the hard/soft-iron calibration."""
+        self.request('ClearClb')
+
+    def calibrate_2d2t(
+        self,
+        parameters: Payload | Mapping[str, object],
+        runs: int = 2,
+        *,
+        accept: bool = True,
+        stop_after: Mapping[int, float] | None = None,
+    ) -> tuple[list[Payload], Payload]:
+        """A 2D-2T calibration (6.4.5 - 6.4.7): Start2D2TClb with `parameters` (Table 6.13), `runs`
+        runs (StartClbRun; run number -> seconds of accumulation after which StopClbRun ends it early,
+        in `stop_after`), FinishClb, then AcceptClb (or ExitClb if not `accept`). Returns the
+        run results (Table 6.15) and the calibration result (Table 6.14)."""
+        start = 'Start2D2TClb'
+        run_table = PAYLOADS[COMMANDS['StartClbRun'].parameter_block or ""]
+        block = _as_block(COMMANDS[start].parameter_block, parameters)
+        early = stop_after or {}
+
+        def attempt() -> tuple[list[Payload], Payload]:
+            self._request(start, block)
+            results: list[Payload] = []
+            for run in range(1, runs + 1):
+                self._request('StartClbRun', run_table())
+                self.wait_for(
+                    lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["alignment"],
+                    self.host.setting("alignment") + 2 * self.host.reply_timeout,
+                )
+                if run in early:
+                    self.poll(early[run])
+                    results.append(self._block(self._request('StopClbRun', None)))
+                else:
+                    event = self.wait_for(
+                        lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["accumulation"],
+                        self.host.setting("accumulation") + 2 * self.host.reply_timeout,
+                    )
+                    assert isinstance(event, DataBlock)
+                    results.append(event.payload)
+            final = self._block(self._request('FinishClb', None))
+            self._request('AcceptClb' if accept else 'ExitClb', None)
+            return results, final
+
+        result: tuple[list[Payload], Payload] = self._retry(start, attempt)
+        return result

@@ -1,0 +1,262 @@
+# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Do not edit: change the spec or the generator and run `make generate`.
+"""The virtual AHRS on a serial line: the device model behind a pseudo-terminal or a loopback
+socket, in real time.
+
+`run_pty()` opens a pty whose device end is set to the AHRS line (115200 baud, 8N1, raw), prints
+its path as the first line of output, and serves the device model there; any serial client
+(pyserial, `screen`) can talk to it. `run_tcp()` serves one client on a loopback address instead
+(never another address) and prints `HOST:PORT` first. Output is paced by the device model's own
+clock, advanced with the wall clock. A `Faults` object corrupts and drops bytes and puts garbage
+between messages at given rates (seeded), and the log (JSON lines) says what was meant and what
+was written for every message, so a test can check that each intact message arrived.
+
+This module is the edge of the package: it uses os, select, socket and termios (POSIX).
+"""
+
+from __future__ import annotations
+
+import ipaddress
+import json
+import os
+import random
+import select
+import signal
+import socket
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from types import FrameType
+from typing import Final, TextIO
+
+from .device import Device
+from .stream import StreamDecoder
+
+__all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "run_pty", "run_tcp"]
+
+BAUDRATE: Final = 115200
+"""The AHRS serial line (section 6): 115200 baud, 8 data bits, no parity, 1 stop bit."""
+_BUFFER_LIMIT: Final = 65536
+"""Bytes the line holds for a reader that does not read; beyond them output is lost, as on a UART."""
+_TICK: Final = 0.02
+"""Longest wait between two looks at the device's clock, seconds."""
+
+
+@dataclass(frozen=True, slots=True)
+class Faults:
+    """Damage done to what the device sends: each byte is corrupted (replaced by another value)
+    with probability `corrupt_rate` or dropped with probability `drop_rate`; before each message,
+    1 to 16 random bytes are inserted with probability `garbage_rate`."""
+
+    corrupt_rate: float = 0.0
+    drop_rate: float = 0.0
+    garbage_rate: float = 0.0
+    seed: int = 0
+
+    @property
+    def active(self) -> bool:
+        return self.corrupt_rate > 0 or self.drop_rate > 0 or self.garbage_rate > 0
+
+
+class Line:
+    """The device end of the line, sans-I/O: bytes from the host and wall-clock time in, bytes to
+    write out, with faults applied and every message logged."""
+
+    def __init__(self, device: Device, faults: Faults | None = None, log: TextIO | None = None) -> None:
+        self.device = device
+        self.faults = faults or Faults()
+        self._rng = random.Random(self.faults.seed)
+        self._log = log
+        self._splitter = StreamDecoder()
+        self._time: float | None = None
+        self.sent = 0
+        """Messages the device sent."""
+        self.intact = 0
+        """Messages written unchanged."""
+        self.lost = 0
+        """Messages lost because nobody read the line."""
+
+    def step(self, incoming: bytes, now: float) -> bytes:
+        """Advance the device to `now` (seconds, any monotonic clock), hand it `incoming`; return
+        what to write to the line."""
+        elapsed = 0.0 if self._time is None else max(0.0, now - self._time)
+        self._time = now
+        out = self.device.advance(elapsed)
+        if incoming:
+            out += self.device.receive(incoming)
+        if not out:
+            return b""
+        written = bytearray()
+        for message in self._splitter.feed(out):
+            written += self._emit(message.raw)
+        return bytes(written)
+
+    def lose(self, data: bytes) -> None:
+        """Count messages that could not be written (the reader's buffer is full)."""
+        self.lost += 1
+        self._record({"kind": "lost", "written": data.hex()})
+
+    def _emit(self, message: bytes) -> bytes:
+        faults = self.faults
+        rng = self._rng
+        garbage = b""
+        if faults.garbage_rate > 0 and rng.random() < faults.garbage_rate:
+            garbage = bytes(rng.randrange(256) for _ in range(rng.randint(1, 16)))
+            self._record({"kind": "garbage", "written": garbage.hex()})
+        damaged = bytearray()
+        for byte in message:
+            if faults.drop_rate > 0 and rng.random() < faults.drop_rate:
+                continue
+            corrupt = faults.corrupt_rate > 0 and rng.random() < faults.corrupt_rate
+            damaged.append(byte ^ rng.randint(1, 255) if corrupt else byte)
+        intact = bytes(damaged) == message
+        self.sent += 1
+        self.intact += intact
+        kind = "sentence" if message[:1] == b"$" else "frame"
+        self._record({"kind": kind, "message": message.hex(), "written": damaged.hex(), "intact": intact})
+        return garbage + bytes(damaged)
+
+    def _record(self, entry: dict[str, object]) -> None:
+        if self._log is not None:
+            entry = {"t": round(self.device.now, 6), "state": self.device.state, **entry}
+            self._log.write(json.dumps(entry, sort_keys=True) + "\n")
+            self._log.flush()
+
+
+def loopback_address(text: str) -> tuple[str, int]:
+    """HOST:PORT -> (host, port), refusing any host that is not a loopback address."""
+    host, sep, port = text.rpartition(":")
+    host = host.strip("[]")
+    if not sep or not port.isdigit() or not 0 <= int(port) <= 65535:
+        raise ValueError(f"{text!r} is not HOST:PORT")
+    if host == "localhost":
+        host = "127.0.0.1"
+    try:
+        address = ipaddress.ip_address(host)
+    except ValueError as exc:
+        raise ValueError(f"{host!r} is not an IP address (only loopback addresses are served)") from exc
+    if not address.is_loopback:
+        raise ValueError(f"{host} is not a loopback address; the virtual device serves loopback only")
+    return host, int(port)
+
+
+class _Stop:
+    """Set by SIGINT / SIGTERM."""
+
+    def __init__(self) -> None:
+        self.requested = False
+        signal.signal(signal.SIGINT, self._handle)
+        signal.signal(signal.SIGTERM, self._handle)
+
+    def _handle(self, signum: int, frame: FrameType | None) -> None:
+        del signum, frame
+        self.requested = True
+
+
+def _serve(
+    line: Line,
+    fd: int,
+    stop: _Stop,
+    reader: Callable[[], bytes | None],
+    writer: Callable[[bytes], int],
+    *,
+    clock: Callable[[], float] = time.monotonic,
+) -> None:
+    """Pump bytes between the line and a file descriptor until stopped or the peer closes."""
+    pending = bytearray()
+    while not stop.requested:
+        wait = line.device.next_event_in
+        timeout = _TICK if wait is None else max(0.0005, min(_TICK, wait))
+        readable, _, _ = select.select([fd], [], [], timeout)
+        incoming = b""
+        if readable:
+            data = reader()
+            if data is None:
+                break
+            incoming = data
+        out = line.step(incoming, clock())
+        if out:
+            if len(pending) + len(out) > _BUFFER_LIMIT:
+                line.lose(out)
+            else:
+                pending += out
+        if pending:
+            try:
+                written = writer(bytes(pending))
+            except BlockingIOError:
+                written = 0
+            except OSError:
+                break  # the peer is gone
+            del pending[:written]
+
+
+def _configure_pty(fd: int) -> None:
+    """Raw mode at 115200 baud, 8 data bits, no parity, 1 stop bit, no flow control."""
+    import termios
+    import tty
+
+    tty.setraw(fd)
+    attrs = termios.tcgetattr(fd)
+    attrs[2] &= ~(termios.PARENB | termios.CSTOPB | termios.CSIZE | termios.CRTSCTS)
+    attrs[2] |= termios.CS8 | termios.CLOCAL | termios.CREAD
+    attrs[4] = attrs[5] = termios.B115200
+    termios.tcsetattr(fd, termios.TCSANOW, attrs)
+
+
+def run_pty(line: Line, out: TextIO = sys.stdout) -> int:
+    """Serve `line` on a new pseudo-terminal; print its path first. Returns an exit status."""
+    master, slave = os.openpty()
+    try:
+        _configure_pty(slave)
+        os.set_blocking(master, False)
+        print(os.ttyname(slave), file=out, flush=True)
+        stop = _Stop()
+
+        def read() -> bytes:
+            try:
+                return os.read(master, 4096)
+            except (BlockingIOError, OSError):
+                return b""  # EIO while no client has the device open: nothing to read
+
+        _serve(line, master, stop, read, lambda data: os.write(master, data))
+    finally:
+        os.close(master)
+        os.close(slave)
+    return 0
+
+
+def run_tcp(line: Line, address: str, out: TextIO = sys.stdout) -> int:
+    """Serve `line` to one client on a loopback address (port 0: any free port); print HOST:PORT
+    first. Returns when the client closes the connection or on SIGINT / SIGTERM."""
+    host, port = loopback_address(address)
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    stop = _Stop()
+    with socket.socket(family, socket.SOCK_STREAM) as server:
+        server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        server.bind((host, port))
+        server.listen(1)
+        bound = server.getsockname()
+        print(f"{host}:{bound[1]}", file=out, flush=True)
+        while not stop.requested:
+            ready, _, _ = select.select([server], [], [], _TICK)
+            if ready:
+                break
+        if stop.requested:
+            return 0
+        connection, _peer = server.accept()
+    with connection:
+        connection.setblocking(False)
+        connection.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+
+        def read() -> bytes | None:
+            try:
+                data = connection.recv(4096)
+            except BlockingIOError:
+                return b""
+            except OSError:
+                return None
+            return data or None  # b"": the peer closed
+
+        _serve(line, connection.fileno(), stop, read, connection.send)
+    return 0
