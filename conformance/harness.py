@@ -37,9 +37,10 @@ from typing import IO, Any
 ROOT = Path(__file__).resolve().parent.parent
 KINDS = (
     "checksum", "frame_decode", "frame_encode", "command_encode", "command_decode", "ack",
-    "payload_decode", "payload_encode", "nmea_decode", "nmea_encode", "stream",
+    "payload_decode", "payload_encode", "nmea_decode", "nmea_encode", "stream", "session",
 )
-LATER_KINDS = ("session",)  # part of the format, not yet translated by this harness
+LATER_KINDS: tuple[str, ...] = ()  # kinds of the format this harness does not translate yet
+_VERSION_RE = re.compile(r"[0-9]+(?:\.[0-9]+)*")
 SPECIAL_FLOATS = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
 REL_TOL = 1e-9  # engineering values and NMEA numbers
 ABS_TOL = 1e-12
@@ -190,7 +191,35 @@ def request(v: Vector) -> str:
         if not isinstance(chunks, list) or not chunks:
             raise SuiteError(f"{w}: chunks must be a non-empty list of hex strings")
         return "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    if v.kind == "session":
+        return _session_request(i, w)
     raise SuiteError(f"{w}: unknown kind {v.kind!r}")
+
+
+def _session_request(i: dict[str, Any], w: str) -> str:
+    firmware = i.get("firmware", "-")
+    if firmware != "-" and not (isinstance(firmware, str) and _VERSION_RE.fullmatch(firmware)):
+        raise SuiteError(f"{w}: firmware is a version like 4.9.8.0")
+    events = i.get("events")
+    if not isinstance(events, list) or not events:
+        raise SuiteError(f"{w}: events must be a non-empty list")
+    tokens = []
+    for event in events:
+        if not isinstance(event, dict) or len(event) != 1:
+            raise SuiteError(f"{w}: an event is {{\"command\": code}}, {{\"data\": size}} or {{\"event\": name}}")
+        (key, value), = event.items()
+        if key == "command":
+            code = int(value, 16) if isinstance(value, str) else int_value(value, w)
+            if not 0 <= code <= 0xFF:
+                raise SuiteError(f"{w}: a command code is a byte")
+            tokens.append(f"C:{code:02X}")
+        elif key == "data":
+            tokens.append(f"D:{int_value(value, w)}")
+        elif key == "event":
+            tokens.append(f"E:{name_token(value, w)}")
+        else:
+            raise SuiteError(f"{w}: unknown session event {key!r}")
+    return f"session {firmware} " + ",".join(tokens)
 
 
 # --- answers against expectations -----------------------------------------------------------------
@@ -354,7 +383,34 @@ def compare(v: Vector, answer: Answer) -> str | None:
         return None
     if v.kind == "stream":
         return _compare_stream(exp, got, w)
+    if v.kind == "session":
+        return _compare_session(exp, got, w)
     raise SuiteError(f"{w}: unknown kind {v.kind!r}")
+
+
+def _compare_session(exp: dict[str, Any], got: dict[str, str], w: str) -> str | None:
+    tokens = got.get("steps")
+    if tokens is None:
+        return "steps missing"
+    steps = []
+    for token in tokens.split(","):
+        parts = token.split(">")
+        if len(parts) != 3:
+            return f"step {token!r} is not EVENT>STATE>SENDS"
+        steps.append({"event": parts[0], "state": parts[1], "send": [] if parts[2] == "-" else parts[2].split("+")})
+    if "state" in exp and steps[-1]["state"] != exp["state"]:
+        return f"final state {steps[-1]['state']}, expected {exp['state']}"
+    if "steps" not in exp:
+        return None
+    if not isinstance(exp["steps"], list):
+        raise SuiteError(f"{w}: steps must be a list")
+    if len(steps) != len(exp["steps"]):
+        return f"{len(steps)} steps, expected {len(exp['steps'])}"
+    for n, (want, step) in enumerate(zip(exp["steps"], steps, strict=True)):
+        for key in ("event", "state", "send"):
+            if key in want and want[key] != step[key]:
+                return f"step {n}: {key} {step[key]}, expected {want[key]}"
+    return None
 
 
 def _compare_payload(exp: dict[str, Any], got: dict[str, str], w: str) -> str | None:
