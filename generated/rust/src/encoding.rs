@@ -115,8 +115,9 @@ impl CalibrationStatusType {
 
 /// A calendar date, sent as a float: Year + (Month - 1)/12 + Day/365, as a float. (Table 6.9, Table 6.10, Table 6.13).
 ///
-/// Decoding returns the valid calendar date whose encoding is nearest the float, because the
-/// formula overlaps months and years (day 31 encodes above the next month's day 0).
+/// Decoding (`nearest_calendar_date`) returns the valid calendar date whose encoding is nearest
+/// the float, because the formula overlaps months and years (day 31 encodes above the next month's
+/// day 0, E15).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Date {
     /// Year (years), 1900 to 2199.

@@ -117,7 +117,7 @@ impl TryFrom<u8> for MessageType {
     }
 }
 
-/// The checksum of `data`: Arithmetic sum, modulo 2^16, of every byte from the message type through the last payload byte (Table 6.2: bytes 2 ... n-1); low byte first (Table 6.3) (E28).
+/// The checksum of `data` (`sum16`): Arithmetic sum, modulo 2^16, of every byte from the message type through the last payload byte (Table 6.2: bytes 2 ... n-1); low byte first (Table 6.3) (E28).
 ///
 /// ```
 /// assert_eq!(ilahrs::checksum(&[0xFF, 0xFF, 0x02]), 0x0200);

@@ -245,14 +245,26 @@ def power_of_ten(decimals: int) -> int:
 
 
 def byte_order(spec: Spec) -> str:
-    """`le` or `be`: the spec's `byte_order`, which the model does not carry, read from the spec file."""
-    from generator import ROOT
-    from generator.load import load
+    """`le` or `be`: the spec's `byte_order` as Rust's `from_le_bytes` / `from_be_bytes` spell it."""
+    orders = {"little": "le", "big": "be"}
+    if spec.byte_order not in orders:
+        raise ValueError(f"unknown byte order {spec.byte_order!r}")
+    return orders[spec.byte_order]
 
-    order = load(ROOT / spec.file, spec.file).data["byte_order"]
-    if order not in ("little", "big"):
-        raise ValueError(f"unknown byte order {order!r}")
-    return "le" if order == "little" else "be"
+
+def checksum_algorithm(spec: Spec) -> str:
+    """The frame checksum algorithm, refused unless the crate implements it (`sum16`: the byte sum
+    modulo 2^16, what `frame::checksum` computes)."""
+    if spec.frame.checksum_algorithm != "sum16":
+        raise ValueError(f"the Rust target implements the sum16 checksum, not {spec.frame.checksum_algorithm!r}")
+    return spec.frame.checksum_algorithm
+
+
+def date_decode(spec: Spec) -> str:
+    """The date decode rule, refused unless `encoding::Date::decode` implements it."""
+    if spec.date is None or spec.date.decode != "nearest_calendar_date":
+        raise ValueError(f"the Rust target decodes dates to the nearest calendar date, not {spec.date!r}")
+    return spec.date.decode
 
 
 def wire_types(spec: Spec) -> list[str]:
@@ -489,6 +501,8 @@ GLOBALS: dict[str, Any] = {
     "enum_type": enum_type,
     "wire_types": wire_types,
     "byte_order": byte_order,
+    "checksum_algorithm": checksum_algorithm,
+    "date_decode": date_decode,
     "nmea_unit_suffix": nmea_unit_suffix,
     "nmea_unit_doc": nmea_unit_doc,
 }
