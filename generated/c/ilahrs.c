@@ -12,8 +12,8 @@
 
 /* ---- Tables --------------------------------------------------------------------------- */
 
-/* Every name the library hands out, NUL-separated; tables hold offsets into it. */
-static const char ilahrs_strings[] =
+/* Names, one pool per kind of name (NUL-separated); tables hold offsets into them. */
+static const char ilahrs_error_names[151] =
     "truncated\000"
     "bad_header\000"
     "bad_message_type\000"
@@ -24,13 +24,94 @@ static const char ilahrs_strings[] =
     "out_of_range\000"
     "malformed\000"
     "buffer_too_small\000"
-    "unexpected_message\000"
+    "unexpected_message";
+
+static const char ilahrs_field_names[793] =
     "header\000"
     "payload\000"
     "message_type\000"
     "reserved\000"
     "message_length\000"
     "checksum\000"
+    "roll\000"
+    "pitch\000"
+    "heading\000"
+    "temperature\000"
+    "vdd\000"
+    "usw\000"
+    "date\000"
+    "ugyro_x\000"
+    "ugyro_y\000"
+    "ugyro_z\000"
+    "uacc_x\000"
+    "uacc_y\000"
+    "uacc_z\000"
+    "umag_x\000"
+    "umag_y\000"
+    "umag_z\000"
+    "utermo\000"
+    "lk0\000"
+    "lk1\000"
+    "lk2\000"
+    "lk3\000"
+    "gyro_x\000"
+    "gyro_y\000"
+    "gyro_z\000"
+    "acc_x\000"
+    "acc_y\000"
+    "acc_z\000"
+    "mag_x\000"
+    "mag_y\000"
+    "mag_z\000"
+    "gyro_bias_x\000"
+    "gyro_bias_y\000"
+    "gyro_bias_z\000"
+    "average_acc_x\000"
+    "average_acc_y\000"
+    "average_acc_z\000"
+    "average_mag_x\000"
+    "average_mag_y\000"
+    "average_mag_z\000"
+    "initial_heading\000"
+    "initial_roll\000"
+    "initial_pitch\000"
+    "update_rate\000"
+    "alignment_time\000"
+    "declination\000"
+    "latitude\000"
+    "longitude\000"
+    "altitude\000"
+    "alignment_angle_a1\000"
+    "alignment_angle_a2\000"
+    "alignment_angle_a3\000"
+    "device_id\000"
+    "version\000"
+    "utermo100\000"
+    "reference_azimuth\000"
+    "accumulation_time\000"
+    "calibration_type\000"
+    "runs_used\000"
+    "data_used\000"
+    "success\000"
+    "tm_c_11\000"
+    "tm_c_12\000"
+    "tm_c_13\000"
+    "tm_c_21\000"
+    "tm_c_22\000"
+    "tm_c_23\000"
+    "tm_c_31\000"
+    "tm_c_32\000"
+    "tm_c_33\000"
+    "hm_0_x\000"
+    "hm_0_y\000"
+    "hm_0_z\000"
+    "run\000"
+    "reserved_1\000"
+    "average_pitch\000"
+    "average_roll\000"
+    "reserved_2";
+
+static const char ilahrs_command_names[264] =
     "AHRScont1\000"
     "AHRScont2\000"
     "AHRScont3\000"
@@ -56,7 +137,25 @@ static const char ilahrs_strings[] =
     "AcceptClb\000"
     "ExitClb\000"
     "ClearClb\000"
-    "GetClbRes\000"
+    "GetClbRes";
+
+static const char ilahrs_payload_names[258] =
+    "full_output\000"
+    "quaternion\000"
+    "orientation_sensors\000"
+    "initial_alignment\000"
+    "ahrs_parameters_load\000"
+    "ahrs_parameters_read\000"
+    "firmware_version\000"
+    "bit_result\000"
+    "calibration_parameters\000"
+    "calibration_result\000"
+    "calibration_run_result\000"
+    "calibration_run_parameters\000"
+    "calibration_status\000"
+    "acknowledgement";
+
+static const char ilahrs_variant_names[161] =
     "g300_a2_tmga\000"
     "AHRS-G300-A2-TMGA-C1-V1.1\000"
     "g300_a6_tmga\000"
@@ -64,12 +163,16 @@ static const char ilahrs_strings[] =
     "sn_11ac0001_0009\000"
     "AHRS s/n 11AC0001 - 11AC0009\000"
     "g300_a2_tga\000"
-    "AHRS-G300-A2-TGA-C1-V1.1\000"
+    "AHRS-G300-A2-TGA-C1-V1.1";
+
+static const char ilahrs_mode_names[45] =
     "idle\000"
     "continuous\000"
     "on_request\000"
     "calibration\000"
-    "sleep\000"
+    "sleep";
+
+static const char ilahrs_flag_names[272] =
     "initial_alignment_failed\000"
     "parameters_incorrect\000"
     "gyro_failure\000"
@@ -83,109 +186,25 @@ static const char ilahrs_strings[] =
     "y_rate_exceeded\000"
     "z_rate_exceeded\000"
     "large_magnetic_field\000"
-    "temperature_out_of_range\000"
-    "roll\000"
-    "pitch\000"
-    "heading\000"
-    "temperature\000"
-    "vdd\000"
-    "usw\000"
-    "date\000"
-    "full_output\000"
-    "ugyro_x\000"
-    "ugyro_y\000"
-    "ugyro_z\000"
-    "uacc_x\000"
-    "uacc_y\000"
-    "uacc_z\000"
-    "umag_x\000"
-    "umag_y\000"
-    "umag_z\000"
-    "utermo\000"
-    "quaternion\000"
-    "lk0\000"
-    "lk1\000"
-    "lk2\000"
-    "lk3\000"
-    "orientation_sensors\000"
-    "gyro_x\000"
-    "gyro_y\000"
-    "gyro_z\000"
-    "acc_x\000"
-    "acc_y\000"
-    "acc_z\000"
-    "mag_x\000"
-    "mag_y\000"
-    "mag_z\000"
-    "initial_alignment\000"
-    "gyro_bias_x\000"
-    "gyro_bias_y\000"
-    "gyro_bias_z\000"
-    "average_acc_x\000"
-    "average_acc_y\000"
-    "average_acc_z\000"
-    "average_mag_x\000"
-    "average_mag_y\000"
-    "average_mag_z\000"
-    "initial_heading\000"
-    "initial_roll\000"
-    "initial_pitch\000"
-    "ahrs_parameters_load\000"
-    "update_rate\000"
-    "alignment_time\000"
-    "declination\000"
-    "latitude\000"
-    "longitude\000"
-    "altitude\000"
-    "alignment_angle_a1\000"
-    "alignment_angle_a2\000"
-    "alignment_angle_a3\000"
-    "ahrs_parameters_read\000"
-    "device_id\000"
-    "firmware_version\000"
-    "version\000"
-    "bit_result\000"
-    "utermo100\000"
-    "calibration_parameters\000"
-    "reference_azimuth\000"
-    "accumulation_time\000"
-    "calibration_result\000"
-    "calibration_type\000"
-    "runs_used\000"
-    "data_used\000"
-    "success\000"
-    "tm_c_11\000"
-    "tm_c_12\000"
-    "tm_c_13\000"
-    "tm_c_21\000"
-    "tm_c_22\000"
-    "tm_c_23\000"
-    "tm_c_31\000"
-    "tm_c_32\000"
-    "tm_c_33\000"
-    "hm_0_x\000"
-    "hm_0_y\000"
-    "hm_0_z\000"
-    "calibration_run_result\000"
-    "run\000"
-    "reserved_1\000"
-    "average_pitch\000"
-    "average_roll\000"
-    "reserved_2\000"
-    "calibration_run_parameters\000"
-    "calibration_status\000"
-    "acknowledgement\000";
+    "temperature_out_of_range";
 
-#define NAME(offset) (ilahrs_strings + (offset))
-#define NAME_FRAME_MESSAGE_TYPE 166
-#define NAME_FRAME_RESERVED 179
-#define NAME_FRAME_MESSAGE_LENGTH 188
-#define NAME_FRAME_HEADER 151
-#define NAME_FRAME_PAYLOAD 158
-#define NAME_FRAME_CHECKSUM 203
-#define NAME_DATE 993
 
-static const uint16_t ilahrs_error_names[] = {
+#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
+#define FIELD_NAME(offset) (ilahrs_field_names + (offset))
+#define COMMAND_NAME(offset) (ilahrs_command_names + (offset))
+#define PAYLOAD_NAME(offset) (ilahrs_payload_names + (offset))
+#define VARIANT_NAME(offset) (ilahrs_variant_names + (offset))
+#define MODE_NAME(offset) (ilahrs_mode_names + (offset))
+#define FLAG_NAME(offset) (ilahrs_flag_names + (offset))
+#define NAME_FRAME_MESSAGE_TYPE FIELD_NAME(15)
+#define NAME_FRAME_RESERVED FIELD_NAME(28)
+#define NAME_FRAME_MESSAGE_LENGTH FIELD_NAME(37)
+#define NAME_FRAME_HEADER FIELD_NAME(0)
+#define NAME_FRAME_PAYLOAD FIELD_NAME(7)
+#define NAME_FRAME_CHECKSUM FIELD_NAME(52)
+#define NAME_DATE FIELD_NAME(100)
+
+static const uint8_t ilahrs_error_offsets[] = {
     0, /* truncated */
     10, /* bad_header */
     21, /* bad_message_type */
@@ -199,7 +218,8 @@ static const uint16_t ilahrs_error_names[] = {
     132, /* unexpected_message */
 };
 
-/* Command table (Table C.1): name, code, modes it is valid in, response, parameter block. */
+/* Command table (Table C.1): name, code, modes it is valid in, response, parameter block,
+ * payload tables of a data response. */
 static const struct {
     uint16_t name;
     uint8_t code;
@@ -208,32 +228,32 @@ static const struct {
     int8_t parameter_block;
     int8_t response_payloads[ILAHRS_RESPONSE_PAYLOADS_MAX];
 } ilahrs_commands[ILAHRS_COMMAND_COUNT] = {
-    { 212, 0x80, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont1 */
-    { 222, 0x82, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont2 */
-    { 232, 0x83, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont3 */
-    { 242, 0x84, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq1 */
-    { 251, 0x86, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq2 */
-    { 260, 0x87, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq3 */
-    { 269, 0x88, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAcont */
-    { 278, 0x89, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAreq */
-    { 286, 0xCA, ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_OUTPUT, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* GetDataReq */
-    { 297, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Stop */
-    { 302, 0x40, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LoadAHRSPar */
-    { 314, 0x41, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE } }, /* ReadAHRSPar */
-    { 326, 0xB0, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOn */
-    { 337, 0xBA, ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOff */
-    { 349, 0x1F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE } }, /* GetVerFirmware */
-    { 364, 0x1A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE } }, /* GetBIT */
-    { 371, 0x21, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2DClb */
-    { 382, 0x22, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2D2TClb */
-    { 395, 0x23, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start3DClb */
-    { 406, 0x2B, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* StartClbRun */
-    { 418, 0x20, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT } }, /* StopClbRun */
-    { 429, 0x2C, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE } }, /* FinishClb */
-    { 439, 0x2E, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AcceptClb */
-    { 449, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ExitClb */
-    { 457, 0x2F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ClearClb */
-    { 466, 0x2A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE } }, /* GetClbRes */
+    { 0, 0x80, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont1 */
+    { 10, 0x82, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont2 */
+    { 20, 0x83, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont3 */
+    { 30, 0x84, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq1 */
+    { 39, 0x86, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq2 */
+    { 48, 0x87, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq3 */
+    { 57, 0x88, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAcont */
+    { 66, 0x89, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAreq */
+    { 74, 0xCA, ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_OUTPUT, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* GetDataReq */
+    { 85, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Stop */
+    { 90, 0x40, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LoadAHRSPar */
+    { 102, 0x41, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE } }, /* ReadAHRSPar */
+    { 114, 0xB0, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOn */
+    { 125, 0xBA, ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOff */
+    { 137, 0x1F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE } }, /* GetVerFirmware */
+    { 152, 0x1A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE } }, /* GetBIT */
+    { 159, 0x21, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2DClb */
+    { 170, 0x22, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2D2TClb */
+    { 183, 0x23, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start3DClb */
+    { 194, 0x2B, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* StartClbRun */
+    { 206, 0x20, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT } }, /* StopClbRun */
+    { 217, 0x2C, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE } }, /* FinishClb */
+    { 227, 0x2E, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AcceptClb */
+    { 237, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ExitClb */
+    { 245, 0x2F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ClearClb */
+    { 254, 0x2A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE } }, /* GetClbRes */
 };
 
 /* Commands ordered by code, then ICD name: command_decode() reports all with one code. */
@@ -266,7 +286,7 @@ static const uint8_t ilahrs_commands_by_code[ILAHRS_COMMAND_COUNT] = {
     ILAHRS_COMMAND_STOP, /* 0xFE Stop */
 };
 
-/* Variant parameters (KG, KA) and names. */
+/* Variant parameters (KG, KA), names and part numbers. */
 static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
     { 100, 10000 }, /* g300_a2_tmga */
     { 100, 5000 }, /* g300_a6_tmga */
@@ -274,11 +294,11 @@ static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
     { 100, 10000 }, /* g300_a2_tga */
 };
 
-static const uint16_t ilahrs_variant_names[ILAHRS_VARIANT_COUNT][2] = {
-    { 476, 489 },
-    { 515, 528 },
-    { 554, 571 },
-    { 600, 612 },
+static const uint8_t ilahrs_variant_offsets[ILAHRS_VARIANT_COUNT][2] = {
+    { 0, 13 },
+    { 39, 52 },
+    { 78, 95 },
+    { 124, 136 },
 };
 
 /* USW flags: bit and name. */
@@ -286,45 +306,63 @@ static const struct {
     uint8_t bit;
     uint16_t name;
 } ilahrs_usw_flags[14] = {
-    { 0, 682 },
-    { 1, 707 },
-    { 2, 728 },
-    { 3, 741 },
-    { 4, 763 },
-    { 5, 784 },
-    { 6, 804 },
-    { 8, 821 },
-    { 9, 840 },
-    { 10, 860 },
-    { 11, 876 },
-    { 12, 892 },
-    { 13, 908 },
-    { 14, 929 },
+    { 0, 0 },
+    { 1, 25 },
+    { 2, 46 },
+    { 3, 59 },
+    { 4, 81 },
+    { 5, 102 },
+    { 6, 122 },
+    { 8, 139 },
+    { 9, 158 },
+    { 10, 178 },
+    { 11, 194 },
+    { 12, 210 },
+    { 13, 226 },
+    { 14, 247 },
 };
 
-/* Builder checks: inclusive bounds compared as double; row 0 means "the C type is the range". */
-static const double ilahrs_bounds[18][2] = {
+/* Builder checks, inclusive; row 0 of each table means "no check: the C type is the range".
+ * Integer fields compare as integers; float fields compare their float32 value with the
+ * float32 roundings of the bounds, and ilahrs_field_check() compares a double with the exact
+ * bounds (a double within them always rounds to a float32 within the rounded ones). */
+static const int32_t ilahrs_int_bounds[11][2] = {
+    { 0, 0 },
+    { 0, 35999u },
+    { -9000, 9000 },
+    { -18000, 18000 },
+    { -10000, 10000 },
+    { 1, 100 },
+    { 1, 65535u },
+    { 1, 3 },
+    { 0, 100 },
+    { 2, 2 },
+    { 1, 255 },
+};
+
+static const float ilahrs_float_bounds[8][2] = {
+    { 0.0f, 0.0f },
+    { -3.4028234663852886e+38f, 3.4028234663852886e+38f },
+    { 0.0f, 360.0f },
+    { -180.0f, 180.0f },
+    { -90.0f, 90.0f },
+    { -20000.0f, 100000.0f },
+    { 1900.002685546875f, 2200.001708984375f },
+    { -360.0f, 360.0f },
+};
+
+static const double ilahrs_exact_bounds[8][2] = {
     { 0.0, 0.0 },
-    { 0.0, 35999.0 },
-    { -9000.0, 9000.0 },
-    { -18000.0, 18000.0 },
-    { -10000.0, 10000.0 },
     { -3.4028234663852886e+38, 3.4028234663852886e+38 },
     { 0.0, 360.0 },
     { -180.0, 180.0 },
     { -90.0, 90.0 },
-    { 1.0, 100.0 },
-    { 1.0, 65535.0 },
     { -20000.0, 100000.0 },
-    { 1900.0, 2200.001598173516 },
+    { 1900.002685546875, 2200.001708984375 },
     { -360.0, 360.0 },
-    { 1.0, 3.0 },
-    { 0.0, 100.0 },
-    { 2.0, 2.0 },
-    { 1.0, 255.0 },
 };
 
-/* Engineering scales: raw * multiplier / divisor; divisor 0 means the variant parameter. */
+/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
 static const struct {
     int32_t multiplier;
     int32_t divisor;
@@ -340,156 +378,161 @@ static const struct {
     { 10, 1, 255 },
 };
 
-enum { ENCODING_NONE = 0, ENCODING_DECLINATION = 1 };
+/* ilahrs_field_info_t.type: the wire kind, and an encoding a builder checks beyond a range. */
+#define TYPE_KIND(type) ((type) & 15u)
+#define TYPE_ENCODING(type) ((type) >> 4)
+#define ENCODING_NONE 0u
+#define ENCODING_DECLINATION 1u
 #define NO_PARAMETER 255
 
-/* Every payload field, table after table, in wire order. */
+/* Every payload field, table after table, in wire order: name, wire offset and size, struct
+ * member, kind and encoding, bounds, scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { 965, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_full_output_t, heading), 1, 1, ENCODING_NONE }, /* heading */
-    { 959, 2, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, pitch), 2, 1, ENCODING_NONE }, /* pitch */
-    { 954, 4, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, roll), 3, 1, ENCODING_NONE }, /* roll */
-    { 1010, 6, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, ugyro_x), 0, 0, ENCODING_NONE }, /* ugyro_x */
-    { 1018, 8, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, ugyro_y), 0, 0, ENCODING_NONE }, /* ugyro_y */
-    { 1026, 10, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, ugyro_z), 0, 0, ENCODING_NONE }, /* ugyro_z */
-    { 1034, 12, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, uacc_x), 0, 0, ENCODING_NONE }, /* uacc_x */
-    { 1041, 14, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, uacc_y), 0, 0, ENCODING_NONE }, /* uacc_y */
-    { 1048, 16, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, uacc_z), 0, 0, ENCODING_NONE }, /* uacc_z */
-    { 1055, 18, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, umag_x), 0, 0, ENCODING_NONE }, /* umag_x */
-    { 1062, 20, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, umag_y), 0, 0, ENCODING_NONE }, /* umag_y */
-    { 1069, 22, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, umag_z), 0, 0, ENCODING_NONE }, /* umag_z */
-    { 179, 24, 4, ILAHRS_KIND_RESERVED, offsetof(ilahrs_full_output_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
-    { 989, 28, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_full_output_t, usw), 0, 0, ENCODING_NONE }, /* usw */
-    { 985, 30, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_full_output_t, vdd), 0, 2, ENCODING_NONE }, /* vdd */
-    { 1076, 32, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_full_output_t, utermo), 0, 0, ENCODING_NONE }, /* utermo */
+    { 72, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 66, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 61, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 105, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
+    { 113, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
+    { 121, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
+    { 129, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
+    { 136, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
+    { 143, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
+    { 150, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
+    { 157, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
+    { 164, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
+    { 28, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 96, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 92, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 171, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { 965, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_quaternion_t, heading), 1, 1, ENCODING_NONE }, /* heading */
-    { 959, 2, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, pitch), 2, 1, ENCODING_NONE }, /* pitch */
-    { 954, 4, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, roll), 3, 1, ENCODING_NONE }, /* roll */
-    { 1094, 6, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, lk0), 4, 3, ENCODING_NONE }, /* lk0 */
-    { 1098, 8, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, lk1), 4, 3, ENCODING_NONE }, /* lk1 */
-    { 1102, 10, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, lk2), 4, 3, ENCODING_NONE }, /* lk2 */
-    { 1106, 12, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, lk3), 4, 3, ENCODING_NONE }, /* lk3 */
-    { 179, 14, 14, ILAHRS_KIND_RESERVED, offsetof(ilahrs_quaternion_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
-    { 989, 28, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_quaternion_t, usw), 0, 0, ENCODING_NONE }, /* usw */
-    { 985, 30, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_quaternion_t, vdd), 0, 2, ENCODING_NONE }, /* vdd */
-    { 1076, 32, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_quaternion_t, utermo), 0, 4, ENCODING_NONE }, /* utermo */
+    { 72, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 66, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 61, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 178, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
+    { 182, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
+    { 186, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
+    { 190, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
+    { 28, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 96, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 92, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 171, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { 965, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_orientation_sensors_t, heading), 1, 1, ENCODING_NONE }, /* heading */
-    { 959, 2, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, pitch), 2, 1, ENCODING_NONE }, /* pitch */
-    { 954, 4, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, roll), 3, 1, ENCODING_NONE }, /* roll */
-    { 1130, 6, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, gyro_x), 0, 5, ENCODING_NONE }, /* gyro_x */
-    { 1137, 8, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, gyro_y), 0, 5, ENCODING_NONE }, /* gyro_y */
-    { 1144, 10, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, gyro_z), 0, 5, ENCODING_NONE }, /* gyro_z */
-    { 1151, 12, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, acc_x), 0, 6, ENCODING_NONE }, /* acc_x */
-    { 1157, 14, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, acc_y), 0, 6, ENCODING_NONE }, /* acc_y */
-    { 1163, 16, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, acc_z), 0, 6, ENCODING_NONE }, /* acc_z */
-    { 1169, 18, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, mag_x), 0, 7, ENCODING_NONE }, /* mag_x */
-    { 1175, 20, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, mag_y), 0, 7, ENCODING_NONE }, /* mag_y */
-    { 1181, 22, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, mag_z), 0, 7, ENCODING_NONE }, /* mag_z */
-    { 179, 24, 4, ILAHRS_KIND_RESERVED, offsetof(ilahrs_orientation_sensors_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
-    { 989, 28, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_orientation_sensors_t, usw), 0, 0, ENCODING_NONE }, /* usw */
-    { 985, 30, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_orientation_sensors_t, vdd), 0, 2, ENCODING_NONE }, /* vdd */
-    { 1076, 32, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_orientation_sensors_t, utermo), 0, 4, ENCODING_NONE }, /* utermo */
+    { 72, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 66, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 61, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 194, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
+    { 201, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
+    { 208, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
+    { 215, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
+    { 221, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
+    { 227, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
+    { 233, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
+    { 239, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
+    { 245, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
+    { 28, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 96, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 92, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 171, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { 1205, 0, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), 5, 0, ENCODING_NONE }, /* gyro_bias_x */
-    { 1217, 4, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), 5, 0, ENCODING_NONE }, /* gyro_bias_y */
-    { 1229, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), 5, 0, ENCODING_NONE }, /* gyro_bias_z */
-    { 1241, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_acc_x), 5, 0, ENCODING_NONE }, /* average_acc_x */
-    { 1255, 16, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_acc_y), 5, 0, ENCODING_NONE }, /* average_acc_y */
-    { 1269, 20, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_acc_z), 5, 0, ENCODING_NONE }, /* average_acc_z */
-    { 1283, 24, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_mag_x), 5, 0, ENCODING_NONE }, /* average_mag_x */
-    { 1297, 28, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_mag_y), 5, 0, ENCODING_NONE }, /* average_mag_y */
-    { 1311, 32, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, average_mag_z), 5, 0, ENCODING_NONE }, /* average_mag_z */
-    { 1325, 36, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, initial_heading), 6, 0, ENCODING_NONE }, /* initial_heading */
-    { 1341, 40, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, initial_roll), 7, 0, ENCODING_NONE }, /* initial_roll */
-    { 1354, 44, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_initial_alignment_t, initial_pitch), 8, 0, ENCODING_NONE }, /* initial_pitch */
-    { 989, 48, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_initial_alignment_t, usw), 0, 0, ENCODING_NONE }, /* usw */
+    { 251, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
+    { 263, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
+    { 275, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
+    { 287, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
+    { 301, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
+    { 315, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
+    { 329, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
+    { 343, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
+    { 357, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
+    { 371, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
+    { 387, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
+    { 400, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
+    { 96, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { 1389, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), 9, 0, ENCODING_NONE }, /* update_rate */
-    { 1401, 2, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), 10, 0, ENCODING_NONE }, /* alignment_time */
-    { 1416, 4, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, declination), 5, 0, ENCODING_DECLINATION }, /* declination */
-    { 1428, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, latitude), 8, 0, ENCODING_NONE }, /* latitude */
-    { 1437, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, longitude), 7, 0, ENCODING_NONE }, /* longitude */
-    { 1447, 16, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, altitude), 11, 0, ENCODING_NONE }, /* altitude */
-    { 993, 20, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, date), 12, 0, ENCODING_NONE }, /* date */
-    { 1456, 24, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), 13, 0, ENCODING_NONE }, /* alignment_angle_a1 */
-    { 1475, 28, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), 13, 0, ENCODING_NONE }, /* alignment_angle_a2 */
-    { 1494, 32, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), 13, 0, ENCODING_NONE }, /* alignment_angle_a3 */
-    { 179, 36, 14, ILAHRS_KIND_RESERVED, offsetof(ilahrs_ahrs_parameters_load_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
+    { 414, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 426, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 441, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 453, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 462, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 472, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 100, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 481, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 500, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 519, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 28, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { 1389, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), 9, 0, ENCODING_NONE }, /* update_rate */
-    { 1401, 2, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), 10, 0, ENCODING_NONE }, /* alignment_time */
-    { 1416, 4, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, declination), 5, 0, ENCODING_DECLINATION }, /* declination */
-    { 1428, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, latitude), 8, 0, ENCODING_NONE }, /* latitude */
-    { 1437, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, longitude), 7, 0, ENCODING_NONE }, /* longitude */
-    { 1447, 16, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, altitude), 11, 0, ENCODING_NONE }, /* altitude */
-    { 993, 20, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, date), 12, 0, ENCODING_NONE }, /* date */
-    { 1456, 24, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), 13, 0, ENCODING_NONE }, /* alignment_angle_a1 */
-    { 1475, 28, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), 13, 0, ENCODING_NONE }, /* alignment_angle_a2 */
-    { 1494, 32, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), 13, 0, ENCODING_NONE }, /* alignment_angle_a3 */
-    { 1534, 36, 8, ILAHRS_KIND_CHAR, offsetof(ilahrs_ahrs_parameters_read_t, device_id), 0, 0, ENCODING_NONE }, /* device_id */
-    { 179, 44, 6, ILAHRS_KIND_RESERVED, offsetof(ilahrs_ahrs_parameters_read_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
+    { 414, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 426, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 441, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 453, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 462, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 472, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 100, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 481, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 500, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 519, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 538, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
+    { 28, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { 1561, 0, 50, ILAHRS_KIND_CHAR, offsetof(ilahrs_firmware_version_t, version), 0, 0, ENCODING_NONE }, /* version */
+    { 548, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
     /* bit_result (Table 6.12) */
-    { 1580, 0, 2, ILAHRS_KIND_SIGNED, offsetof(ilahrs_bit_result_t, utermo100), 0, 1, ENCODING_NONE }, /* utermo100 */
-    { 989, 2, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_bit_result_t, usw), 0, 0, ENCODING_NONE }, /* usw */
+    { 556, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
+    { 96, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { 1613, 0, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), 13, 0, ENCODING_NONE }, /* reference_azimuth */
-    { 1631, 4, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_parameters_t, accumulation_time), 10, 0, ENCODING_NONE }, /* accumulation_time */
-    { 1428, 6, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_parameters_t, latitude), 8, 0, ENCODING_NONE }, /* latitude */
-    { 1437, 10, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_parameters_t, longitude), 7, 0, ENCODING_NONE }, /* longitude */
-    { 1447, 14, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_parameters_t, altitude), 11, 0, ENCODING_NONE }, /* altitude */
-    { 993, 18, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_parameters_t, date), 12, 0, ENCODING_NONE }, /* date */
+    { 566, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
+    { 584, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
+    { 453, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 462, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 472, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 100, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
     /* calibration_result (Table 6.14) */
-    { 1668, 0, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_result_t, calibration_type), 14, 0, ENCODING_NONE }, /* calibration_type */
-    { 1685, 1, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_result_t, runs_used), 0, 0, ENCODING_NONE }, /* runs_used */
-    { 1695, 2, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_result_t, data_used), 15, 0, ENCODING_NONE }, /* data_used */
-    { 1705, 3, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_result_t, success), 0, 0, ENCODING_NONE }, /* success */
-    { 1713, 4, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_11), 5, 0, ENCODING_NONE }, /* tm_c_11 */
-    { 1721, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_12), 5, 0, ENCODING_NONE }, /* tm_c_12 */
-    { 1729, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_13), 5, 0, ENCODING_NONE }, /* tm_c_13 */
-    { 1737, 16, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_21), 5, 0, ENCODING_NONE }, /* tm_c_21 */
-    { 1745, 20, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_22), 5, 0, ENCODING_NONE }, /* tm_c_22 */
-    { 1753, 24, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_23), 5, 0, ENCODING_NONE }, /* tm_c_23 */
-    { 1761, 28, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_31), 5, 0, ENCODING_NONE }, /* tm_c_31 */
-    { 1769, 32, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_32), 5, 0, ENCODING_NONE }, /* tm_c_32 */
-    { 1777, 36, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, tm_c_33), 5, 0, ENCODING_NONE }, /* tm_c_33 */
-    { 1785, 40, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, hm_0_x), 5, 0, ENCODING_NONE }, /* hm_0_x */
-    { 1792, 44, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, hm_0_y), 5, 0, ENCODING_NONE }, /* hm_0_y */
-    { 1799, 48, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_result_t, hm_0_z), 5, 0, ENCODING_NONE }, /* hm_0_z */
+    { 602, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
+    { 619, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 629, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 639, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 647, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 655, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 663, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 671, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 679, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 687, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 695, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 703, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 711, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 719, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 726, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 733, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { 1668, 0, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_run_result_t, calibration_type), 16, 0, ENCODING_NONE }, /* calibration_type */
-    { 1829, 1, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_run_result_t, run), 17, 0, ENCODING_NONE }, /* run */
-    { 1695, 2, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_run_result_t, data_used), 15, 0, ENCODING_NONE }, /* data_used */
-    { 1705, 3, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_run_result_t, success), 0, 0, ENCODING_NONE }, /* success */
-    { 1833, 4, 4, ILAHRS_KIND_RESERVED, offsetof(ilahrs_calibration_run_result_t, reserved_1), 0, 0, ENCODING_NONE }, /* reserved_1 */
-    { 1844, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_run_result_t, average_pitch), 8, 0, ENCODING_NONE }, /* average_pitch */
-    { 1858, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_run_result_t, average_roll), 7, 0, ENCODING_NONE }, /* average_roll */
-    { 1871, 16, 12, ILAHRS_KIND_RESERVED, offsetof(ilahrs_calibration_run_result_t, reserved_2), 0, 0, ENCODING_NONE }, /* reserved_2 */
-    { 989, 28, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_run_result_t, usw), 0, 0, ENCODING_NONE }, /* usw */
+    { 602, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
+    { 740, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
+    { 629, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 639, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 744, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
+    { 755, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
+    { 769, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
+    { 782, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
+    { 96, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { 179, 0, 6, ILAHRS_KIND_RESERVED, offsetof(ilahrs_calibration_run_parameters_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
+    { 28, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { 1668, 0, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_status_t, calibration_type), 0, 0, ENCODING_NONE }, /* calibration_type */
-    { 1685, 1, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_status_t, runs_used), 0, 0, ENCODING_NONE }, /* runs_used */
-    { 179, 2, 1, ILAHRS_KIND_RESERVED, offsetof(ilahrs_calibration_status_t, reserved), 0, 0, ENCODING_NONE }, /* reserved */
-    { 1705, 3, 1, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_calibration_status_t, success), 0, 0, ENCODING_NONE }, /* success */
-    { 1713, 4, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_11), 5, 0, ENCODING_NONE }, /* tm_c_11 */
-    { 1721, 8, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_12), 5, 0, ENCODING_NONE }, /* tm_c_12 */
-    { 1729, 12, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_13), 5, 0, ENCODING_NONE }, /* tm_c_13 */
-    { 1737, 16, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_21), 5, 0, ENCODING_NONE }, /* tm_c_21 */
-    { 1745, 20, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_22), 5, 0, ENCODING_NONE }, /* tm_c_22 */
-    { 1753, 24, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_23), 5, 0, ENCODING_NONE }, /* tm_c_23 */
-    { 1761, 28, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_31), 5, 0, ENCODING_NONE }, /* tm_c_31 */
-    { 1769, 32, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_32), 5, 0, ENCODING_NONE }, /* tm_c_32 */
-    { 1777, 36, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, tm_c_33), 5, 0, ENCODING_NONE }, /* tm_c_33 */
-    { 1785, 40, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, hm_0_x), 5, 0, ENCODING_NONE }, /* hm_0_x */
-    { 1792, 44, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, hm_0_y), 5, 0, ENCODING_NONE }, /* hm_0_y */
-    { 1799, 48, 4, ILAHRS_KIND_FLOAT, offsetof(ilahrs_calibration_status_t, hm_0_z), 5, 0, ENCODING_NONE }, /* hm_0_z */
+    { 602, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
+    { 619, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 28, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 639, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 647, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 655, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 663, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 671, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 679, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 687, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 695, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 703, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 711, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 719, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 726, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 733, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { 203, 0, 2, ILAHRS_KIND_UNSIGNED, offsetof(ilahrs_acknowledgement_t, checksum), 0, 0, ENCODING_NONE }, /* checksum */
+    { 52, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
 };
 
 static const struct {
@@ -499,39 +542,40 @@ static const struct {
     uint8_t first_field;
     uint16_t struct_size;
 } ilahrs_payloads[ILAHRS_PAYLOAD_COUNT] = {
-    { 998, 34, 16, 0, (uint16_t)sizeof(ilahrs_full_output_t) },
-    { 1083, 34, 11, 16, (uint16_t)sizeof(ilahrs_quaternion_t) },
-    { 1110, 34, 16, 27, (uint16_t)sizeof(ilahrs_orientation_sensors_t) },
-    { 1187, 50, 13, 43, (uint16_t)sizeof(ilahrs_initial_alignment_t) },
-    { 1368, 50, 11, 56, (uint16_t)sizeof(ilahrs_ahrs_parameters_load_t) },
-    { 1513, 50, 12, 67, (uint16_t)sizeof(ilahrs_ahrs_parameters_read_t) },
-    { 1544, 50, 1, 79, (uint16_t)sizeof(ilahrs_firmware_version_t) },
-    { 1569, 4, 2, 80, (uint16_t)sizeof(ilahrs_bit_result_t) },
-    { 1590, 22, 6, 82, (uint16_t)sizeof(ilahrs_calibration_parameters_t) },
-    { 1649, 52, 16, 88, (uint16_t)sizeof(ilahrs_calibration_result_t) },
-    { 1806, 30, 9, 104, (uint16_t)sizeof(ilahrs_calibration_run_result_t) },
-    { 1882, 6, 1, 113, (uint16_t)sizeof(ilahrs_calibration_run_parameters_t) },
-    { 1909, 52, 16, 114, (uint16_t)sizeof(ilahrs_calibration_status_t) },
-    { 1928, 2, 1, 130, (uint16_t)sizeof(ilahrs_acknowledgement_t) },
+    { 0, 34, 16, 0, (uint16_t)sizeof(ilahrs_full_output_t) },
+    { 12, 34, 11, 16, (uint16_t)sizeof(ilahrs_quaternion_t) },
+    { 23, 34, 16, 27, (uint16_t)sizeof(ilahrs_orientation_sensors_t) },
+    { 43, 50, 13, 43, (uint16_t)sizeof(ilahrs_initial_alignment_t) },
+    { 61, 50, 11, 56, (uint16_t)sizeof(ilahrs_ahrs_parameters_load_t) },
+    { 82, 50, 12, 67, (uint16_t)sizeof(ilahrs_ahrs_parameters_read_t) },
+    { 103, 50, 1, 79, (uint16_t)sizeof(ilahrs_firmware_version_t) },
+    { 120, 4, 2, 80, (uint16_t)sizeof(ilahrs_bit_result_t) },
+    { 131, 22, 6, 82, (uint16_t)sizeof(ilahrs_calibration_parameters_t) },
+    { 154, 52, 16, 88, (uint16_t)sizeof(ilahrs_calibration_result_t) },
+    { 173, 30, 9, 104, (uint16_t)sizeof(ilahrs_calibration_run_result_t) },
+    { 196, 6, 1, 113, (uint16_t)sizeof(ilahrs_calibration_run_parameters_t) },
+    { 223, 52, 16, 114, (uint16_t)sizeof(ilahrs_calibration_status_t) },
+    { 242, 2, 1, 130, (uint16_t)sizeof(ilahrs_acknowledgement_t) },
 };
 
-/* Spec defaults other than zero. */
+/* Builder defaults other than zero (the spec default, else the lowest value the range allows). */
 static const struct {
     uint8_t field;
     uint16_t text; /* 0 with no text: numeric */
-    double number;
+    int32_t integer;  /* integer fields */
+    float number;     /* float fields */
 } ilahrs_defaults[11] = {
-    { 56, 0, 100.0 }, /* ahrs_parameters_load.update_rate */
-    { 57, 0, 30.0 }, /* ahrs_parameters_load.alignment_time */
-    { 62, 0, 1900.0 }, /* ahrs_parameters_load.date */
-    { 67, 0, 1.0 }, /* ahrs_parameters_read.update_rate */
-    { 68, 0, 1.0 }, /* ahrs_parameters_read.alignment_time */
-    { 73, 0, 1900.0 }, /* ahrs_parameters_read.date */
-    { 83, 0, 1.0 }, /* calibration_parameters.accumulation_time */
-    { 87, 0, 1900.0 }, /* calibration_parameters.date */
-    { 88, 0, 1.0 }, /* calibration_result.calibration_type */
-    { 104, 0, 2.0 }, /* calibration_run_result.calibration_type */
-    { 105, 0, 1.0 }, /* calibration_run_result.run */
+    { 56, 0, 100, 0.0f }, /* ahrs_parameters_load.update_rate */
+    { 57, 0, 30, 0.0f }, /* ahrs_parameters_load.alignment_time */
+    { 62, 0, 0, 1900.002685546875f }, /* ahrs_parameters_load.date */
+    { 67, 0, 1, 0.0f }, /* ahrs_parameters_read.update_rate */
+    { 68, 0, 1, 0.0f }, /* ahrs_parameters_read.alignment_time */
+    { 73, 0, 0, 1900.002685546875f }, /* ahrs_parameters_read.date */
+    { 83, 0, 1, 0.0f }, /* calibration_parameters.accumulation_time */
+    { 87, 0, 0, 1900.002685546875f }, /* calibration_parameters.date */
+    { 88, 0, 1, 0.0f }, /* calibration_result.calibration_type */
+    { 104, 0, 2, 0.0f }, /* calibration_run_result.calibration_type */
+    { 105, 0, 1, 0.0f }, /* calibration_run_result.run */
 };
 #define DEFAULT_COUNT 11u
 
@@ -635,9 +679,8 @@ static int32_t sign_extend(uint32_t bits, size_t size)
     return (int32_t)bits;
 }
 
-static bool equal_name(const char *name, size_t len, uint16_t offset)
+static bool equal_name(const char *name, size_t len, const char *known)
 {
-    const char *known = NAME(offset);
     return name != NULL && strlen(known) == len && memcmp(known, name, len) == 0;
 }
 
@@ -651,19 +694,40 @@ const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind)
     if ((unsigned)kind >= ILAHRS_ERROR_KIND_COUNT) {
         return "unknown";
     }
-    return NAME(ilahrs_error_names[(unsigned)kind - 1u]);
+    return ERROR_NAME(ilahrs_error_offsets[(unsigned)kind - 1u]);
 }
 
 /* ---- Frame ----------------------------------------------------------------------------- */
 
-uint16_t ilahrs_checksum(const uint8_t *data, size_t len)
+/* The sum of the bytes, modulo 2^32 (so modulo the checksum width too). */
+static inline uint32_t sum_bytes(const uint8_t *data, size_t len)
 {
     uint32_t sum = 0;
-    size_t i;
-    for (i = 0; i < len; i++) {
+    size_t i = 0;
+#if SIZE_MAX > 0xFFFFFFFFu
+    /* 64-bit hosts: eight bytes at a time as four 16-bit lanes. A lane gains at most 2 * 255
+     * per word, so 128 words (1 KiB) cannot overflow it before it is folded into `sum`. */
+    while (len - i >= 8) {
+        uint64_t lanes = 0;
+        size_t stop = len - i >= 1024 ? i + 1024 : i + ((len - i) & ~(size_t)7);
+        for (; i < stop; i += 8) {
+            uint64_t word;
+            memcpy(&word, data + i, 8);
+            lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
+        }
+        lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
+        sum += (uint32_t)lanes + (uint32_t)(lanes >> 32);
+    }
+#endif
+    for (; i < len; i++) {
         sum += data[i];
     }
-    return (uint16_t)sum;
+    return sum;
+}
+
+uint16_t ilahrs_checksum(const uint8_t *data, size_t len)
+{
+    return (uint16_t)sum_bytes(data, len);
 }
 
 static bool message_type_valid(uint32_t type)
@@ -680,32 +744,32 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     if (data[0] != ILAHRS_FRAME_HEADER_0) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, NAME(NAME_FRAME_HEADER));
+        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, (NAME_FRAME_HEADER));
     }
     if (len < 2u) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     if (data[1] != ILAHRS_FRAME_HEADER_1) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 1, NAME(NAME_FRAME_HEADER));
+        return fail(err, ILAHRS_ERR_BAD_HEADER, 1, (NAME_FRAME_HEADER));
     }
     if (len < ILAHRS_FRAME_PAYLOAD_OFFSET) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     if (!message_type_valid(get_le(data + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
-        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, NAME(NAME_FRAME_MESSAGE_TYPE));
+        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
     }
     length = get_le(data + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
     if (length < ILAHRS_FRAME_MIN_LENGTH || length > ILAHRS_FRAME_MAX_LENGTH) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, NAME(NAME_FRAME_MESSAGE_LENGTH));
+        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (NAME_FRAME_MESSAGE_LENGTH));
     }
     total = ILAHRS_FRAME_HEADER_SIZE + (size_t)length;
     if (len < total) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     at = total - ILAHRS_FRAME_CHECKSUM_SIZE;
-    if (ilahrs_checksum(data + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
+    if ((uint16_t)sum_bytes(data + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
         != get_le(data + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
-        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, at, NAME(NAME_FRAME_CHECKSUM));
+        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, at, (NAME_FRAME_CHECKSUM));
     }
     if (len > total) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, total, NULL);
@@ -733,11 +797,11 @@ static size_t frame_finish(uint8_t *out, const ilahrs_frame_t *frame, size_t pay
 size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap, ilahrs_error_t *err)
 {
     if (!message_type_valid(frame->message_type)) {
-        return fail_size(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_NO_OFFSET, NAME(NAME_FRAME_MESSAGE_TYPE));
+        return fail_size(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_NO_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
     }
     if (frame->payload_size < ILAHRS_FRAME_MIN_PAYLOAD || frame->payload_size > ILAHRS_FRAME_MAX_PAYLOAD
         || frame->payload == NULL) {
-        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NAME(NAME_FRAME_PAYLOAD));
+        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, (NAME_FRAME_PAYLOAD));
     }
     if (out == NULL || cap < frame->payload_size + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
@@ -750,13 +814,13 @@ size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap,
 
 const char *ilahrs_mode_name(ilahrs_mode_t mode)
 {
-    static const uint16_t names[ILAHRS_MODE_COUNT] = { 637, 642, 653, 664, 676 };
-    return (unsigned)mode < ILAHRS_MODE_COUNT ? NAME(names[mode]) : NULL;
+    static const uint8_t names[ILAHRS_MODE_COUNT] = { 0, 5, 16, 27, 39 };
+    return (unsigned)mode < ILAHRS_MODE_COUNT ? MODE_NAME(names[mode]) : NULL;
 }
 
 const char *ilahrs_command_name(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? NAME(ilahrs_commands[command].name) : NULL;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? COMMAND_NAME(ilahrs_commands[command].name) : NULL;
 }
 
 uint8_t ilahrs_command_code(ilahrs_command_t command)
@@ -768,7 +832,7 @@ bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *comm
 {
     unsigned i;
     for (i = 0; i < ILAHRS_COMMAND_COUNT; i++) {
-        if (equal_name(name, len, ilahrs_commands[i].name)) {
+        if (equal_name(name, len, COMMAND_NAME(ilahrs_commands[i].name))) {
             *command = (ilahrs_command_t)i;
             return true;
         }
@@ -787,17 +851,17 @@ ilahrs_response_t ilahrs_command_response(ilahrs_command_t command)
                                                      : ILAHRS_RESPONSE_NONE;
 }
 
-int ilahrs_command_parameter_block(ilahrs_command_t command)
+ilahrs_payload_t ilahrs_command_parameter_block(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_commands[command].parameter_block : ILAHRS_PAYLOAD_NONE;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_payload_t)ilahrs_commands[command].parameter_block : ILAHRS_PAYLOAD_NONE;
 }
 
-int ilahrs_command_response_payload(ilahrs_command_t command, size_t index)
+ilahrs_payload_t ilahrs_command_response_payload(ilahrs_command_t command, size_t index)
 {
     if ((unsigned)command >= ILAHRS_COMMAND_COUNT || index >= ILAHRS_RESPONSE_PAYLOADS_MAX) {
         return ILAHRS_PAYLOAD_NONE;
     }
-    return ilahrs_commands[command].response_payloads[index];
+    return (ilahrs_payload_t)ilahrs_commands[command].response_payloads[index];
 }
 
 size_t ilahrs_command_build(ilahrs_command_t command, uint8_t *out, size_t cap, ilahrs_error_t *err)
@@ -824,10 +888,10 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
         return false;
     }
     if (frame.message_type != ILAHRS_MESSAGE_TYPE_COMMAND) {
-        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, NAME(NAME_FRAME_MESSAGE_TYPE));
+        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
     }
     if (frame.payload_size != 1) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, NAME(NAME_FRAME_MESSAGE_LENGTH));
+        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (NAME_FRAME_MESSAGE_LENGTH));
     }
     code = frame.payload[0];
     match->code = code;
@@ -871,19 +935,19 @@ int32_t ilahrs_variant_parameter(ilahrs_variant_t variant, ilahrs_variant_parame
 
 const char *ilahrs_variant_name(ilahrs_variant_t variant)
 {
-    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? NAME(ilahrs_variant_names[variant][0]) : NULL;
+    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? VARIANT_NAME(ilahrs_variant_offsets[variant][0]) : NULL;
 }
 
 const char *ilahrs_variant_part_number(ilahrs_variant_t variant)
 {
-    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? NAME(ilahrs_variant_names[variant][1]) : NULL;
+    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? VARIANT_NAME(ilahrs_variant_offsets[variant][1]) : NULL;
 }
 
 bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *variant)
 {
     unsigned i;
     for (i = 0; i < ILAHRS_VARIANT_COUNT; i++) {
-        if (equal_name(name, len, ilahrs_variant_names[i][0])) {
+        if (equal_name(name, len, VARIANT_NAME(ilahrs_variant_offsets[i][0]))) {
             *variant = (ilahrs_variant_t)i;
             return true;
         }
@@ -893,27 +957,27 @@ bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *vari
 
 /* ---- Payloads -------------------------------------------------------------------------- */
 
-const char *ilahrs_payload_name(int payload)
+const char *ilahrs_payload_name(ilahrs_payload_t payload)
 {
-    return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? NAME(ilahrs_payloads[payload].name) : NULL;
+    return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? PAYLOAD_NAME(ilahrs_payloads[payload].name) : NULL;
 }
 
-size_t ilahrs_payload_size(int payload)
+size_t ilahrs_payload_size(ilahrs_payload_t payload)
 {
     return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? ilahrs_payloads[payload].size : 0;
 }
 
-size_t ilahrs_payload_struct_size(int payload)
+size_t ilahrs_payload_struct_size(ilahrs_payload_t payload)
 {
     return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? ilahrs_payloads[payload].struct_size : 0;
 }
 
-size_t ilahrs_payload_field_count(int payload)
+size_t ilahrs_payload_field_count(ilahrs_payload_t payload)
 {
     return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? ilahrs_payloads[payload].field_count : 0;
 }
 
-const ilahrs_field_info_t *ilahrs_payload_field(int payload, size_t index)
+const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t index)
 {
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT || index >= ilahrs_payloads[payload].field_count) {
         return NULL;
@@ -925,7 +989,7 @@ bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payl
 {
     int i;
     for (i = 0; i < ILAHRS_PAYLOAD_COUNT; i++) {
-        if (equal_name(name, len, ilahrs_payloads[i].name)) {
+        if (equal_name(name, len, PAYLOAD_NAME(ilahrs_payloads[i].name))) {
             *payload = (ilahrs_payload_t)i;
             return true;
         }
@@ -935,7 +999,7 @@ bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payl
 
 const char *ilahrs_field_name(const ilahrs_field_info_t *field)
 {
-    return NAME(field->name);
+    return FIELD_NAME(field->name);
 }
 
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field)
@@ -950,7 +1014,7 @@ size_t ilahrs_field_size(const ilahrs_field_info_t *field)
 
 ilahrs_kind_t ilahrs_field_kind(const ilahrs_field_info_t *field)
 {
-    return (ilahrs_kind_t)field->kind;
+    return (ilahrs_kind_t)TYPE_KIND(field->type);
 }
 
 void *ilahrs_field_member(const ilahrs_field_info_t *field, void *payload)
@@ -965,7 +1029,7 @@ const void *ilahrs_field_member_const(const ilahrs_field_info_t *field, const vo
 
 static bool is_integer(const ilahrs_field_info_t *field)
 {
-    return field->kind == ILAHRS_KIND_UNSIGNED || field->kind == ILAHRS_KIND_SIGNED;
+    return TYPE_KIND(field->type) == ILAHRS_KIND_UNSIGNED || TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED;
 }
 
 static float float_of_bits(uint32_t bits)
@@ -982,12 +1046,12 @@ int64_t ilahrs_field_get_int(const ilahrs_field_info_t *field, const void *paylo
         return 0;
     }
     bits = load_bits(ilahrs_field_member_const(field, payload), field->size);
-    return field->kind == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
+    return TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
 }
 
 float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *payload)
 {
-    if (field->kind != ILAHRS_KIND_FLOAT) {
+    if (TYPE_KIND(field->type) != ILAHRS_KIND_FLOAT) {
         return 0.0f;
     }
     return float_of_bits(load_bits(ilahrs_field_member_const(field, payload), 4));
@@ -997,12 +1061,12 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 {
     int64_t low = 0;
     int64_t high = (int64_t)((((uint64_t)1) << (8 * field->size)) - 1u);
-    if (field->kind == ILAHRS_KIND_SIGNED) {
+    if (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED) {
         high = (int64_t)((((uint64_t)1) << (8 * field->size - 1)) - 1u);
         low = -high - 1;
     }
     if (!is_integer(field) || value < low || value > high) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, NAME(field->name));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
     }
     store_bits(ilahrs_field_member(field, payload), (uint32_t)(uint64_t)value, field->size);
     return true;
@@ -1010,44 +1074,65 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
 {
-    if (field->kind != ILAHRS_KIND_FLOAT) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, NAME(field->name));
+    if (TYPE_KIND(field->type) != ILAHRS_KIND_FLOAT) {
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
     }
     memcpy(ilahrs_field_member(field, payload), &value, sizeof value);
     return true;
 }
 
-/*
- * The builder check of one numeric value. NaN fails every comparison. `stored`: the value is
- * a float32 already, so it is compared with the float32 roundings of the bounds (a double
- * within the bounds always rounds to a float32 within them).
- */
-static bool value_ok(const ilahrs_field_info_t *field, double value, bool stored)
+/* The builder check of a stored value: integers against integer bounds, floats (NaN fails
+ * every comparison) against the float32 roundings of their bounds, then the encoding's rule. */
+static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 {
-    if (field->bounds != 0) {
-        double low = ilahrs_bounds[field->bounds][0];
-        double high = ilahrs_bounds[field->bounds][1];
-        if (stored && field->kind == ILAHRS_KIND_FLOAT) {
-            low = (double)(float)low;
-            high = (double)(float)high;
-        }
-        if (!(value >= low && value <= high)) {
+    if (TYPE_KIND(f->type) == ILAHRS_KIND_FLOAT) {
+        float value = float_of_bits(bits);
+        if (!(value >= ilahrs_float_bounds[f->bounds][0] && value <= ilahrs_float_bounds[f->bounds][1])) {
             return false;
         }
+        if (TYPE_ENCODING(f->type) == ENCODING_DECLINATION) {
+            return (value >= ILAHRS_DECLINATION_MIN && value <= ILAHRS_DECLINATION_MAX)
+                || value > ILAHRS_DECLINATION_COMPUTE_ABOVE;
+        }
+        return true;
     }
-    if (field->encoding == ENCODING_DECLINATION) {
-        return (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
-            || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
+    if (f->bounds != 0) {
+        int32_t value = TYPE_KIND(f->type) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
+        if (TYPE_KIND(f->type) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
+            return false; /* above every int32 bound */
+        }
+        return value >= ilahrs_int_bounds[f->bounds][0] && value <= ilahrs_int_bounds[f->bounds][1];
     }
     return true;
 }
 
 bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
 {
-    if (field->kind == ILAHRS_KIND_CHAR || field->kind == ILAHRS_KIND_RESERVED || !value_ok(field, value, false)) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, NAME(field->name));
+    bool ok;
+    double low = 0.0;
+    double high = 0.0;
+    switch (TYPE_KIND(field->type)) {
+    case ILAHRS_KIND_FLOAT:
+        low = ilahrs_exact_bounds[field->bounds][0];
+        high = ilahrs_exact_bounds[field->bounds][1];
+        break;
+    case ILAHRS_KIND_UNSIGNED:
+    case ILAHRS_KIND_SIGNED: {
+        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED))) - 1u);
+        low = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][0]
+                                 : TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
+        high = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][1] : (double)top;
+        break;
     }
-    return true;
+    default:
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+    }
+    ok = value >= low && value <= high;
+    if (ok && TYPE_ENCODING(field->type) == ENCODING_DECLINATION) {
+        ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
+          || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
+    }
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
 }
 
 bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier, int32_t *divisor)
@@ -1068,7 +1153,7 @@ bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t varia
     return true;
 }
 
-void ilahrs_payload_defaults(int payload, void *out)
+void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
 {
     unsigned i;
     unsigned first;
@@ -1082,19 +1167,19 @@ void ilahrs_payload_defaults(int payload, void *out)
         if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
-        if (f->kind == ILAHRS_KIND_FLOAT) {
-            (void)ilahrs_field_set_float(f, out, (float)ilahrs_defaults[i].number, NULL);
+        if (TYPE_KIND(f->type) == ILAHRS_KIND_FLOAT) {
+            (void)ilahrs_field_set_float(f, out, ilahrs_defaults[i].number, NULL);
         } else if (is_integer(f)) {
-            (void)ilahrs_field_set_int(f, out, (int64_t)ilahrs_defaults[i].number, NULL);
-        } else if (f->kind == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
-            const char *text = NAME(ilahrs_defaults[i].text);
+            (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
+        } else if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
+            const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             size_t n = strlen(text);
             memcpy(ilahrs_field_member(f, out), text, n < f->size ? n : f->size);
         }
     }
 }
 
-bool ilahrs_payload_parse(int payload, const uint8_t *data, size_t len, void *out, ilahrs_error_t *err)
+bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t len, void *out, ilahrs_error_t *err)
 {
     size_t size;
     const ilahrs_field_info_t *f;
@@ -1114,7 +1199,7 @@ bool ilahrs_payload_parse(int payload, const uint8_t *data, size_t len, void *ou
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         uint8_t *member = (uint8_t *)out + f->member;
-        if (f->kind == ILAHRS_KIND_CHAR || f->kind == ILAHRS_KIND_RESERVED) {
+        if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
             memcpy(member, data + f->offset, f->size);
         } else {
             store_bits(member, get_le(data + f->offset, f->size), f->size);
@@ -1123,7 +1208,7 @@ bool ilahrs_payload_parse(int payload, const uint8_t *data, size_t len, void *ou
     return true;
 }
 
-size_t ilahrs_payload_build(int payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err)
+size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err)
 {
     size_t size;
     const ilahrs_field_info_t *f;
@@ -1139,16 +1224,13 @@ size_t ilahrs_payload_build(int payload, const void *in, uint8_t *out, size_t ca
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         const uint8_t *member = (const uint8_t *)in + f->member;
-        if (f->kind == ILAHRS_KIND_CHAR || f->kind == ILAHRS_KIND_RESERVED) {
+        if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
             memcpy(out + f->offset, member, f->size);
         } else {
             uint32_t bits = load_bits(member, f->size);
-            if (f->bounds != 0 || f->encoding != ENCODING_NONE) {
-                double value = f->kind == ILAHRS_KIND_FLOAT  ? (double)float_of_bits(bits)
-                             : f->kind == ILAHRS_KIND_SIGNED ? (double)sign_extend(bits, f->size)
-                                                             : (double)bits;
-                if (!value_ok(f, value, true)) {
-                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, f->offset, NAME(f->name));
+            {
+                if (!stored_ok(f, bits)) {
+                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, f->offset, FIELD_NAME(f->name));
                 }
             }
             put_le(out + f->offset, bits, f->size);
@@ -1157,7 +1239,7 @@ size_t ilahrs_payload_build(int payload, const void *in, uint8_t *out, size_t ca
     return size;
 }
 
-size_t ilahrs_payload_build_frame(int payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err)
+size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err)
 {
     ilahrs_frame_t frame;
     size_t size;
@@ -1199,7 +1281,7 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
 {
     if (year < ILAHRS_DATE_YEAR_MIN || year > ILAHRS_DATE_YEAR_MAX || month < 1 || month > 12 || day < 1
         || day > days_in_month(year, month)) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(NAME_DATE));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     *value = (float)date_value(year, month, day);
     return true;
@@ -1212,7 +1294,7 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
     int base;
     int year;
     if (!(v >= (double)(ILAHRS_DATE_YEAR_MIN - 1) && v <= (double)(ILAHRS_DATE_YEAR_MAX + 2))) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(NAME_DATE));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     base = (int)v; /* floor: v is positive */
     for (year = base - 1; year <= base; year++) {
@@ -1244,7 +1326,7 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
         }
     }
     if (best < 0) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(NAME_DATE));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     return true;
 }
@@ -1256,7 +1338,7 @@ const char *ilahrs_usw_flag_name(unsigned bit)
     unsigned i;
     for (i = 0; i < 14u; i++) {
         if (ilahrs_usw_flags[i].bit == bit) {
-            return NAME(ilahrs_usw_flags[i].name);
+            return FLAG_NAME(ilahrs_usw_flags[i].name);
         }
     }
     return NULL;
@@ -1274,7 +1356,7 @@ const char *ilahrs_usw_flag_name(unsigned bit)
 #define PAHR_PREFIX "$PAHR,"
 #define PAHR_PREFIX_LENGTH 6u
 #define PAHR_TAIL 5u /* "*", two checksum digits, CR, LF */
-#define PAHR_HUGE 10000000000000ull /* any magnitude above every range */
+#define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
 
 /* One field: name, format, template width, fraction digits, struct member, range. */
 static const struct {
@@ -1289,17 +1371,27 @@ static const struct {
     int32_t min;
     int32_t max;
 } ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
-    { 954, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, -18000, 18000 },
-    { 959, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, -9000, 9000 },
-    { 965, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
-    { 973, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, -999, 9999 },
-    { 985, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
-    { 989, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
+    { 61, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, -18000, 18000 },
+    { 66, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, -9000, 9000 },
+    { 72, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
+    { 80, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, -999, 9999 },
+    { 92, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
+    { 96, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
 };
 
 const char *ilahrs_pahr_field_name(size_t index)
 {
-    return index < ILAHRS_PAHR_FIELD_COUNT ? NAME(ilahrs_pahr_fields[index].name) : NULL;
+    return index < ILAHRS_PAHR_FIELD_COUNT ? FIELD_NAME(ilahrs_pahr_fields[index].name) : NULL;
+}
+
+bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max)
+{
+    if (index >= ILAHRS_PAHR_FIELD_COUNT) {
+        return false;
+    }
+    *min = ilahrs_pahr_fields[index].min;
+    *max = ilahrs_pahr_fields[index].max;
+    return true;
 }
 
 uint32_t ilahrs_pahr_field_divisor(size_t index)
@@ -1328,76 +1420,142 @@ static int hex_value(uint8_t c)
     return -1;
 }
 
-/* Parse p[0..n) as field `k`: false if it breaks the grammar; *value saturates at PAHR_HUGE. */
-static bool pahr_value(const uint8_t *p, size_t n, size_t k, int64_t *value)
+/* XOR of n bytes (eight at a time on 64-bit hosts). */
+static uint8_t xor_bytes(const uint8_t *p, size_t n)
 {
-    uint64_t magnitude = 0;
+    uint8_t x = 0;
     size_t i = 0;
-    size_t digits = 0;
-    bool negative = false;
+#if SIZE_MAX > 0xFFFFFFFFu
+    uint64_t lanes = 0;
+    for (; i + 8 <= n; i += 8) {
+        uint64_t word;
+        memcpy(&word, p + i, 8);
+        lanes ^= word;
+    }
+    lanes ^= lanes >> 32;
+    lanes ^= lanes >> 16;
+    lanes ^= lanes >> 8;
+    x = (uint8_t)lanes;
+#endif
+    for (; i < n; i++) {
+        x ^= p[i];
+    }
+    return x;
+}
+
+/*
+ * Field k starting at p[*at]: its value, or false if it breaks the grammar. Leaves *at on the
+ * character after the field (a separator, or the star). p[star] is '*', which ends every field.
+ */
+static bool pahr_value(const uint8_t *p, size_t *at, size_t star, size_t k, int64_t *value)
+{
+    size_t i = *at;
+    size_t first;
+    uint64_t magnitude = 0;
+    bool ok;
     if (ilahrs_pahr_fields[k].hex) {
-        if (n < 1 || n > ilahrs_pahr_fields[k].width) {
-            return false;
+        int h;
+        for (first = i; (h = hex_value(p[i])) >= 0; i++) {
+            magnitude = magnitude < PAHR_HUGE ? magnitude * 16u + (uint64_t)h : PAHR_HUGE;
         }
-        for (; i < n; i++) {
-            int h = hex_value(p[i]);
-            if (h < 0) {
-                return false;
-            }
-            magnitude = magnitude * 16u + (uint64_t)h;
-        }
+        ok = i > first && i - first <= ilahrs_pahr_fields[k].width;
         *value = (int64_t)magnitude;
-        return true;
-    }
-    if (n > 0 && p[0] == '-') {
-        negative = true;
-        i = 1;
-    }
-    for (; i < n && p[i] >= '0' && p[i] <= '9'; i++, digits++) {
-        if (magnitude < PAHR_HUGE) {
-            magnitude = magnitude * 10u + (uint64_t)(p[i] - '0');
+    } else {
+        bool negative = p[i] == '-';
+        size_t decimals = ilahrs_pahr_fields[k].decimals;
+        size_t fraction = 0;
+        i += negative;
+        for (first = i; (unsigned)(p[i] - '0') <= 9u; i++) {
+            magnitude = magnitude < PAHR_HUGE ? magnitude * 10u + (uint64_t)(p[i] - '0') : PAHR_HUGE;
         }
-    }
-    if (digits == 0) {
-        return false;
-    }
-    digits = 0;
-    if (i < n && p[i] == '.') {
-        for (i++; i < n && p[i] >= '0' && p[i] <= '9'; i++, digits++) {
-            if (magnitude < PAHR_HUGE) {
-                magnitude = magnitude * 10u + (uint64_t)(p[i] - '0');
+        ok = i > first;
+        if (p[i] == '.') {
+            for (first = ++i; (unsigned)(p[i] - '0') <= 9u; i++) {
+                magnitude = magnitude < PAHR_HUGE ? magnitude * 10u + (uint64_t)(p[i] - '0') : PAHR_HUGE;
             }
+            fraction = i - first;
+            ok = ok && fraction >= 1 && fraction <= decimals;
         }
-        if (digits == 0 || digits > ilahrs_pahr_fields[k].decimals) {
-            return false;
-        }
-    }
-    if (i != n) {
-        return false;
-    }
-    for (; digits < ilahrs_pahr_fields[k].decimals; digits++) {
-        if (magnitude < PAHR_HUGE) {
+        for (; fraction < decimals && magnitude < PAHR_HUGE; fraction++) {
             magnitude *= 10u;
         }
+        *value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
     }
-    if (magnitude > PAHR_HUGE) {
-        magnitude = PAHR_HUGE;
+    if (i < star && p[i] != PAHR_SEPARATOR) {
+        ok = false;
+        while (i < star && p[i] != PAHR_SEPARATOR) {
+            i++;
+        }
     }
-    *value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
+    *at = i;
+    return ok;
+}
+
+/*
+ * Everything after the CR LF search: `end` is the sentence length, CR LF its last two
+ * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Errors in the order of spec/README.md.
+ */
+static bool pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, ilahrs_error_t *err)
+{
+    size_t star = end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    size_t i = PAHR_PREFIX_LENGTH;
+    size_t k = 0;
+    size_t error_at = 0;
+    size_t error_field = 0;
+    ilahrs_error_kind_t field_error = ILAHRS_OK;
+    int high;
+    int low;
+    if (star < PAHR_PREFIX_LENGTH || p[star] != PAHR_STAR) {
+        return fail(err, ILAHRS_ERR_MALFORMED, star, NULL);
+    }
+    high = hex_value(p[star + 1]);
+    low = hex_value(p[star + 2]);
+    if (high < 0 || low < 0) {
+        return fail(err, ILAHRS_ERR_MALFORMED, star + 1, NULL);
+    }
+    /* Fields, counted; the first bad one is remembered and reported after the checksum. */
+    for (;;) {
+        size_t start = i;
+        if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
+            int64_t value = 0;
+            if (!pahr_value(p, &i, star, k, &value)) {
+                field_error = ILAHRS_ERR_MALFORMED;
+            } else if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
+                field_error = ILAHRS_ERR_OUT_OF_RANGE;
+            } else {
+                store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)value, ilahrs_pahr_fields[k].size);
+            }
+            error_at = start;
+            error_field = k;
+        } else {
+            while (i < star && p[i] != PAHR_SEPARATOR) {
+                i++;
+            }
+        }
+        k++;
+        if (i >= star) {
+            break;
+        }
+        i++; /* the separator */
+    }
+    if (xor_bytes(p + 1, star - 1) != (uint8_t)(high * 16 + low)) {
+        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, star + 1, NULL);
+    }
+    if (k != ILAHRS_PAHR_FIELD_COUNT) {
+        return fail(err, ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, NULL);
+    }
+    if (field_error != ILAHRS_OK) {
+        return fail(err, field_error, error_at, FIELD_NAME(ilahrs_pahr_fields[error_field].name));
+    }
     return true;
 }
 
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     const uint8_t *p = (const uint8_t *)text;
+    const uint8_t *cr = NULL;
     size_t i;
     size_t end;
-    size_t star;
-    size_t fields;
-    size_t k;
-    uint8_t sum;
-    int high;
-    int low;
     if (len < 1) {
         return fail(err, ILAHRS_ERR_TRUNCATED, 0, NULL);
     }
@@ -1412,64 +1570,27 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     if (len < PAHR_PREFIX_LENGTH) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
-    for (i = PAHR_PREFIX_LENGTH; i + 1 < len; i++) {
-        if (p[i] == PAHR_CR && p[i + 1] == PAHR_LF) {
+    /* The first CR LF. */
+    for (i = PAHR_PREFIX_LENGTH; i + 1 < len; i = (size_t)(cr - p) + 1) {
+        cr = (const uint8_t *)memchr(p + i, PAHR_CR, len - 1 - i);
+        if (cr == NULL || cr[1] == PAHR_LF) {
             break;
         }
     }
-    if (i + 1 >= len) {
+    if (cr == NULL || i + 1 >= len) {
         if (len > ILAHRS_PAHR_MAX_LENGTH) {
             return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
         }
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
-    end = i + 2;
+    end = (size_t)(cr - p) + 2;
     if (end > ILAHRS_PAHR_MAX_LENGTH) {
         return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
     }
     if (end < len) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
-    star = end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
-    if (star < PAHR_PREFIX_LENGTH || p[star] != PAHR_STAR) {
-        return fail(err, ILAHRS_ERR_MALFORMED, star, NULL);
-    }
-    high = hex_value(p[star + 1]);
-    low = hex_value(p[star + 2]);
-    if (high < 0 || low < 0) {
-        return fail(err, ILAHRS_ERR_MALFORMED, star + 1, NULL);
-    }
-    sum = 0;
-    fields = 1;
-    for (i = 1; i < star; i++) {
-        sum ^= p[i];
-        if (i >= PAHR_PREFIX_LENGTH && p[i] == PAHR_SEPARATOR) {
-            fields++;
-        }
-    }
-    if (sum != (uint8_t)(high * 16 + low)) {
-        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, star + 1, NULL);
-    }
-    if (fields != ILAHRS_PAHR_FIELD_COUNT) {
-        return fail(err, ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, NULL);
-    }
-    i = PAHR_PREFIX_LENGTH;
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        size_t stop = i;
-        int64_t value = 0;
-        while (stop < star && p[stop] != PAHR_SEPARATOR) {
-            stop++;
-        }
-        if (!pahr_value(p + i, stop - i, k, &value)) {
-            return fail(err, ILAHRS_ERR_MALFORMED, i, NAME(ilahrs_pahr_fields[k].name));
-        }
-        if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, i, NAME(ilahrs_pahr_fields[k].name));
-        }
-        store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)value, ilahrs_pahr_fields[k].size);
-        i = stop + 1;
-    }
-    return true;
+    return pahr_body(p, end, out, err);
 }
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
@@ -1511,7 +1632,7 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         int32_t value = pahr_get(in, k);
         if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
-            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(ilahrs_pahr_fields[k].name));
+            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
         }
     }
     memcpy(buf, PAHR_PREFIX, PAHR_PREFIX_LENGTH);
@@ -1585,7 +1706,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         double value = values[k];
         if (!ilahrs_pahr_fields[k].hex) {
             if (!(value - value == 0.0)) { /* NaN or infinite */
-                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(ilahrs_pahr_fields[k].name));
+                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
             }
             value *= (double)ilahrs_pahr_fields[k].divisor;
         }
@@ -1596,7 +1717,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME(ilahrs_pahr_fields[k].name));
+            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
         }
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
@@ -1627,10 +1748,11 @@ static bool may_start(uint8_t byte)
     return byte == ILAHRS_FRAME_HEADER_0 || byte == PAHR_START;
 }
 
-/* The message at p[0..n): its size if valid, INVALID, or NEED_MORE bytes to decide. */
-static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or
+ * NEED_MORE bytes to decide. */
+static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
-    if (p[0] == ILAHRS_FRAME_HEADER_0) {
+    {
         uint32_t length;
         size_t total;
         size_t at;
@@ -1655,7 +1777,7 @@ static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
             return NEED_MORE;
         }
         at = total - ILAHRS_FRAME_CHECKSUM_SIZE;
-        if (ilahrs_checksum(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
+        if ((uint16_t)sum_bytes(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
             != get_le(p + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
             return INVALID;
         }
@@ -1668,6 +1790,11 @@ static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
         msg->frame.payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
         return (int)total;
     }
+}
+
+/* The sentence at p[0..n) (p[0] is "$"): as frame_candidate(). */
+static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
     {
         size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
         const uint8_t *lf = (const uint8_t *)memchr(p, PAHR_LF, limit);
@@ -1690,8 +1817,11 @@ static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
             }
             return NEED_MORE;
         }
+        /* The first LF ends the candidate, so the only CR LF it can hold is its last two
+         * characters: what ilahrs_pahr_parse() checks before pahr_body(). */
         i = (size_t)(lf - p) + 1;
-        if (!ilahrs_pahr_parse((const char *)p, i, &msg->sentence, NULL)) {
+        if (i < PAHR_PREFIX_LENGTH + 2 || memcmp(p, PAHR_PREFIX, PAHR_PREFIX_LENGTH) != 0 || p[i - 2] != PAHR_CR
+            || !pahr_body(p, i, &msg->sentence, NULL)) {
             return INVALID;
         }
         msg->kind = ILAHRS_MESSAGE_SENTENCE;
@@ -1699,6 +1829,12 @@ static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
         msg->size = i;
         return (int)i;
     }
+}
+
+/* The message at p[0..n): its size if valid, INVALID, or NEED_MORE bytes to decide. */
+static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
+    return p[0] == ILAHRS_FRAME_HEADER_0 ? frame_candidate(p, n, msg) : sentence_candidate(p, n, msg);
 }
 
 void ilahrs_stream_init(ilahrs_stream_t *stream)
@@ -1717,7 +1853,7 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
     size_t count;
     size_t pos = 0;
     size_t taken = 0; /* input bytes taken in this call */
-    size_t fresh = 0; /* of those, how many are still in buf (always its last bytes) */
+    size_t fresh = 0; /* input bytes in buf, always its last ones (when fewer remain, `rest` bounds them) */
     if (s->start != 0) {
         memmove(buf, buf + s->start, s->count);
         s->start = 0;
@@ -1774,9 +1910,6 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
         /* The buffer is full and the candidate at pos waits: make room, take more input. */
         memmove(buf, buf + pos, count - pos);
         count -= pos;
-        if (fresh > count) {
-            fresh = count;
-        }
         pos = 0;
     }
 }
@@ -1804,7 +1937,7 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
         if (j == n) {
             break;
         }
-        r = candidate(p + j, n - j, msg);
+        r = p[j] == ILAHRS_FRAME_HEADER_0 ? frame_candidate(p + j, n - j, msg) : sentence_candidate(p + j, n - j, msg);
         if (r > 0) {
             *data = p + j + (size_t)r;
             *len = n - j - (size_t)r;

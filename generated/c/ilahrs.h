@@ -246,6 +246,31 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
  */
 size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
+/**
+ * Every payload table. A frame does not say which table its payload follows (E7): the
+ * caller knows from the command it sent or the output format it selected.
+ */
+typedef enum ilahrs_payload {
+    ILAHRS_PAYLOAD_NONE = -1, /**< No payload table (e.g. a command without a parameter block). */
+    ILAHRS_PAYLOAD_FULL_OUTPUT = 0, /**< Full Output Data (Table 6.4), 34 bytes. */
+    ILAHRS_PAYLOAD_QUATERNION = 1, /**< Quaternion of Orientation (Table 6.5), 34 bytes. */
+    ILAHRS_PAYLOAD_ORIENTATION_SENSORS = 2, /**< Orientation + Sensor Outputs (Table 6.6), 34 bytes. */
+    ILAHRS_PAYLOAD_INITIAL_ALIGNMENT = 3, /**< Initial alignment data (Table 6.8), 50 bytes. */
+    ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD = 4, /**< Parameters to load (Table 6.9), 50 bytes. */
+    ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ = 5, /**< Parameters read (Table 6.10), 50 bytes. */
+    ILAHRS_PAYLOAD_FIRMWARE_VERSION = 6, /**< Firmware version (Table 6.11), 50 bytes. */
+    ILAHRS_PAYLOAD_BIT_RESULT = 7, /**< Built-in test answer (Table 6.12), 4 bytes. */
+    ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS = 8, /**< Calibration parameters (Table 6.13), 22 bytes. */
+    ILAHRS_PAYLOAD_CALIBRATION_RESULT = 9, /**< Calibration result (Table 6.14), 52 bytes. */
+    ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT = 10, /**< 2D-2T calibration run result (Table 6.15), 30 bytes. */
+    ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS = 11, /**< Calibration run parameters (Table 6.16), 6 bytes. */
+    ILAHRS_PAYLOAD_CALIBRATION_STATUS = 12, /**< Calibration results read back (Table 6.17), 52 bytes. */
+    ILAHRS_PAYLOAD_ACKNOWLEDGEMENT = 13, /**< Acknowledgement (6.3.1 (Table 6.2 with a one-word payload)), 2 bytes. */
+} ilahrs_payload_t;
+
+/** Number of payload tables. */
+#define ILAHRS_PAYLOAD_COUNT 14
+
 /* ======================================================================================== */
 /* Commands (Appendix C, Table C.1)                                                         */
 /* ======================================================================================== */
@@ -427,13 +452,13 @@ ilahrs_response_t ilahrs_command_response(ilahrs_command_t command);
  * Payload table `index` (0..ILAHRS_RESPONSE_PAYLOADS_MAX-1) a data response to `command` may
  * follow (StopClbRun: a calibration result or a run result), or ILAHRS_PAYLOAD_NONE.
  */
-int ilahrs_command_response_payload(ilahrs_command_t command, size_t index);
+ilahrs_payload_t ilahrs_command_response_payload(ilahrs_command_t command, size_t index);
 
 /**
  * The payload table of the parameter block the host sends right after `command`
  * (LoadAHRSPar, Start*Clb, StartClbRun), or ILAHRS_PAYLOAD_NONE.
  */
-int ilahrs_command_parameter_block(ilahrs_command_t command);
+ilahrs_payload_t ilahrs_command_parameter_block(ilahrs_command_t command);
 
 /**
  * The command frame of `command` (message type command, reserved 0, a one-byte payload
@@ -632,31 +657,6 @@ bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *vari
 /* Payload tables: generic interface                                                        */
 /* ======================================================================================== */
 
-/**
- * Every payload table. A frame does not say which table its payload follows (E7): the
- * caller knows from the command it sent or the output format it selected.
- */
-typedef enum ilahrs_payload {
-    ILAHRS_PAYLOAD_FULL_OUTPUT = 0, /**< Full Output Data (Table 6.4), 34 bytes. */
-    ILAHRS_PAYLOAD_QUATERNION = 1, /**< Quaternion of Orientation (Table 6.5), 34 bytes. */
-    ILAHRS_PAYLOAD_ORIENTATION_SENSORS = 2, /**< Orientation + Sensor Outputs (Table 6.6), 34 bytes. */
-    ILAHRS_PAYLOAD_INITIAL_ALIGNMENT = 3, /**< Initial alignment data (Table 6.8), 50 bytes. */
-    ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD = 4, /**< Parameters to load (Table 6.9), 50 bytes. */
-    ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ = 5, /**< Parameters read (Table 6.10), 50 bytes. */
-    ILAHRS_PAYLOAD_FIRMWARE_VERSION = 6, /**< Firmware version (Table 6.11), 50 bytes. */
-    ILAHRS_PAYLOAD_BIT_RESULT = 7, /**< Built-in test answer (Table 6.12), 4 bytes. */
-    ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS = 8, /**< Calibration parameters (Table 6.13), 22 bytes. */
-    ILAHRS_PAYLOAD_CALIBRATION_RESULT = 9, /**< Calibration result (Table 6.14), 52 bytes. */
-    ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT = 10, /**< 2D-2T calibration run result (Table 6.15), 30 bytes. */
-    ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS = 11, /**< Calibration run parameters (Table 6.16), 6 bytes. */
-    ILAHRS_PAYLOAD_CALIBRATION_STATUS = 12, /**< Calibration results read back (Table 6.17), 52 bytes. */
-    ILAHRS_PAYLOAD_ACKNOWLEDGEMENT = 13, /**< Acknowledgement (6.3.1 (Table 6.2 with a one-word payload)), 2 bytes. */
-} ilahrs_payload_t;
-
-/** Number of payload tables. */
-#define ILAHRS_PAYLOAD_COUNT 14
-/** "No payload table" (e.g. a command without a parameter block). */
-#define ILAHRS_PAYLOAD_NONE (-1)
 
 /** Wire kinds of payload fields. */
 typedef enum ilahrs_kind {
@@ -672,26 +672,25 @@ typedef enum ilahrs_kind {
  * layout of this struct is not part of the interface.
  */
 typedef struct ilahrs_field_info {
-    uint16_t name;   /* string pool offset */
+    uint16_t name;  /* offset in the field-name pool */
     uint8_t offset;  /* wire offset */
     uint8_t size;    /* wire size */
-    uint8_t kind;    /* ilahrs_kind_t */
     uint8_t member;  /* offsetof() in the payload struct */
-    uint8_t bounds;  /* builder check, 0: none */
+    uint8_t type;    /* ilahrs_kind_t | encoding << 4 */
+    uint8_t bounds;  /* builder check (by kind), 0: none */
     uint8_t scale;   /* engineering scale, 0: none */
-    uint8_t encoding;
 } ilahrs_field_info_t;
 
 /** Spec name of a payload table ("full_output"); NULL if unknown. */
-const char *ilahrs_payload_name(int payload);
+const char *ilahrs_payload_name(ilahrs_payload_t payload);
 /** Wire size of a payload table; 0 if unknown. */
-size_t ilahrs_payload_size(int payload);
+size_t ilahrs_payload_size(ilahrs_payload_t payload);
 /** sizeof the C struct of a payload table; 0 if unknown. */
-size_t ilahrs_payload_struct_size(int payload);
+size_t ilahrs_payload_struct_size(ilahrs_payload_t payload);
 /** Number of fields of a payload table; 0 if unknown. */
-size_t ilahrs_payload_field_count(int payload);
+size_t ilahrs_payload_field_count(ilahrs_payload_t payload);
 /** Field `index` of a payload table, in wire order; NULL if out of range. */
-const ilahrs_field_info_t *ilahrs_payload_field(int payload, size_t index);
+const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t index);
 /** Find a payload table by its spec name, `len` characters at `name`. */
 bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload);
 
@@ -741,24 +740,24 @@ bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t varia
  * its range. Start every payload you build from this. The non-zero defaults:
  * ahrs_parameters_load.update_rate = 100,
  * ahrs_parameters_load.alignment_time = 30,
- * ahrs_parameters_load.date = 1900,
+ * ahrs_parameters_load.date = 1900.002685546875,
  * ahrs_parameters_read.update_rate = 1,
  * ahrs_parameters_read.alignment_time = 1,
- * ahrs_parameters_read.date = 1900,
+ * ahrs_parameters_read.date = 1900.002685546875,
  * calibration_parameters.accumulation_time = 1,
- * calibration_parameters.date = 1900,
+ * calibration_parameters.date = 1900.002685546875,
  * calibration_result.calibration_type = 1,
  * calibration_run_result.calibration_type = 2,
  * calibration_run_result.run = 1.
  */
-void ilahrs_payload_defaults(int payload, void *out);
+void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out);
 
 /**
  * Decode a payload of table `payload` into the struct at `out` (of that table's type).
  * Needs exactly the table's size: fewer bytes is `truncated` at `len`, more is
  * `trailing_data` at the size. No range checks: every byte string of the right size decodes.
  */
-bool ilahrs_payload_parse(int payload, const uint8_t *data, size_t len, void *out, ilahrs_error_t *err);
+bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t len, void *out, ilahrs_error_t *err);
 
 /**
  * Encode the struct at `in` (of table `payload`'s type) into `out`. Checks the fields in
@@ -768,14 +767,14 @@ bool ilahrs_payload_parse(int payload, const uint8_t *data, size_t len, void *ou
  * wrapped, clamped or truncated. `buffer_too_small` if `cap` is less than the table's size.
  * @return the payload size, or 0 on failure
  */
-size_t ilahrs_payload_build(int payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err);
+size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /**
  * ilahrs_payload_build() wrapped in a data frame (message type data, reserved 0): what the
  * AHRS sends, and what the host sends as a parameter block (E5).
  * @return the frame size, or 0 on failure
  */
-size_t ilahrs_payload_build_frame(int payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err);
+size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /* ======================================================================================== */
 /* Payload tables                                                                           */
@@ -2261,6 +2260,9 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
 
 /** The spec name of sentence field `index` (0..ILAHRS_PAHR_FIELD_COUNT-1); NULL otherwise. */
 const char *ilahrs_pahr_field_name(size_t index);
+
+/** The range of sentence field `index` (scaled values); false if `index` is out of range. */
+bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max);
 
 /** 10^decimals of decimal sentence field `index` (engineering = value / divisor); 0 for a hex field. */
 uint32_t ilahrs_pahr_field_divisor(size_t index);

@@ -1,0 +1,126 @@
+"""Code and RAM footprint of the C binding on a Cortex-M4 (make footprint-c).
+
+Compiles generated/c/ilahrs.c with arm-none-eabi-gcc, then links three closures with
+--gc-sections, keeping only what the named entry points reach (newlib-nano's memcpy/memchr and
+libgcc's soft-float helpers included, since a firmware image needs them too):
+
+- the stream decoder (ilahrs_stream_init/next/push/poll/finish),
+- the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
+  ilahrs_payload_build_frame, ilahrs_ack_build),
+- the whole library (every public function).
+
+Prints text/data/bss of each next to the targets, the decoder state size, and whether anything
+uses the heap or static RAM. Sizes are measured, never assumed; targets are reported, not enforced.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import shlex
+import subprocess
+import sys
+from pathlib import Path
+
+STREAM = ["ilahrs_stream_init", "ilahrs_stream_next", "ilahrs_stream_push", "ilahrs_stream_poll",
+          "ilahrs_stream_finish"]
+BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_payload_build_frame",
+            "ilahrs_ack_build"]
+TARGETS = {"stream decoder": 512, "frame and command builders": None, "whole library": 8 * 1024}
+STATE_TARGET = 128
+HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
+
+
+def run(cmd: list[str]) -> str:
+    result = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    if result.returncode != 0:
+        sys.stderr.write(f"$ {shlex.join(cmd)}\n{result.stdout}{result.stderr}")
+        raise SystemExit(1)
+    return result.stdout
+
+
+def tool(cc: str, name: str) -> str:
+    return re.sub(r"gcc$", name, cc)
+
+
+def size_of(cc: str, elf: Path) -> tuple[int, int, int]:
+    out = run([tool(cc, "size"), str(elf)]).splitlines()[1].split()
+    return int(out[0]), int(out[1]), int(out[2])
+
+
+def biggest(cc: str, elf: Path, count: int = 8) -> list[tuple[int, str]]:
+    rows: list[tuple[int, str]] = []
+    for line in run([tool(cc, "nm"), "--size-sort", "-S", str(elf)]).splitlines():
+        parts = line.split()
+        if len(parts) == 4 and parts[2].lower() in ("t", "r", "d", "b"):
+            rows.append((int(parts[1], 16), parts[3]))
+    return sorted(rows, key=lambda r: (-r[0], r[1]))[:count]
+
+
+def link(cc: str, flags: list[str], obj: Path, entries: list[str], elf: Path) -> None:
+    keep = [f"-Wl,-u,{name}" for name in entries]
+    run([cc, *flags, "-nostartfiles", "--specs=nano.specs", "-Wl,--gc-sections", f"-Wl,-e,{entries[0]}",
+         *keep, str(obj), "-o", str(elf), "-lc", "-lgcc"])
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--cc", default="arm-none-eabi-gcc")
+    parser.add_argument("--flags", required=True)
+    parser.add_argument("--source", type=Path, required=True)
+    parser.add_argument("--include", type=Path, required=True)
+    parser.add_argument("--out", type=Path, required=True)
+    args = parser.parse_args()
+    flags = shlex.split(args.flags)
+    out: Path = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    obj = out / "ilahrs.o"
+    run([args.cc, *flags, f"-I{args.include}", "-c", str(args.source), "-o", str(obj)])
+
+    # Static RAM and heap use of the library itself.
+    obj_text, obj_data, obj_bss = size_of(args.cc, obj)
+    undefined = set(run([tool(args.cc, "nm"), "-u", str(obj)]).split()) - {"U"}
+    symbols = run([tool(args.cc, "nm"), "-g", "--defined-only", str(obj)]).splitlines()
+    public = sorted(parts[2] for parts in (line.split() for line in symbols) if len(parts) == 3 and parts[1] == "T")
+
+    # Decoder state and message sizes, from the compiler.
+    probe = out / "sizes.c"
+    probe.write_text(
+        '#include "ilahrs.h"\n'
+        "const char ilahrs_sizeof_stream[sizeof(ilahrs_stream_t)] = {0};\n"
+        "const char ilahrs_sizeof_message[sizeof(ilahrs_message_t)] = {0};\n",
+        encoding="utf-8",
+    )
+    probe_obj = out / "sizes.o"
+    run([args.cc, *flags, f"-I{args.include}", "-c", str(probe), "-o", str(probe_obj)])
+    sizes = {
+        parts[3]: int(parts[1], 16)
+        for parts in (line.split() for line in run([tool(args.cc, "nm"), "-S", str(probe_obj)]).splitlines())
+        if len(parts) == 4
+    }
+
+    print(f"compiler: {run([args.cc, '--version']).splitlines()[0]}")
+    print(f"flags: {args.flags}")
+    print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
+    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "whole library": public}
+    for name, entries in groups.items():
+        elf = out / (name.replace(" ", "_") + ".elf")
+        link(args.cc, flags, obj, entries, elf)
+        text, data, bss = size_of(args.cc, elf)
+        target = TARGETS[name]
+        verdict = "" if target is None else f"  (target <= {target}: {'met' if text <= target else 'NOT met'})"
+        print(f"{name}: text {text}, data {data}, bss {bss}{verdict}")
+        print("    largest: " + ", ".join(f"{sym} {n}" for n, sym in biggest(args.cc, elf)))
+    state = sizes["ilahrs_sizeof_stream"]
+    print(f"decoder state (ilahrs_stream_t): {state} bytes of RAM, caller-owned "
+          f"(target <= {STATE_TARGET}: {'met' if state <= STATE_TARGET else 'NOT met'})")
+    print(f"message (ilahrs_message_t, on the caller's stack): {sizes['ilahrs_sizeof_message']} bytes")
+    heap = sorted(undefined & HEAP_SYMBOLS)
+    print(f"heap: {'none' if not heap else 'uses ' + ', '.join(heap)} (target: none)")
+    print(f"static RAM: {obj_data + obj_bss} bytes (target: 0)")
+    print(f"library calls: {', '.join(sorted(undefined)) or 'none'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

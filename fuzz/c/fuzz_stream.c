@@ -1,0 +1,144 @@
+/*
+ * libFuzzer target: the stream decoder.
+ *
+ * The input is decoded three ways: in one piece, in chunks whose sizes come from the input
+ * itself, and one byte at a time. All three must hand out the same messages and discard the
+ * same number of bytes; every byte belongs to exactly one message or is discarded; every
+ * accepted frame must decode on its own and re-build to the same bytes; every accepted sentence
+ * must decode on its own, and its re-built text must decode to the same values.
+ */
+#include "ilahrs.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_EVENTS 65536
+
+typedef struct {
+    size_t count;
+    size_t bytes;
+    uint64_t discarded;
+    uint32_t sizes[MAX_EVENTS];
+    uint8_t kinds[MAX_EVENTS];
+    uint64_t hash; /* of every message's bytes, in order */
+} events_t;
+
+static void check(int ok)
+{
+    if (!ok) {
+        abort();
+    }
+}
+
+static void verify(const ilahrs_message_t *msg)
+{
+    if (msg->kind == ILAHRS_MESSAGE_FRAME) {
+        ilahrs_frame_t frame;
+        uint8_t again[ILAHRS_FRAME_MAX_SIZE];
+        check(ilahrs_frame_parse(msg->data, msg->size, &frame, NULL));
+        check(frame.payload_size == msg->frame.payload_size && frame.message_type == msg->frame.message_type
+              && frame.reserved == msg->frame.reserved
+              && memcmp(frame.payload, msg->frame.payload, frame.payload_size) == 0);
+        check(ilahrs_frame_build(&frame, again, sizeof again, NULL) == msg->size);
+        check(memcmp(again, msg->data, msg->size) == 0);
+    } else {
+        ilahrs_pahr_t s;
+        ilahrs_pahr_t t;
+        char text[ILAHRS_PAHR_MAX_LENGTH + 1];
+        size_t n;
+        size_t k;
+        check(msg->kind == ILAHRS_MESSAGE_SENTENCE);
+        check(ilahrs_pahr_parse((const char *)msg->data, msg->size, &s, NULL));
+        check(memcmp(&s, &msg->sentence, sizeof s) == 0);
+        n = ilahrs_pahr_build(&s, text, sizeof text, NULL);
+        check(n > 0 && ilahrs_pahr_parse(text, n, &t, NULL));
+        for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+            check(ilahrs_pahr_field_get(&s, k) == ilahrs_pahr_field_get(&t, k));
+        }
+    }
+}
+
+static void add(events_t *ev, const ilahrs_message_t *msg)
+{
+    size_t i;
+    check(ev->count < MAX_EVENTS);
+    ev->sizes[ev->count] = (uint32_t)msg->size;
+    ev->kinds[ev->count] = (uint8_t)msg->kind;
+    ev->count++;
+    ev->bytes += msg->size;
+    for (i = 0; i < msg->size; i++) {
+        ev->hash = (ev->hash ^ msg->data[i]) * 0x100000001B3ULL;
+    }
+    verify(msg);
+}
+
+static void decode(const uint8_t *data, size_t size, int mode, events_t *ev)
+{
+    ilahrs_stream_t s;
+    ilahrs_message_t msg;
+    size_t fed = 0;
+    size_t turn = 0;
+    memset(ev, 0, sizeof *ev);
+    ev->hash = 0xCBF29CE484222325ULL;
+    ilahrs_stream_init(&s);
+    while (fed < size) {
+        size_t chunk = size - fed;
+        if (mode == 1) {
+            chunk = 1 + data[turn++ % size] % 97u;
+            if (chunk > size - fed) {
+                chunk = size - fed;
+            }
+        }
+        if (mode == 2) {
+            if (ilahrs_stream_push(&s, data[fed], &msg)) {
+                do {
+                    add(ev, &msg);
+                } while (ilahrs_stream_poll(&s, &msg));
+            }
+            fed++;
+            continue;
+        }
+        {
+            /* a copy per chunk: pointers past it are caught by AddressSanitizer */
+            uint8_t *copy = (uint8_t *)malloc(chunk);
+            const uint8_t *p = copy;
+            size_t n = chunk;
+            memcpy(copy, data + fed, chunk);
+            while (ilahrs_stream_next(&s, &p, &n, &msg)) {
+                check(msg.size > 0);
+                add(ev, &msg);
+            }
+            check(n == 0);
+            free(copy);
+        }
+        fed += chunk;
+    }
+    while (ilahrs_stream_finish(&s, &msg)) {
+        add(ev, &msg);
+    }
+    check(s.count == 0);
+    ev->discarded = s.discarded;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static events_t a;
+    static events_t b;
+    static events_t c;
+    if (size > 1 << 16) {
+        return 0;
+    }
+    decode(data, size, 0, &a);
+    decode(data, size, 1, &b);
+    decode(data, size, 2, &c);
+    check(a.bytes + a.discarded == size);
+    check(a.count == b.count && a.count == c.count);
+    check(a.discarded == b.discarded && a.discarded == c.discarded);
+    check(a.hash == b.hash && a.hash == c.hash);
+    check(memcmp(a.sizes, b.sizes, a.count * sizeof a.sizes[0]) == 0);
+    check(memcmp(a.sizes, c.sizes, a.count * sizeof a.sizes[0]) == 0);
+    check(memcmp(a.kinds, b.kinds, a.count) == 0 && memcmp(a.kinds, c.kinds, a.count) == 0);
+    return 0;
+}

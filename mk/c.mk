@@ -1,0 +1,156 @@
+# The C binding (generated/c/ilahrs.h + ilahrs.c, from generator/targets/c).
+#
+#   make build-c       library, conformance runner and example with gcc and clang, -Werror
+#   make lint-c        the header compiled as C++ (g++ and clang++), the library with extra warnings
+#   make test-c        unit tests under ASan+UBSan (gcc and clang), the sanitized conformance runner
+#                      (chunked and byte at a time), brief libFuzzer runs, CMake build, the example
+#   make bench-c       stream decoder throughput next to a byte-summing loop; writes build/bench/capture.bin
+#   make footprint-c   Cortex-M4 code and RAM sizes (arm-none-eabi-gcc)
+#   make fuzz-c        longer libFuzzer runs (FUZZ_SECONDS per target, default 60)
+#
+# Tools missing on a fresh machine (clang, its libFuzzer runtime, cmake, arm-none-eabi-gcc) are
+# installed with apt when needed.
+
+C_DIR := generated/c
+C_OUT := $(BUILD)/c
+C_LIB := $(C_DIR)/ilahrs.c $(C_DIR)/ilahrs.h
+C_STD := -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
+C_EXTRA := -Wcast-qual -Wstrict-prototypes -Wmissing-prototypes -Wold-style-definition -Wundef \
+           -Wdouble-promotion -Wsign-conversion -Wswitch-enum -Wvla -Wredundant-decls -Wcast-align
+C_SAN := -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+C_FUZZ := -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+CLANG ?= clang
+FUZZ_RUNS ?= 150000
+FUZZ_SECONDS ?= 60
+ARM_CC ?= arm-none-eabi-gcc
+ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sections
+
+SETUP_TARGETS += setup-c
+BUILD_TARGETS += build-c
+LINT_TARGETS += lint-c
+TEST_TARGETS += test-c
+BENCH_TARGETS += bench-c
+FOOTPRINT_TARGETS += footprint-c
+FUZZ_TARGETS += fuzz-c
+
+.PHONY: setup-c build-c lint-c test-c bench-c footprint-c fuzz-c setup-c-arm
+
+APT_INSTALL = (apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(1) >/dev/null)
+
+setup-c:
+	@command -v $(CLANG) >/dev/null && command -v clang++ >/dev/null || $(call APT_INSTALL,clang)
+	@printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { (void)d; (void)n; return 0; }\n' \
+		| $(CLANG) -x c -fsanitize=fuzzer - -o /dev/null 2>/dev/null \
+		|| $(call APT_INSTALL,libclang-rt-$$($(CLANG) -dumpversion | cut -d. -f1)-dev)
+	@command -v cmake >/dev/null || $(call APT_INSTALL,cmake)
+
+setup-c-arm:
+	@command -v $(ARM_CC) >/dev/null || $(call APT_INSTALL,gcc-arm-none-eabi libnewlib-arm-none-eabi)
+
+# --- build: gcc and clang, -Werror --------------------------------------------------------
+
+C_BINS := $(C_OUT)/ilahrs_conformance $(C_OUT)/clang/ilahrs_conformance \
+          $(C_OUT)/decode_capture $(C_OUT)/clang/decode_capture
+
+build-c: $(C_BINS)
+
+$(C_OUT)/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/clang/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/decode_capture: $(C_DIR)/examples/decode_capture.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
+
+$(C_OUT)/clang/decode_capture: $(C_DIR)/examples/decode_capture.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
+
+# --- lint: C++ use of the header, stricter warnings on the library -------------------------
+
+C_CXX := -std=c++11 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
+
+lint-c: setup-c $(C_LIB) tests/c/cpp_check.cpp
+	@mkdir -p $(C_OUT)/lint
+	gcc $(C_STD) $(C_EXTRA) -O2 -c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs.gcc.o
+	$(CLANG) $(C_STD) $(C_EXTRA) -O2 -c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs.clang.o
+	g++ $(C_CXX) -I$(C_DIR) tests/c/cpp_check.cpp $(C_OUT)/lint/ilahrs.gcc.o -o $(C_OUT)/lint/cpp_check_gcc
+	clang++ $(C_CXX) -I$(C_DIR) tests/c/cpp_check.cpp $(C_OUT)/lint/ilahrs.clang.o -o $(C_OUT)/lint/cpp_check_clang
+	$(C_OUT)/lint/cpp_check_gcc
+	$(C_OUT)/lint/cpp_check_clang
+
+# --- test ------------------------------------------------------------------------------------
+
+$(C_OUT)/san/test_ilahrs_gcc: tests/c/test_ilahrs.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/san/test_ilahrs_clang: tests/c/test_ilahrs.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/san/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/fuzz/%: fuzz/c/%.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_FUZZ) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
+
+$(C_OUT)/capture: bench/c/capture_main.c bench/c/capture.c bench/c/capture.h $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) -O2 -I$(C_DIR) -Ibench/c bench/c/capture_main.c bench/c/capture.c $(C_DIR)/ilahrs.c -o $@
+
+# Seeds for the fuzzers: small captures built by the library (valid frames and sentences).
+$(C_OUT)/corpus/.stamp: $(C_OUT)/capture
+	@rm -rf $(C_OUT)/corpus && mkdir -p $(C_OUT)/corpus
+	$(C_OUT)/capture --corpus $(C_OUT)/corpus --count 64 --size 512
+	@touch $@
+
+C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers
+
+test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/ilahrs_conformance \
+        $(C_FUZZERS) $(C_OUT)/corpus/.stamp $(C_OUT)/capture $(C_OUT)/decode_capture
+	$(C_OUT)/san/test_ilahrs_gcc
+	$(C_OUT)/san/test_ilahrs_clang 0x5EED
+	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance" --name c-asan-ubsan
+	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance --bytewise" --name c-bytewise
+	@for f in $(C_FUZZERS); do \
+		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
+		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \
+		$$f -seed=1 -runs=$(FUZZ_RUNS) -max_len=1024 -print_final_stats=0 $(C_OUT)/fuzz/work $(C_OUT)/corpus \
+			>$(C_OUT)/fuzz/log.txt 2>&1 || { tail -40 $(C_OUT)/fuzz/log.txt; exit 1; }; \
+	done
+	rm -rf $(C_OUT)/cmake && cmake -S $(C_DIR) -B $(C_OUT)/cmake -DILAHRS_BUILD_EXAMPLES=ON \
+		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake/install >/dev/null
+	cmake --build $(C_OUT)/cmake >/dev/null && cmake --install $(C_OUT)/cmake >/dev/null
+	test -f $(C_OUT)/cmake/install/lib/pkgconfig/ilahrs.pc -o -f $(C_OUT)/cmake/install/lib64/pkgconfig/ilahrs.pc
+	$(C_OUT)/capture --size 200000 --seed 7 --out $(C_OUT)/example-capture.bin >/dev/null
+	$(C_OUT)/decode_capture $(C_OUT)/example-capture.bin | tail -1
+
+# --- bench, footprint, fuzz ----------------------------------------------------------------
+
+$(C_OUT)/bench_stream: bench/c/bench_stream.c bench/c/capture.c bench/c/capture.h $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) -O2 -I$(C_DIR) -Ibench/c bench/c/bench_stream.c bench/c/capture.c $(C_DIR)/ilahrs.c -o $@
+
+bench-c: $(C_OUT)/bench_stream $(C_OUT)/capture
+	@mkdir -p $(BUILD)/bench
+	$(C_OUT)/capture --out $(BUILD)/bench/capture.bin
+	$(C_OUT)/bench_stream
+
+footprint-c: setup-c-arm
+	@mkdir -p $(C_OUT)/footprint
+	$(PY) bench/c/footprint.py --cc $(ARM_CC) --flags "$(ARM_FLAGS)" --source $(C_DIR)/ilahrs.c \
+		--include $(C_DIR) --out $(C_OUT)/footprint
+
+fuzz-c: setup-c $(C_FUZZERS) $(C_OUT)/corpus/.stamp
+	@mkdir -p $(C_OUT)/fuzz/long
+	@for f in $(C_FUZZERS); do \
+		echo "$$f: $(FUZZ_SECONDS) s"; \
+		$$f -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -print_final_stats=1 $(C_OUT)/fuzz/long $(C_OUT)/corpus || exit 1; \
+	done
