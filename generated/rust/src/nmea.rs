@@ -173,51 +173,7 @@ impl PahrSentence {
         if end < size {
             return Err(Error::at(ErrorKind::TrailingData, end));
         }
-        let star = match end.checked_sub(TAIL) {
-            Some(star) if star >= PREFIX.len() && data.get(star) == Some(&b'*') => star,
-            Some(star) => return Err(Error::at(ErrorKind::Malformed, star)),
-            None => return Err(Error::at(ErrorKind::Malformed, 0)),
-        };
-        let sent = match data.get(star + 1..star + 3) {
-            Some(&[high, low]) => match (hex_digit(high), hex_digit(low)) {
-                (Some(high), Some(low)) => high << 4 | low,
-                _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
-            },
-            _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
-        };
-        if checksum(data.get(1..star).unwrap_or(&[])) != sent {
-            return Err(Error::at(ErrorKind::BadChecksum, star + 1));
-        }
-        let body = data.get(PREFIX.len()..star).unwrap_or(&[]);
-        // One pass over the body: where each field starts and ends (offsets into `data`).
-        let mut spans = [(0usize, 0usize); FIELD_COUNT];
-        let mut count = 0;
-        let mut start = PREFIX.len();
-        for part in body.split(|byte| *byte == b',') {
-            if let Some(span) = spans.get_mut(count) {
-                *span = (start, start + part.len());
-            }
-            count += 1;
-            start += part.len() + 1;
-        }
-        if count != FIELD_COUNT {
-            return Err(Error::at(ErrorKind::Malformed, PREFIX.len()));
-        }
-        let mut values = [0i64; FIELD_COUNT];
-        for ((spec, &(from, to)), slot) in FIELDS.iter().zip(&spans).zip(&mut values) {
-            let part = data.get(from..to).unwrap_or(&[]);
-            let error = |kind| Error::at(kind, from).with_field(spec.name);
-            let value = match spec.format {
-                Format::Decimal { decimals, .. } => parse_decimal(part, decimals),
-                Format::Hex { width } => parse_hex(part, width),
-            };
-            let value = value.ok_or(error(ErrorKind::Malformed))?;
-            if value < spec.min || value > spec.max {
-                return Err(error(ErrorKind::OutOfRange));
-            }
-            *slot = value;
-        }
-        PahrSentence::from_scaled(values)
+        parse_body(data)
     }
 
     /// The sentence with these scaled values (sentence order), checked against the ranges.
@@ -362,6 +318,147 @@ impl PahrSentence {
     }
 }
 
+/// Decodes a sentence whose prefix, CR LF end and length are already checked: `data` starts
+/// with [`PREFIX`], ends with its first CR LF and holds at most [`MAX_LENGTH`] bytes. The
+/// remaining checks of [`PahrSentence::parse`], in its order, in one pass over the fields.
+pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
+    let star = match data.len().checked_sub(TAIL) {
+        Some(star) if star >= PREFIX.len() && data.get(star) == Some(&b'*') => star,
+        Some(star) => return Err(Error::at(ErrorKind::Malformed, star)),
+        None => return Err(Error::at(ErrorKind::Malformed, 0)),
+    };
+    let sent = match data.get(star + 1..star + 3) {
+        Some(&[high, low]) => match (hex_digit(high), hex_digit(low)) {
+            (Some(high), Some(low)) => high << 4 | low,
+            _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
+        },
+        _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
+    };
+    // The fields run to the star.
+    let body = data.get(..star).unwrap_or(&[]);
+    if checksum(body.get(1..).unwrap_or(&[])) != sent {
+        return Err(Error::at(ErrorKind::BadChecksum, star + 1));
+    }
+    // Each field in turn; the first bad one is reported once the fields are counted.
+    let mut values = [0i64; FIELD_COUNT];
+    let mut first_error = None;
+    let mut count = 0;
+    let mut at = PREFIX.len();
+    loop {
+        let start = at;
+        match (FIELDS.get(count), values.get_mut(count)) {
+            (Some(spec), Some(slot)) if first_error.is_none() => {
+                let value;
+                (value, at) = match spec.format {
+                    Format::Decimal { decimals, .. } => read_decimal(body, at, decimals),
+                    Format::Hex { width } => read_hex(body, at, width),
+                };
+                let error = |kind| Some(Error::at(kind, start).with_field(spec.name));
+                match value {
+                    None => first_error = error(ErrorKind::Malformed),
+                    Some(value) if value < spec.min || value > spec.max => {
+                        first_error = error(ErrorKind::OutOfRange);
+                    }
+                    Some(value) => *slot = value,
+                }
+            }
+            _ => at = skip_field(body, at),
+        }
+        count += 1;
+        if at >= body.len() {
+            break;
+        }
+        at += 1;
+    }
+    if count != FIELD_COUNT {
+        return Err(Error::at(ErrorKind::Malformed, PREFIX.len()));
+    }
+    if let Some(error) = first_error {
+        return Err(error);
+    }
+    PahrSentence::from_scaled(values)
+}
+
+/// Magnitudes saturate here, far above every field's range (and far below `i64::MAX`).
+const SATURATED: u64 = 1 << 56;
+
+/// The index of the separator or end that closes the field at `at`.
+fn skip_field(body: &[u8], at: usize) -> usize {
+    let rest = body.get(at..).unwrap_or(&[]);
+    at + rest
+        .iter()
+        .position(|byte| *byte == b',')
+        .unwrap_or(rest.len())
+}
+
+/// Appends the decimal digits at `body[at..]` to `value`: the new value and where the digits end.
+fn digits(body: &[u8], mut at: usize, mut value: u64) -> (u64, usize) {
+    while let Some(digit) = body
+        .get(at)
+        .map(|byte| byte.wrapping_sub(b'0'))
+        .filter(|d| *d <= 9)
+    {
+        value = if value < SATURATED {
+            value * 10 + u64::from(digit)
+        } else {
+            SATURATED
+        };
+        at += 1;
+    }
+    (value, at)
+}
+
+/// The decimal field at `body[at..]`, scaled by 10^decimals (saturating for absurdly long
+/// numbers, which then fail the range check), or `None` when it does not follow the grammar:
+/// an optional `-`, one or more digits, and optionally `.` with 1 to `decimals` digits. Also
+/// returns where the field ends (its separator, or the end of `body`).
+fn read_decimal(body: &[u8], at: usize, decimals: u32) -> (Option<i64>, usize) {
+    let negative = body.get(at) == Some(&b'-');
+    let first = at + usize::from(negative);
+    let (mut value, mut end) = digits(body, first, 0);
+    let mut ok = end > first;
+    let mut places = decimals;
+    if body.get(end) == Some(&b'.') {
+        let point = end;
+        (value, end) = digits(body, point + 1, value);
+        let fraction = end - point - 1;
+        ok = ok && fraction >= 1 && fraction <= decimals as usize;
+        places = decimals.saturating_sub(fraction as u32);
+    }
+    for _ in 0..places {
+        value = if value < SATURATED {
+            value * 10
+        } else {
+            SATURATED
+        };
+    }
+    if end < body.len() && body.get(end) != Some(&b',') {
+        return (None, skip_field(body, end));
+    }
+    let value = value.min(SATURATED) as i64;
+    (ok.then_some(if negative { -value } else { value }), end)
+}
+
+/// The hex field of 1 to `width` digits, either case, at `body[at..]`, or `None`; and where the
+/// field ends.
+fn read_hex(body: &[u8], at: usize, width: usize) -> (Option<i64>, usize) {
+    let mut value = 0u64;
+    let mut end = at;
+    while let Some(digit) = body.get(end).and_then(|byte| hex_digit(*byte)) {
+        value = if value < SATURATED {
+            value * 16 + u64::from(digit)
+        } else {
+            SATURATED
+        };
+        end += 1;
+    }
+    let ok = end > at && end - at <= width;
+    if end < body.len() && body.get(end) != Some(&b',') {
+        return (None, skip_field(body, end));
+    }
+    (ok.then_some(value.min(SATURATED) as i64), end)
+}
+
 /// The error for a bad value of field `index`.
 fn refuse(index: usize) -> Error {
     match FIELDS.get(index) {
@@ -391,55 +488,6 @@ fn hex_digit(byte: u8) -> Option<u8> {
         b'A'..=b'F' => Some(byte - b'A' + 10),
         _ => None,
     }
-}
-
-/// A decimal field scaled by 10^decimals (saturating for absurdly long numbers, which then
-/// fail the range check), or `None` when it does not follow the grammar: an optional `-`, one
-/// or more digits, and optionally `.` with 1 to `decimals` digits.
-fn parse_decimal(text: &[u8], decimals: u32) -> Option<i64> {
-    let (negative, body) = match text {
-        [b'-', rest @ ..] => (true, rest),
-        _ => (false, text),
-    };
-    let mut value: i64 = 0;
-    let mut whole_digits = 0usize;
-    let mut fraction_digits: Option<u32> = None;
-    for &byte in body {
-        match (byte, fraction_digits) {
-            (b'0'..=b'9', None) => whole_digits += 1,
-            (b'0'..=b'9', Some(count)) if count < decimals => fraction_digits = Some(count + 1),
-            (b'.', None) => {
-                fraction_digits = Some(0);
-                continue;
-            }
-            _ => return None,
-        }
-        value = value.saturating_mul(10).saturating_add(digit_value(byte));
-    }
-    if whole_digits == 0 || fraction_digits == Some(0) {
-        return None;
-    }
-    let places = decimals.saturating_sub(fraction_digits.unwrap_or(0));
-    value = value.saturating_mul(10i64.saturating_pow(places));
-    Some(if negative { -value } else { value })
-}
-
-/// The value of a decimal digit (0 for any other byte).
-fn digit_value(byte: u8) -> i64 {
-    i64::from(byte.saturating_sub(b'0'))
-}
-
-/// A hex field of 1 to `width` digits, either case, or `None`.
-fn parse_hex(text: &[u8], width: usize) -> Option<i64> {
-    if text.is_empty() || text.len() > width {
-        return None;
-    }
-    let mut value: i64 = 0;
-    for byte in text {
-        let digit = i64::from(hex_digit(*byte)?);
-        value = value.saturating_mul(16).saturating_add(digit);
-    }
-    Some(value)
 }
 
 /// Writes bytes into a buffer, counting (but dropping) what does not fit.

@@ -28,7 +28,7 @@
 //! ```
 
 use crate::frame::{check_frame, Frame, HEADER};
-use crate::nmea::{PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
+use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
 
 /// The most bytes the decoder holds: the longest frame or sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
@@ -134,26 +134,36 @@ enum Decision<'a> {
 /// sentence start byte). `data` holds every byte available.
 fn decide(data: &[u8]) -> Decision<'_> {
     match data.first() {
-        Some(&FRAME_START) => match check_frame(data) {
-            Ok(size) => match data.get(..size) {
-                Some(bytes) => Decision::Accept(size, Event::Frame(Frame::new_unchecked(bytes))),
-                None => Decision::Reject,
-            },
-            Err(error) if error.kind() == crate::ErrorKind::Truncated => Decision::NeedMore,
-            Err(_) => Decision::Reject,
-        },
+        Some(&FRAME_START) => decide_frame(data),
         Some(&SENTENCE_START) => decide_sentence(data),
         _ => Decision::Reject,
+    }
+}
+
+/// Decides on a frame candidate: the checks of a frame decode.
+fn decide_frame(data: &[u8]) -> Decision<'_> {
+    match check_frame(data) {
+        Ok(size) => match data.get(..size) {
+            Some(bytes) => Decision::Accept(size, Event::Frame(Frame::new_unchecked(bytes))),
+            None => Decision::Reject,
+        },
+        Err(error) if error.kind() == crate::ErrorKind::Truncated => Decision::NeedMore,
+        Err(_) => Decision::Reject,
     }
 }
 
 /// Decides on a sentence candidate: it runs to the first LF within the longest sentence.
 fn decide_sentence(data: &[u8]) -> Decision<'_> {
     let window = data.get(..MAX_SENTENCE_LENGTH).unwrap_or(data);
-    match window.iter().position(|byte| *byte == b'\n') {
+    match find_byte(window, b'\n') {
         Some(lf) => {
+            // The first LF ends the candidate, so the only CR LF it can hold is its last two
+            // bytes: what `PahrSentence::parse` checks before the rest.
             let raw = window.get(..=lf).unwrap_or(window);
-            match PahrSentence::parse(raw) {
+            if !raw.starts_with(PREFIX) || raw.get(lf.wrapping_sub(1)) != Some(&b'\r') {
+                return Decision::Reject;
+            }
+            match parse_body(raw) {
                 Ok(sentence) => Decision::Accept(raw.len(), Event::Sentence(raw, sentence)),
                 Err(_) => Decision::Reject,
             }
@@ -178,6 +188,29 @@ fn decide_sentence(data: &[u8]) -> Decision<'_> {
             }
         }
     }
+}
+
+/// The index of the first `byte` in `data`, looked for eight bytes at a time.
+pub(crate) fn find_byte(data: &[u8], byte: u8) -> Option<usize> {
+    const ONES: u64 = u64::from_ne_bytes([0x01; 8]);
+    const HIGHS: u64 = u64::from_ne_bytes([0x80; 8]);
+    let pattern = ONES * u64::from(byte);
+    let mut words = data.chunks_exact(8);
+    let mut at = 0;
+    for word in words.by_ref() {
+        let word = u64::from_le_bytes(word.try_into().unwrap_or([0; 8])) ^ pattern;
+        // A zero byte of `word` is a match; the lowest flagged byte is always a true one.
+        let found = word.wrapping_sub(ONES) & !word & HIGHS;
+        if found != 0 {
+            return Some(at + (found.trailing_zeros() / 8) as usize);
+        }
+        at += 8;
+    }
+    words
+        .remainder()
+        .iter()
+        .position(|candidate| *candidate == byte)
+        .map(|index| at + index)
 }
 
 /// The index of the first byte of `data` that may start a message, or its length.

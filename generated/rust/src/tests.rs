@@ -9,7 +9,7 @@ use crate::error::ErrorKind;
 use crate::frame::{self, checksum, Frame, FrameRepr, MessageType};
 use crate::nmea::PahrSentence;
 use crate::payload::{AnyPayload, PayloadKind, Value};
-use crate::stream::StreamDecoder;
+use crate::stream::{find_byte, StreamDecoder};
 
 /// Builds a frame of `payload` into an array.
 fn frame_of(message_type: MessageType, payload: &[u8]) -> ([u8; frame::MAX_FRAME_SIZE], usize) {
@@ -265,4 +265,31 @@ fn stream_decoder_finds_messages_byte_by_byte() {
         whole as u64 * (frame::OVERHEAD as u64 + 1) + decoder.discarded(),
         n as u64
     );
+}
+
+#[test]
+fn word_scan_finds_the_first_byte_at_every_position() {
+    // Neighbours that differ from the byte by one bit or by a borrow must not match.
+    for byte in [b'\n', 0x00, 0x80, 0xFF] {
+        for len in 0..40 {
+            for at in 0..=len {
+                let mut data = [byte ^ 0x01; 40];
+                for (index, slot) in data.iter_mut().enumerate().take(len) {
+                    *slot = if index % 3 == 0 {
+                        byte.wrapping_add(1)
+                    } else {
+                        byte ^ 0x80
+                    };
+                }
+                if at < len {
+                    data[at] = byte;
+                    if at + 1 < len {
+                        data[at + 1] = byte;
+                    }
+                }
+                let expected = data[..len].iter().position(|candidate| *candidate == byte);
+                assert_eq!(find_byte(&data[..len], byte), expected, "{byte} {len} {at}");
+            }
+        }
+    }
 }
