@@ -25,6 +25,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import struct
 
+import device_oracle as d
 import oracle as o
 
 VECTORS_DIR = Path(__file__).resolve().parent.parent / "vectors"
@@ -1839,6 +1840,477 @@ def _soak(id_: str, count: int, *, seed: int, chunk_sizes: tuple[int, int], rule
     return _stream_vec(id_, chunks, note, compact=True, expect_events=intended, expect_discarded=garbage)
 
 
+# --- sessions ------------------------------------------------------------------------------------
+
+_CODES = {row.name: row.code for row in o.table_c1()}
+
+
+def cmd(name: str) -> d.Input:
+    """A command frame of Table C.1, by ICD name."""
+    return ("command", _CODES[name])
+
+
+def code(value: int) -> d.Input:
+    return ("command", value)
+
+
+def block(table: str) -> d.Input:
+    """A data message with a payload of the table's size (sizes as printed in the ICD tables)."""
+    return ("data", o.TABLES[table][1])
+
+
+def data(size: int) -> d.Input:
+    return ("data", size)
+
+
+def ev(name: str) -> d.Input:
+    return ("event", name)
+
+
+LOAD = block("ahrs_parameters_load")  # Table 6.9, 50 bytes
+CALIBRATION = block("calibration_parameters")  # Table 6.13, 22 bytes
+RUN = block("calibration_run_parameters")  # Table 6.16, 6 bytes
+ALIGNED = ev("alignment_done")
+ACCUMULATED = ev("accumulation_done")
+DUE = ev("output_due")
+TIMEOUT = ev("block_timeout")
+
+
+def _input_json(item: d.Input) -> dict[str, Any]:
+    kind, value = item
+    if kind == "command":
+        assert isinstance(value, int)
+        return {"command": f"0x{value:02X}"}
+    return {kind: value}
+
+
+def _input_label(item: d.Input) -> str:
+    kind, value = item
+    if kind == "command":
+        assert isinstance(value, int)
+        return f"0x{value:02X}"
+    return f"data-{value}" if kind == "data" else str(value)
+
+
+def _session_vec(
+    id_: str, items: list[d.Input], note: str, *, firmware: str | None = None, ends: str | None = None
+) -> Vector:
+    device = d.Device(firmware)
+    steps = device.run(items)
+    if ends is not None:  # the intended end of the flow, cross-checked against the oracle
+        assert device.state == ends, (id_, device.state, ends)
+    input_: dict[str, Any] = {} if firmware is None else {"firmware": firmware}
+    input_["events"] = [_input_json(item) for item in items]
+    return vec(id_, "session", input_, {"steps": [s.expect() for s in steps], "state": device.state}, note)
+
+
+def _describe(items: list[d.Input]) -> str:
+    device = d.Device()
+    return ", ".join(step.event for step in device.run(items)) or "power-up"
+
+
+def _single_steps() -> list[Vector]:
+    """Every input in every state: the shortest way there, then one input."""
+    out: list[Vector] = []
+    for state, path in d.reach().items():
+        for item in d.inputs():
+            device = d.Device()
+            device.run(path)
+            step = device.feed(item)
+            if d.react(state, step.event) is None:
+                outcome = f"{step.event} is ignored: no answer, no change (E33)"
+            else:
+                sent = " + ".join(step.send) or "nothing"
+                outcome = f"{step.event} goes to {step.state} and sends {sent}"
+            note = f"ICD {d.SOURCES[state]}; {state} (mode {d.MODES[state]}) by {_describe(path)}; then {outcome}"
+            out.append(_session_vec(f"step/{state}/{_input_label(item)}", [*path, item], note))
+    return out
+
+
+def _flows() -> list[Vector]:
+    out: list[Vector] = []
+
+    def flow(id_: str, items: list[d.Input], note: str, *, firmware: str | None = None, ends: str) -> None:
+        out.append(_session_vec(f"flow/{id_}", items, f"{ICD} {note}", firmware=firmware, ends=ends))
+
+    # Continuous and on-request output, every format.
+    for start in ("AHRScont1", "AHRScont2", "AHRScont3", "NMEAcont"):
+        table = "Table 6.7 $PAHR sentences" if start == "NMEAcont" else "Table 6.4/6.5/6.6 blocks"
+        flow(
+            f"continuous/{start}",
+            [cmd(start), DUE, cmd("GetDataReq"), ALIGNED, DUE, DUE, DUE, cmd("GetBIT"), cmd("GetDataReq"), cmd(start),
+             cmd("Stop"), DUE],
+            f"6.3.1, 6.3.3: {start} is acknowledged at once (E12), nothing is output during the initial alignment, "
+            f"then the Table 6.8 block and {table} at the update rate; GetDataReq (6.3.4) and GetBIT (6.3.11) are not "
+            "valid in continuous mode and a second start command is not either (6.3.5: Stop first), so they are "
+            "ignored (E33); Stop goes to idle without an answer (6.3.5, E14) and output ends",
+            ends=d.IDLE,
+        )
+    for start in ("AHRSreq1", "AHRSreq2", "AHRSreq3", "NMEAreq"):
+        table = "a Table 6.7 $PAHR sentence" if start == "NMEAreq" else "one Table 6.4/6.5/6.6 block"
+        flow(
+            f"on-request/{start}",
+            [cmd(start), cmd("GetDataReq"), cmd("GetBIT"), ALIGNED, cmd("GetDataReq"), cmd("GetDataReq"),
+             cmd("GetBIT"), DUE, cmd("GetDataReq"), cmd("Stop"), cmd("GetDataReq")],
+            f"6.3.2, 6.3.3: {start} is acknowledged at once (E12); GetDataReq and GetBIT during the initial alignment "
+            "are ignored (E39; 6.3.2: the AHRS goes to On Request mode after the alignment); then each GetDataReq "
+            f"gets {table} (6.3.4) and GetBIT the Table 6.12 block (6.3.11, E25); no timer output in this mode; after "
+            "Stop (6.3.5, E14) GetDataReq is ignored (6.3.4: valid after a request command only)",
+            ends=d.IDLE,
+        )
+
+    # 0xFE in every state, then GetVerFirmware to show where the device is.
+    for state, path in d.reach().items():
+        meaning = "ExitClb, acknowledged (6.4.4)" if d.MODES[state] == "calibration" else "Stop (6.3.5), no answer"
+        if state == d.SLEEP:
+            meaning = "Stop, which Sleep mode does not hear (6.3.8: only the command to exit Sleep)"
+        elif state == d.AWAITING_PARAMETERS:
+            meaning = "Stop, which abandons the awaited Table 6.9 block without an answer (E34)"
+        flow(
+            f"0xFE/{state}",
+            [*path, code(0xFE), cmd("GetVerFirmware")],
+            f"Table C.1 and E14: 0xFE is ExitClb in calibration mode and Stop in every other mode; in {state} "
+            f"(mode {d.MODES[state]}, reached by {_describe(path)}) it is {meaning}; GetVerFirmware then answers "
+            "only in idle (6.3.10)",
+            ends=d.SLEEP if state == d.SLEEP else d.IDLE,
+        )
+
+    # Codes not in Table C.1.
+    flow(
+        "unknown/idle",
+        [code(0x00), code(0xFF), code(0x81), code(0x2D), cmd("GetBIT")],
+        "codes 0x00, 0xFF, 0x81 and 0x2D are not in Table C.1: ignored (E33), the device still answers GetBIT (6.3.11)",
+        ends=d.IDLE,
+    )
+    flow(
+        "unknown/continuous",
+        [cmd("AHRScont1"), ALIGNED, code(0x81), DUE, code(0xFF), DUE],
+        "6.3.1; an unknown code in continuous mode is ignored (E33) and output goes on",
+        ends=d.CONTINUOUS,
+    )
+    flow(
+        "unknown/calibration",
+        [cmd("Start3DClb"), CALIBRATION, ALIGNED, ACCUMULATED, code(0x2D), cmd("AcceptClb")],
+        "6.4.1; an unknown code while the result waits for AcceptClb is ignored (E33); AcceptClb then saves (6.4.3)",
+        ends=d.IDLE,
+    )
+    for start, parameters in (("LoadAHRSPar", LOAD), ("Start3DClb", CALIBRATION), ("Start2D2TClb", CALIBRATION)):
+        flow(
+            f"unknown/instead-of-block/{start}",
+            [cmd(start), code(0xFF), parameters],
+            f"E34: after {start} a block of the expected size is acknowledged and \"anything else (no block, a "
+            "command, a data message of another size) abandons the command without an answer\": a command frame "
+            "with code 0xFF (not in Table C.1) is something else, so the command is abandoned and the block that "
+            "follows is a data message idle mode ignores (E33)",
+            ends=d.IDLE,
+        )
+    flow(
+        "unknown/instead-of-block/StartClbRun",
+        [cmd("Start2D2TClb"), CALIBRATION, cmd("StartClbRun"), code(0x00), RUN, cmd("FinishClb")],
+        "E34: after StartClbRun anything but its Table 6.16 block abandons it \"to between-runs\": a command frame "
+        "with code 0x00 (not in Table C.1) is something else; the block that follows is ignored there (E33) and "
+        "FinishClb still finishes (6.4.7, E37)",
+        ends=d.CALIBRATION_DECIDING,
+    )
+
+    # LoadAHRSPar and its block (6.3.6).
+    flow(
+        "load-parameters/block",
+        [cmd("LoadAHRSPar"), LOAD, cmd("ReadAHRSPar")],
+        "6.3.6: LoadAHRSPar gets no answer (E13), its Table 6.9 block (50 bytes) is acknowledged (E12) and the "
+        "device is in idle; ReadAHRSPar answers Table 6.10 (6.3.7)",
+        ends=d.IDLE,
+    )
+    flow(
+        "load-parameters/block-then-start",
+        [cmd("LoadAHRSPar"), LOAD, cmd("AHRScont3"), ALIGNED, DUE, cmd("Stop")],
+        "6.3.6 then 6.3.1: after the acknowledged block the device takes start commands",
+        ends=d.IDLE,
+    )
+    for size in (22, 6, 49, 51, 1):
+        flow(
+            f"load-parameters/wrong-size-{size}",
+            [cmd("LoadAHRSPar"), data(size), LOAD, cmd("ReadAHRSPar")],
+            f"E34: a data message of {size} bytes is not the 50-byte Table 6.9 block: LoadAHRSPar is abandoned without "
+            "an answer; the 50-byte message after it finds idle mode and is ignored (E33)",
+            ends=d.IDLE,
+        )
+    flow(
+        "load-parameters/command-instead",
+        [cmd("LoadAHRSPar"), cmd("ReadAHRSPar"), cmd("ReadAHRSPar")],
+        "E34: a command instead of the block abandons LoadAHRSPar and is not executed itself (no answer); the next "
+        "ReadAHRSPar is answered (6.3.7)",
+        ends=d.IDLE,
+    )
+    flow(
+        "load-parameters/start-command-instead",
+        [cmd("LoadAHRSPar"), cmd("AHRScont1"), DUE, ALIGNED],
+        "E34: AHRScont1 instead of the block abandons LoadAHRSPar and does not start output (no ack, no alignment)",
+        ends=d.IDLE,
+    )
+    flow(
+        "load-parameters/twice",
+        [cmd("LoadAHRSPar"), cmd("LoadAHRSPar"), LOAD],
+        "E34: a second LoadAHRSPar instead of the block abandons the first and is not executed; the block then "
+        "finds idle mode and is ignored (E33)",
+        ends=d.IDLE,
+    )
+    flow(
+        "load-parameters/timeout",
+        [cmd("LoadAHRSPar"), TIMEOUT, LOAD, cmd("GetVerFirmware")],
+        "E34: no block within 1 s abandons LoadAHRSPar without an answer; a late block is ignored in idle (E33)",
+        ends=d.IDLE,
+    )
+
+    # 3D and 2D calibration: one run (6.4.1, 6.4.8).
+    for start in ("Start3DClb", "Start2DClb"):
+        section = "6.4.1" if start == "Start3DClb" else "6.4.8"
+        for stop, stop_name in ((ACCUMULATED, "accumulation-done"), (cmd("StopClbRun"), "StopClbRun")):
+            how = "at the set time" if stop == ACCUMULATED else "early on StopClbRun (6.4.2)"
+            for decision in ("AcceptClb", "ExitClb"):
+                then = "AcceptClb saves it (6.4.3)" if decision == "AcceptClb" else "ExitClb drops it (6.4.4)"
+                flow(
+                    f"calibration/{start}/{stop_name}/{decision}",
+                    [cmd(start), CALIBRATION, cmd("StopClbRun"), cmd("AcceptClb"), ALIGNED, cmd("AcceptClb"), DUE,
+                     stop, cmd("StopClbRun"), cmd(decision), cmd("GetClbRes")],
+                    f"{section}: {start} gets no answer (E13), its Table 6.13 block (22 bytes) is acknowledged, the "
+                    f"initial alignment ends with the Table 6.8 block, accumulation ends {how} with the Table 6.14 "
+                    f"result (E38: at once), and {then}, acknowledged, to idle; StopClbRun before accumulation or "
+                    "after the result, AcceptClb before the result and the output timer are ignored (E33); GetClbRes "
+                    "answers Table 6.17 in idle (6.4.10)",
+                    ends=d.IDLE,
+                )
+    for start in ("Start3DClb", "Start2DClb"):
+        flow(
+            f"calibration/{start}/block-timeout",
+            [cmd(start), TIMEOUT, CALIBRATION],
+            f"E34: no Table 6.13 block within 1 s of {start}: abandoned without an answer; a late block is ignored",
+            ends=d.IDLE,
+        )
+        flow(
+            f"calibration/{start}/wrong-block",
+            [cmd(start), LOAD, ALIGNED],
+            f"E34: a 50-byte message is not the 22-byte Table 6.13 block: {start} is abandoned, nothing aligns",
+            ends=d.IDLE,
+        )
+        flow(
+            f"calibration/{start}/exit-instead-of-block",
+            [cmd(start), cmd("ExitClb"), CALIBRATION],
+            f"E34: \"ExitClb is still acknowledged in calibration\": ExitClb instead of the block after {start} is "
+            "answered (6.4.4) and goes to idle; the late block is ignored",
+            ends=d.IDLE,
+        )
+        flow(
+            f"calibration/{start}/exit-during-alignment",
+            [cmd(start), CALIBRATION, cmd("ExitClb"), ALIGNED],
+            "6.4.4: ExitClb during the initial alignment is acknowledged and goes to idle; no alignment block follows",
+            ends=d.IDLE,
+        )
+        flow(
+            f"calibration/{start}/exit-during-accumulation",
+            [cmd(start), CALIBRATION, ALIGNED, cmd("ExitClb"), ACCUMULATED],
+            "6.4.4: ExitClb during accumulation is acknowledged, nothing is computed: no result follows",
+            ends=d.IDLE,
+        )
+
+    # 2D-2T calibration: several runs (6.4.5 - 6.4.7).
+    setup = [cmd("Start2D2TClb"), CALIBRATION]
+    run_full = [cmd("StartClbRun"), RUN, ALIGNED, ACCUMULATED]
+    run_stopped = [cmd("StartClbRun"), RUN, ALIGNED, cmd("StopClbRun")]
+    flow(
+        "2d2t/three-runs-finish-accept",
+        [*setup, ALIGNED, ACCUMULATED, *run_full, *run_stopped, *run_full, cmd("FinishClb"), cmd("AcceptClb")],
+        "6.4.5, 6.4.6: Start2D2TClb's Table 6.13 block is acknowledged and the device waits for the first "
+        "StartClbRun with no alignment (E36: alignment and accumulation timers are ignored there); each StartClbRun "
+        "gets no answer (E13), its Table 6.16 block (6 bytes) is acknowledged, the run aligns (Table 6.8) and "
+        "accumulates until the set time or StopClbRun (6.4.2), then sends its Table 6.15 result; FinishClb sends "
+        "the Table 6.14 result (6.4.7) and AcceptClb saves it (6.4.3)",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/two-runs-finish-exit",
+        [*setup, *run_full, *run_full, cmd("FinishClb"), cmd("StartClbRun"), cmd("ExitClb")],
+        "6.4.5, 6.4.7: after FinishClb's Table 6.14 result only AcceptClb or ExitClb are heard (StartClbRun is "
+        "ignored, E33); ExitClb leaves without saving, acknowledged (6.4.4)",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/exit-between-runs",
+        [*setup, *run_full, cmd("ExitClb"), cmd("StartClbRun"), cmd("FinishClb")],
+        "6.4.5 choice 3: ExitClb between runs ends the calibration, acknowledged (6.4.4); StartClbRun and FinishClb "
+        "are then ignored in idle (E33)",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/exit-during-run",
+        [*setup, cmd("StartClbRun"), RUN, ALIGNED, cmd("ExitClb"), ACCUMULATED],
+        "6.4.4: ExitClb during a run's accumulation is acknowledged; no run result follows",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/finish-without-runs",
+        [*setup, cmd("FinishClb"), cmd("AcceptClb")],
+        "E37: \"FinishClb is accepted between runs at any time\", even before any run; the Table 6.14 result reports "
+        "the failure (6.4.5: two successful runs are needed)",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/commands-between-runs",
+        [*setup, *run_full, cmd("AcceptClb"), cmd("StopClbRun"), cmd("GetDataReq"), cmd("Start2D2TClb"), ACCUMULATED,
+         cmd("FinishClb")],
+        "6.4.5: between runs the device waits for StartClbRun, FinishClb or ExitClb; AcceptClb (no result yet), "
+        "StopClbRun (no run to stop, 6.4.2, current firmware), GetDataReq, a new Start2D2TClb and a timer are "
+        "ignored (E33)",
+        ends=d.CALIBRATION_DECIDING,
+    )
+    flow(
+        "2d2t/run-block-timeout",
+        [*setup, cmd("StartClbRun"), TIMEOUT, RUN, *run_full, cmd("FinishClb"), cmd("ExitClb")],
+        "E34: no Table 6.16 block within 1 s of StartClbRun abandons it \"to between-runs\" without an answer; the "
+        "late block is ignored there and a new StartClbRun with its block runs",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/run-block-wrong-size",
+        [*setup, cmd("StartClbRun"), CALIBRATION, ALIGNED, *run_full, cmd("FinishClb"), cmd("AcceptClb")],
+        "E34: a 22-byte message is not the 6-byte Table 6.16 block: StartClbRun is abandoned to between runs, "
+        "nothing aligns",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/run-command-instead-of-block",
+        [*setup, cmd("StartClbRun"), cmd("FinishClb"), cmd("FinishClb"), cmd("AcceptClb")],
+        "E34: FinishClb instead of the Table 6.16 block abandons StartClbRun and is not executed itself; the next "
+        "FinishClb finishes (6.4.7)",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/run-exit-instead-of-block",
+        [*setup, cmd("StartClbRun"), cmd("ExitClb"), RUN],
+        "E34: ExitClb instead of the Table 6.16 block is still acknowledged (6.4.4) and goes to idle",
+        ends=d.IDLE,
+    )
+    flow(
+        "2d2t/first-block-timeout",
+        [cmd("Start2D2TClb"), TIMEOUT, cmd("StartClbRun")],
+        "E34: no Table 6.13 block within 1 s of Start2D2TClb: abandoned to idle, where StartClbRun is ignored (E33)",
+        ends=d.IDLE,
+    )
+
+    # The former StopClb (0x20) of firmware before 4.9.9.0 (6.4.5 note, 6.4.7 important note, E29).
+    legacy = [*setup, *run_stopped, *run_full, cmd("StopClbRun"), cmd("AcceptClb")]
+    flow(
+        "stopclb/4.9.8.0-finishes-2d2t",
+        legacy,
+        "6.4.5 note and 6.4.7: \"In AHRS firmware before v.4.9.9.0 to finish the 2D-2T calibration the StopClb "
+        "command (code 0x20) was used instead of FinishClb\"; with firmware 4.9.8.0 0x20 still stops a run early "
+        "(revision 1.5: it did both) and, between runs, finishes the calibration with the Table 6.14 result (E29)",
+        firmware="4.9.8.0",
+        ends=d.IDLE,
+    )
+    for firmware, why in ((None, "current firmware"), ("4.9.9.0", "firmware 4.9.9.0, the first with FinishClb"),
+                          ("4.10.0.0", "firmware 4.10.0.0 (versions compare part by part as numbers: 4.10 > 4.9)")):
+        flow(
+            f"stopclb/{firmware or 'current'}-ignored-between-runs",
+            [*legacy, cmd("FinishClb"), cmd("AcceptClb")],
+            f"6.4.2, 6.4.7, E29: with {why} 0x20 (StopClbRun) only stops a run in progress; between runs it is "
+            "ignored (E33) and so is AcceptClb before a result; FinishClb finishes",
+            firmware=firmware,
+            ends=d.IDLE,
+        )
+    flow(
+        "stopclb/4.9.8.0-finishes-without-runs",
+        [*setup, cmd("StopClbRun"), cmd("ExitClb")],
+        "6.4.5 note, E29, E37: with firmware 4.9.8.0 StopClb right after the Start2D2TClb block finishes the 2D-2T "
+        "calibration like FinishClb, before any run",
+        firmware="4.9.8.0",
+        ends=d.IDLE,
+    )
+    flow(
+        "stopclb/4.9.8.0-3d-stops-accumulation",
+        [cmd("Start3DClb"), CALIBRATION, cmd("StopClbRun"), ALIGNED, cmd("StopClbRun"), cmd("StopClbRun"),
+         cmd("AcceptClb")],
+        "6.4.1, 6.4.2, E29: with firmware 4.9.8.0 0x20 stops 3D accumulation early as StopClbRun does; before "
+        "accumulation and after the result it is ignored (E33)",
+        firmware="4.9.8.0",
+        ends=d.IDLE,
+    )
+    flow(
+        "stopclb/4.9.8.0-idle-ignored",
+        [cmd("StopClbRun"), cmd("FinishClb"), cmd("GetBIT")],
+        "E29, E33: with firmware 4.9.8.0 StopClb and FinishClb outside a calibration are ignored",
+        firmware="4.9.8.0",
+        ends=d.IDLE,
+    )
+    flow(
+        "stopclb/4.9.8.0-finishclb",
+        [*setup, *run_full, cmd("FinishClb"), cmd("AcceptClb")],
+        "E9: \"the spec does not gate commands by firmware version except StopClb (E29)\": FinishClb (0x2C) finishes a "
+        "2D-2T calibration with firmware 4.9.8.0 too (6.4.7 says older firmware used StopClb instead; the decision "
+        "is not to refuse FinishClb there)",
+        firmware="4.9.8.0",
+        ends=d.IDLE,
+    )
+
+    # Sleep (6.3.8, 6.3.9, Table 6.19, E35).
+    flow(
+        "sleep/from-idle",
+        [cmd("LowPowerOff"), cmd("LowPowerOn"), cmd("AHRScont1"), cmd("GetDataReq"), cmd("GetBIT"), cmd("ReadAHRSPar"),
+         cmd("GetVerFirmware"), cmd("LoadAHRSPar"), LOAD, cmd("Start3DClb"), cmd("ClearClb"), cmd("LowPowerOn"),
+         code(0x00), DUE, ALIGNED, ACCUMULATED, TIMEOUT, cmd("LowPowerOff"), cmd("GetVerFirmware")],
+        "6.3.9: LowPowerOff in idle is ignored (E33); 6.3.8: LowPowerOn from idle sleeps without an answer (E35); "
+        "in Sleep \"its microprocessor only waits command ... to exit from the Sleep mode\" (6.1 (5)): every other "
+        "command (0xFE: see flow/0xFE/sleep), data and timer is ignored; LowPowerOff wakes to idle without an answer "
+        "(6.3.9), where GetVerFirmware is answered (6.3.10)",
+        ends=d.IDLE,
+    )
+    for start in ("AHRScont2", "NMEAcont"):
+        what = "$PAHR sentence (Table 6.7)" if start == "NMEAcont" else "Table 6.5 block"
+        flow(
+            f"sleep/from-continuous/{start}",
+            [cmd(start), ALIGNED, DUE, cmd("LowPowerOn"), DUE, cmd("LowPowerOff"), DUE, cmd("GetBIT")],
+            f"Table 6.19: USW bits 7 and 15 are 1 \"in the last data block sent by the AHRS before it went to Sleep "
+            f"mode\"; E35: LowPowerOn in continuous mode sends one last {what} with those bits, then sleeps; no "
+            "output in Sleep or after waking to idle (6.3.9)",
+            ends=d.IDLE,
+        )
+    flow(
+        "sleep/from-on-request",
+        [cmd("AHRSreq1"), ALIGNED, cmd("GetDataReq"), cmd("LowPowerOn"), cmd("GetDataReq"), cmd("LowPowerOff"),
+         cmd("GetDataReq")],
+        "E35: \"from idle and on-request mode it sleeps without a block\"; GetDataReq is ignored in Sleep and in "
+        "idle after waking (6.3.4)",
+        ends=d.IDLE,
+    )
+    flow(
+        "sleep/during-alignment",
+        [cmd("AHRScont1"), cmd("LowPowerOn"), cmd("AHRSreq1"), cmd("LowPowerOn"), ALIGNED, cmd("LowPowerOn")],
+        "6.3.1, 6.3.2: the AHRS goes to the Continuous or On Request operating mode after the initial alignment, "
+        "so LowPowerOn during the alignment is ignored (E33; E35: valid in idle, continuous and on-request mode); "
+        "a start command there is ignored too (6.3.5); after the alignment block LowPowerOn sends the last output "
+        "block with the sleep bits set (E35, Table 6.19)",
+        ends=d.SLEEP,
+    )
+    flow(
+        "sleep/in-calibration",
+        [cmd("Start3DClb"), CALIBRATION, cmd("LowPowerOn"), ALIGNED, cmd("LowPowerOn"), cmd("ExitClb")],
+        "E35: LowPowerOn is valid in idle, continuous and on-request mode only: ignored in calibration (E33)",
+        ends=d.IDLE,
+    )
+    flow(
+        "sleep/instead-of-block",
+        [cmd("LoadAHRSPar"), cmd("LowPowerOn"), cmd("LowPowerOn"), cmd("LowPowerOff")],
+        "E34: LowPowerOn instead of the Table 6.9 block abandons LoadAHRSPar and is not executed; the next "
+        "LowPowerOn sleeps (6.3.8) and LowPowerOff wakes (6.3.9)",
+        ends=d.IDLE,
+    )
+    return out
+
+
+def suite_sessions() -> list[Vector]:
+    return _single_steps() + _flows()
+
+
 # --- output --------------------------------------------------------------------------------------
 
 SUITES: list[tuple[str, str, Callable[[], list[Vector]]]] = [
@@ -1853,6 +2325,12 @@ SUITES: list[tuple[str, str, Callable[[], list[Vector]]]] = [
     ("frames", f"{ICD}, Table 6.2; spec/README.md (frame decode, frame encode); errata E6, E17", suite_frames),
     ("streams", "spec/README.md (stream decoder: leftmost valid message)", suite_streams),
     ("nmea", f"{ICD}, Table 6.7; spec/README.md ($PAHR sentences); erratum E16", suite_nmea),
+    (
+        "sessions",
+        f"{ICD}, sections 6, 6.1, 6.3, 6.4, Table 6.19; errata E9, E12-E14, E25, E29, E33-E39; spec/README.md "
+        "(the device state machine); expected steps by conformance/tools/device_oracle.py",
+        suite_sessions,
+    ),
 ]
 
 
