@@ -274,6 +274,44 @@ def test_unreadable_suites_exit_two(tmp_path: Path) -> None:
 def test_python_runner_answers_in_protocol_forms() -> None:
     assert RUNNER.answer("checksum 00000700FE") == "ok 261"
     assert RUNNER.answer("frame_decode AA55") == "error truncated 2 -"
-    assert RUNNER.answer("session x") == "unsupported"
+    assert RUNNER.answer("teleport x") == "unsupported"
     assert RUNNER.answer("payload_encode acknowledgement - checksum=65536") == "error out_of_range 0 checksum"
     assert RUNNER.answer("stream -") == "ok discarded=0 events=-"
+
+
+def test_python_runner_walks_the_state_machine() -> None:
+    assert RUNNER.answer("session - C:80,E:output_due,E:alignment_done,E:output_due,C:FE") == (
+        "ok steps=AHRScont1>aligning_continuous>ack,output_due>aligning_continuous>-,"
+        "alignment_done>continuous>initial_alignment,output_due>continuous>output,Stop>idle>-")
+    # A data message is the parameter block only in a state expecting a block of its size.
+    assert RUNNER.answer("session - D:50,C:40,D:50,C:40,D:22") == (
+        "ok steps=other_message>idle>-,LoadAHRSPar>awaiting_parameters>-,parameter_block>idle>ack,"
+        "LoadAHRSPar>awaiting_parameters>-,other_message>idle>-")
+    # 0xFE is ExitClb in calibration (acknowledged); firmware before 4.9.9.0 finishes 2D-2T on 0x20.
+    assert RUNNER.answer("session 4.9.8.0 C:22,D:22,C:20,C:FE") == (
+        "ok steps=Start2D2TClb>runs_awaiting_parameters>-,parameter_block>runs_ready>ack,"
+        "StopClbRun>calibration_deciding>calibration_result,ExitClb>idle>ack")
+    assert RUNNER.answer("session - C:22,D:22,C:20") == (
+        "ok steps=Start2D2TClb>runs_awaiting_parameters>-,parameter_block>runs_ready>ack,StopClbRun>runs_ready>-")
+    assert RUNNER.answer("session - C:00") == "ok steps=unknown>idle>-"
+
+
+def test_session_requests_and_comparison() -> None:
+    v = vector("a", "session", {"firmware": "4.9.8.0", "events": [
+        {"command": "0xFE"}, {"command": 32}, {"data": 6}, {"event": "block_timeout"}]},
+        {"steps": [{"event": "Stop"}, {"state": "idle"}, {}, {"send": []}], "state": "idle"})
+    assert H.request(v) == "session 4.9.8.0 C:FE,C:20,D:6,E:block_timeout"
+    assert H.request(vector("a", "session", {"events": [{"command": "fe"}]}, {})) == "session - C:FE"
+    good = "ok steps=Stop>idle>-,StopClbRun>idle>-,other_message>idle>-,block_timeout>idle>-"
+    assert check(v, good) is None
+    assert check(v, good.replace("Stop>", "ExitClb>", 1)) == "step 0: event ExitClb, expected Stop"
+    assert check(v, good.replace("block_timeout>idle>-", "block_timeout>idle>ack")) == (
+        "step 3: send ['ack'], expected []")
+    assert check(v, good.replace(",block_timeout>idle>-", "")) == "3 steps, expected 4"
+    assert check(v, good.replace("block_timeout>idle", "block_timeout>sleep")) == "final state sleep, expected idle"
+    assert check(v, "ok steps=Stop>idle") == "step 'Stop>idle' is not EVENT>STATE>SENDS"
+    bad: dict[str, Any]
+    for bad in ({"events": []}, {"events": [{"command": 256}]}, {"events": [{"teleport": 1}]},
+                {"firmware": "new", "events": [{"data": 1}]}, {"events": [{"command": 1, "data": 2}]}):
+        with pytest.raises(H.SuiteError):
+            H.request(vector("a", "session", bad, {}))

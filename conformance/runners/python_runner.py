@@ -2,7 +2,7 @@
 
 The line protocol of conformance/README.md, nothing else: parse a request, call the binding,
 format its answer or its IlahrsError. All test logic lives in conformance/harness.py.
-Implements every kind except `session`.
+Implements every kind; `session` walks the binding's generated state machine (ilahrs.statemachine).
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent.parent / "generated" / "python"))
 
 import ilahrs
+from ilahrs import statemachine
 
 
 def read_hex(token: str) -> bytes:
@@ -142,11 +143,39 @@ def stream(args: list[str]) -> str:
     return f"ok discarded={decoder.discarded} events={','.join(tokens) or '-'}"
 
 
+def session_event(token: str, state: str) -> str:
+    """`C:HH`, `D:N` or `E:NAME` as the table's event in `state`: a code is the command it means
+    there (`unknown` if none), a data message the parameter block when the state expects a block
+    of that size."""
+    kind, _, value = token.partition(":")
+    if kind == "C":
+        return statemachine.command_event(int(value, 16), state) or "unknown"
+    if kind == "D":
+        expects = statemachine.STATES[state].expects
+        size_fits = expects is not None and int(value) == ilahrs.PAYLOADS[expects].SIZE
+        return statemachine.PARAMETER_BLOCK if size_fits else statemachine.OTHER_MESSAGE
+    return value
+
+
+def session(args: list[str]) -> str:
+    firmware = None if args[0] == "-" else args[0]
+    state = statemachine.INITIAL
+    steps = []
+    for token in args[1].split(","):
+        event = session_event(token, state)
+        transition = statemachine.lookup(state, event, firmware)
+        sends: tuple[str, ...] = ()
+        if transition is not None:
+            state, sends = transition.to, transition.send
+        steps.append(f"{event}>{state}>{'+'.join(sends) or '-'}")
+    return f"ok steps={','.join(steps)}"
+
+
 HANDLERS: dict[str, Callable[[list[str]], str]] = {
     "checksum": checksum, "frame_decode": frame_decode, "frame_encode": frame_encode,
     "command_encode": command_encode, "command_decode": command_decode, "ack": ack,
     "payload_decode": payload_decode, "payload_encode": payload_encode,
-    "nmea_decode": nmea_decode, "nmea_encode": nmea_encode, "stream": stream,
+    "nmea_decode": nmea_decode, "nmea_encode": nmea_encode, "stream": stream, "session": session,
 }
 
 
