@@ -97,6 +97,21 @@ $(C_OUT)/san/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
+# The size-optimized variant (the default on 32-bit targets), tested on this host too.
+C_SMALL := -DILAHRS_OPTIMIZE_SIZE=1
+
+$(C_OUT)/san/test_ilahrs_small: tests/c/test_ilahrs.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/fuzz/fuzz_stream_small: fuzz/c/fuzz_stream.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_FUZZ) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
+
 $(C_OUT)/fuzz/%: fuzz/c/%.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_FUZZ) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
@@ -111,14 +126,17 @@ $(C_OUT)/corpus/.stamp: $(C_OUT)/capture
 	$(C_OUT)/capture --corpus $(C_OUT)/corpus --count 64 --size 512
 	@touch $@
 
-C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers
+C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/fuzz_stream_small
 
-test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/ilahrs_conformance \
+test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/test_ilahrs_small \
+        $(C_OUT)/san/ilahrs_conformance $(C_OUT)/san/ilahrs_conformance_small \
         $(C_FUZZERS) $(C_OUT)/corpus/.stamp $(C_OUT)/capture $(C_OUT)/decode_capture
 	$(C_OUT)/san/test_ilahrs_gcc
 	$(C_OUT)/san/test_ilahrs_clang 0x5EED
+	$(C_OUT)/san/test_ilahrs_small 0xC0DE
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance" --name c-asan-ubsan
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance --bytewise" --name c-bytewise
+	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance_small" --name c-optimize-size
 	@for f in $(C_FUZZERS); do \
 		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
 		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \

@@ -10,6 +10,20 @@
 
 #include <string.h>
 
+/*
+ * Speed or size. 64-bit hosts get word-at-a-time checksums, a zero-copy path through the
+ * stream decoder for messages inside the caller's chunk and a fast path for sentences in the
+ * canonical layout; 32-bit targets get the smallest code. Both give the same answers. Define
+ * ILAHRS_OPTIMIZE_SIZE to 1 or 0 to choose.
+ */
+#ifndef ILAHRS_OPTIMIZE_SIZE
+#if SIZE_MAX > 0xFFFFFFFFu
+#define ILAHRS_OPTIMIZE_SIZE 0
+#else
+#define ILAHRS_OPTIMIZE_SIZE 1
+#endif
+#endif
+
 /* ---- Tables --------------------------------------------------------------------------- */
 
 /* Names, one pool per kind of name (NUL-separated); tables hold offsets into them. */
@@ -704,19 +718,33 @@ static inline uint32_t sum_bytes(const uint8_t *data, size_t len)
 {
     uint32_t sum = 0;
     size_t i = 0;
-#if SIZE_MAX > 0xFFFFFFFFu
-    /* 64-bit hosts: eight bytes at a time as four 16-bit lanes. A lane gains at most 2 * 255
-     * per word, so 128 words (1 KiB) cannot overflow it before it is folded into `sum`. */
-    while (len - i >= 8) {
-        uint64_t lanes = 0;
-        size_t stop = len - i >= 1024 ? i + 1024 : i + ((len - i) & ~(size_t)7);
-        for (; i < stop; i += 8) {
-            uint64_t word;
-            memcpy(&word, data + i, 8);
-            lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
+#if !ILAHRS_OPTIMIZE_SIZE
+    /* Eight bytes at a time as four 16-bit lanes. A lane gains at most 2 * 255 per word, so
+     * 128 words (1 KiB) cannot overflow it before it is folded into `sum`. The last, partial
+     * word is the eight bytes that end the data, less the ones already counted. */
+    if (len >= 8) {
+        const uint16_t one = 1;
+        uint8_t little;
+        memcpy(&little, &one, 1);
+        while (i < len) {
+            uint64_t lanes = 0;
+            size_t stop = len - i >= 1024 ? i + 1024 : i + ((len - i) & ~(size_t)7);
+            for (; i < stop; i += 8) {
+                uint64_t word;
+                memcpy(&word, data + i, 8);
+                lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
+            }
+            if (len - i < 8 && i < len) {
+                uint64_t word;
+                unsigned drop = 8u * (unsigned)(8 - (len - i));
+                memcpy(&word, data + len - 8, 8);
+                word = little ? word >> drop : word << drop;
+                lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
+                i = len;
+            }
+            lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
+            sum += (uint32_t)lanes + (uint32_t)(lanes >> 32);
         }
-        lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
-        sum += (uint32_t)lanes + (uint32_t)(lanes >> 32);
     }
 #endif
     for (; i < len; i++) {
@@ -1420,12 +1448,12 @@ static int hex_value(uint8_t c)
     return -1;
 }
 
-/* XOR of n bytes (eight at a time on 64-bit hosts). */
+/* XOR of n bytes (eight at a time unless optimizing for size). */
 static uint8_t xor_bytes(const uint8_t *p, size_t n)
 {
     uint8_t x = 0;
     size_t i = 0;
-#if SIZE_MAX > 0xFFFFFFFFu
+#if !ILAHRS_OPTIMIZE_SIZE
     uint64_t lanes = 0;
     for (; i + 8 <= n; i += 8) {
         uint64_t word;
@@ -1443,6 +1471,12 @@ static uint8_t xor_bytes(const uint8_t *p, size_t n)
     return x;
 }
 
+/* m * base + digit, saturating at UINT32_MAX: far above every range. */
+static uint32_t pahr_digit(uint32_t m, uint32_t base, uint32_t digit)
+{
+    return m > (0xFFFFFFFFu - 15u) / base ? 0xFFFFFFFFu : m * base + digit;
+}
+
 /*
  * Field k starting at p[*at]: its value, or false if it breaks the grammar. Leaves *at on the
  * character after the field (a separator, or the star). p[star] is '*', which ends every field.
@@ -1451,35 +1485,33 @@ static bool pahr_value(const uint8_t *p, size_t *at, size_t star, size_t k, int6
 {
     size_t i = *at;
     size_t first;
-    uint64_t magnitude = 0;
+    uint32_t magnitude = 0;
     bool ok;
+    bool negative = false;
     if (ilahrs_pahr_fields[k].hex) {
         int h;
         for (first = i; (h = hex_value(p[i])) >= 0; i++) {
-            magnitude = magnitude < PAHR_HUGE ? magnitude * 16u + (uint64_t)h : PAHR_HUGE;
+            magnitude = pahr_digit(magnitude, 16u, (uint32_t)h);
         }
         ok = i > first && i - first <= ilahrs_pahr_fields[k].width;
-        *value = (int64_t)magnitude;
     } else {
-        bool negative = p[i] == '-';
-        size_t decimals = ilahrs_pahr_fields[k].decimals;
         size_t fraction = 0;
+        negative = p[i] == '-';
         i += negative;
         for (first = i; (unsigned)(p[i] - '0') <= 9u; i++) {
-            magnitude = magnitude < PAHR_HUGE ? magnitude * 10u + (uint64_t)(p[i] - '0') : PAHR_HUGE;
+            magnitude = pahr_digit(magnitude, 10u, (uint32_t)(p[i] - '0'));
         }
         ok = i > first;
         if (p[i] == '.') {
             for (first = ++i; (unsigned)(p[i] - '0') <= 9u; i++) {
-                magnitude = magnitude < PAHR_HUGE ? magnitude * 10u + (uint64_t)(p[i] - '0') : PAHR_HUGE;
+                magnitude = pahr_digit(magnitude, 10u, (uint32_t)(p[i] - '0'));
             }
             fraction = i - first;
-            ok = ok && fraction >= 1 && fraction <= decimals;
+            ok = ok && fraction >= 1 && fraction <= ilahrs_pahr_fields[k].decimals;
         }
-        for (; fraction < decimals && magnitude < PAHR_HUGE; fraction++) {
-            magnitude *= 10u;
+        for (; fraction < ilahrs_pahr_fields[k].decimals; fraction++) {
+            magnitude = pahr_digit(magnitude, 10u, 0);
         }
-        *value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
     }
     if (i < star && p[i] != PAHR_SEPARATOR) {
         ok = false;
@@ -1488,14 +1520,99 @@ static bool pahr_value(const uint8_t *p, size_t *at, size_t star, size_t k, int6
         }
     }
     *at = i;
+    *value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
     return ok;
 }
 
+#if !ILAHRS_OPTIMIZE_SIZE
+/*
+ * Fast path for sentences in the layout the builders write (E16: every field at its template
+ * width, so one length and fixed field positions): fixed-length digit runs without a branch per
+ * character. It accepts only what the general path below accepts, with the same values; on
+ * anything else it steps aside and the general path decides and names the error.
+ */
+#define PAHR_CANONICAL_LENGTH 48u
+
+static inline int64_t canonical_decimal(const uint8_t *p, size_t width, size_t decimals, unsigned *ok)
+{
+    unsigned negative = p[0] == '-';
+    unsigned good = 1;
+    uint32_t value = 0;
+    size_t j;
+    for (j = 0; j < width; j++) {
+        uint32_t digit = (uint32_t)p[j] - '0';
+        unsigned sign = j == 0 ? negative : 0u;
+        good &= (unsigned)(digit <= 9u) | sign;
+        value = value * 10u + (sign ? 0u : digit);
+    }
+    if (decimals > 0) {
+        good &= (unsigned)(p[width] == '.');
+        for (j = 0; j < decimals; j++) {
+            uint32_t digit = (uint32_t)p[width + 1 + j] - '0';
+            good &= (unsigned)(digit <= 9u);
+            value = value * 10u + digit;
+        }
+    }
+    *ok &= good;
+    return negative ? -(int64_t)value : (int64_t)value;
+}
+
+static inline int64_t canonical_hex(const uint8_t *p, size_t width, unsigned *ok)
+{
+    unsigned good = 1;
+    uint32_t value = 0;
+    size_t j;
+    for (j = 0; j < width; j++) {
+        uint32_t digit = (uint32_t)p[j] - '0';
+        uint32_t letter = ((uint32_t)p[j] | 0x20u) - 'a';
+        unsigned is_digit = digit <= 9u;
+        good &= is_digit | (unsigned)(letter <= 5u);
+        value = value * 16u + (is_digit ? digit : letter + 10u);
+    }
+    *ok &= good;
+    return (int64_t)value;
+}
+
+static bool pahr_canonical(const uint8_t *p, uint8_t checksum, ilahrs_pahr_t *out)
+{
+    unsigned ok = xor_bytes(p + 1, 43u - 1u) == checksum;
+    int64_t v0 = canonical_decimal(p + 6, 4, 2, &ok);
+    int64_t v1 = canonical_decimal(p + 14, 3, 2, &ok);
+    int64_t v2 = canonical_decimal(p + 21, 3, 2, &ok);
+    int64_t v3 = canonical_decimal(p + 28, 3, 1, &ok);
+    int64_t v4 = canonical_decimal(p + 34, 1, 2, &ok);
+    int64_t v5 = canonical_hex(p + 39, 4, &ok);
+    ok &= (unsigned)(p[13] == PAHR_SEPARATOR);
+    ok &= (unsigned)(p[20] == PAHR_SEPARATOR);
+    ok &= (unsigned)(p[27] == PAHR_SEPARATOR);
+    ok &= (unsigned)(p[33] == PAHR_SEPARATOR);
+    ok &= (unsigned)(p[38] == PAHR_SEPARATOR);
+    ok &= (unsigned)(v0 >= -18000) & (unsigned)(v0 <= 18000);
+    ok &= (unsigned)(v1 >= -9000) & (unsigned)(v1 <= 9000);
+    ok &= (unsigned)(v2 >= 0) & (unsigned)(v2 <= 35999u);
+    ok &= (unsigned)(v3 >= -999) & (unsigned)(v3 <= 9999);
+    ok &= (unsigned)(v4 >= 0) & (unsigned)(v4 <= 999);
+    ok &= (unsigned)(v5 >= 0) & (unsigned)(v5 <= 65535u);
+    if (!ok) {
+        return false;
+    }
+    out->roll = (int16_t)v0;
+    out->pitch = (int16_t)v1;
+    out->heading = (uint16_t)v2;
+    out->temperature = (int16_t)v3;
+    out->vdd = (uint16_t)v4;
+    out->usw = (uint16_t)v5;
+    return true;
+}
+#endif
+
 /*
  * Everything after the CR LF search: `end` is the sentence length, CR LF its last two
- * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Errors in the order of spec/README.md.
+ * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in
+ * the order of spec/README.md, with its offset in *at and its field index in *field
+ * (ILAHRS_PAHR_FIELD_COUNT for none).
  */
-static bool pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, ilahrs_error_t *err)
+static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field)
 {
     size_t star = end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
     size_t i = PAHR_PREFIX_LENGTH;
@@ -1505,14 +1622,22 @@ static bool pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, ilahrs_e
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     int high;
     int low;
+    *field = ILAHRS_PAHR_FIELD_COUNT;
+    *at = star;
     if (star < PAHR_PREFIX_LENGTH || p[star] != PAHR_STAR) {
-        return fail(err, ILAHRS_ERR_MALFORMED, star, NULL);
+        return ILAHRS_ERR_MALFORMED;
     }
+    *at = star + 1;
     high = hex_value(p[star + 1]);
     low = hex_value(p[star + 2]);
     if (high < 0 || low < 0) {
-        return fail(err, ILAHRS_ERR_MALFORMED, star + 1, NULL);
+        return ILAHRS_ERR_MALFORMED;
     }
+#if !ILAHRS_OPTIMIZE_SIZE
+    if (end == PAHR_CANONICAL_LENGTH && pahr_canonical(p, (uint8_t)(high * 16 + low), out)) {
+        return ILAHRS_OK;
+    }
+#endif
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     for (;;) {
         size_t start = i;
@@ -1539,15 +1664,15 @@ static bool pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, ilahrs_e
         i++; /* the separator */
     }
     if (xor_bytes(p + 1, star - 1) != (uint8_t)(high * 16 + low)) {
-        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, star + 1, NULL);
+        return ILAHRS_ERR_BAD_CHECKSUM;
     }
+    *at = PAHR_PREFIX_LENGTH;
     if (k != ILAHRS_PAHR_FIELD_COUNT) {
-        return fail(err, ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, NULL);
+        return ILAHRS_ERR_MALFORMED;
     }
-    if (field_error != ILAHRS_OK) {
-        return fail(err, field_error, error_at, FIELD_NAME(ilahrs_pahr_fields[error_field].name));
-    }
-    return true;
+    *at = error_at;
+    *field = error_field;
+    return field_error;
 }
 
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
@@ -1590,7 +1715,13 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     if (end < len) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
-    return pahr_body(p, end, out, err);
+    {
+        size_t at;
+        size_t field;
+        ilahrs_error_kind_t kind = pahr_body(p, end, out, &at, &field);
+        return kind == ILAHRS_OK
+            || fail(err, kind, at, field < ILAHRS_PAHR_FIELD_COUNT ? FIELD_NAME(ilahrs_pahr_fields[field].name) : NULL);
+    }
 }
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
@@ -1740,6 +1871,19 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
 
 /* ---- Stream decoder ------------------------------------------------------------------- */
 
+/* Copy n bytes front to back: right for separate buffers and for moves to a lower address
+ * within one buffer. memmove, or a plain loop when optimizing for size. */
+static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
+{
+#if ILAHRS_OPTIMIZE_SIZE
+    while (n-- > 0) {
+        *dst++ = *src++;
+    }
+#else
+    memmove(dst, src, n);
+#endif
+}
+
 #define NEED_MORE (-1)
 #define INVALID 0
 
@@ -1792,25 +1936,50 @@ static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *
     }
 }
 
+/* True if p[0..n) is the start of the sentence prefix. */
+static bool pahr_prefix(const uint8_t *p, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /* The sentence at p[0..n) (p[0] is "$"): as frame_candidate(). */
 static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
     {
         size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
-        const uint8_t *lf = (const uint8_t *)memchr(p, PAHR_LF, limit);
+        const uint8_t *lf;
         size_t i;
+        size_t at;
+        size_t field;
+#if !ILAHRS_OPTIMIZE_SIZE
+        /* A sentence in the builders' layout needs no search for its LF: if the characters
+         * before CR LF are a valid sentence, none of them is an LF. */
+        if (n >= PAHR_CANONICAL_LENGTH && p[PAHR_CANONICAL_LENGTH - 1] == PAHR_LF && p[PAHR_CANONICAL_LENGTH - 2] == PAHR_CR
+            && pahr_prefix(p, PAHR_PREFIX_LENGTH)
+            && pahr_body(p, PAHR_CANONICAL_LENGTH, &msg->sentence, &at, &field) == ILAHRS_OK) {
+            msg->kind = ILAHRS_MESSAGE_SENTENCE;
+            msg->data = p;
+            msg->size = PAHR_CANONICAL_LENGTH;
+            return (int)PAHR_CANONICAL_LENGTH;
+        }
+#endif
+        lf = (const uint8_t *)memchr(p, PAHR_LF, limit);
         if (lf == NULL) {
             if (n >= ILAHRS_PAHR_MAX_LENGTH) {
                 return INVALID;
             }
             /* Reject now what can never become a sentence: a wrong identifier, or a byte that
              * is not printable (CR only as the last byte so far). Waiting gives the same answer. */
-            for (i = 1; i < n && i < PAHR_PREFIX_LENGTH; i++) {
-                if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
-                    return INVALID;
-                }
+            if (!pahr_prefix(p, n < PAHR_PREFIX_LENGTH ? n : PAHR_PREFIX_LENGTH)) {
+                return INVALID;
             }
-            for (; i < n; i++) {
+            for (i = PAHR_PREFIX_LENGTH; i < n; i++) {
                 if ((p[i] < 0x20 || p[i] > 0x7E) && !(p[i] == PAHR_CR && i == n - 1)) {
                     return INVALID;
                 }
@@ -1820,8 +1989,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
         /* The first LF ends the candidate, so the only CR LF it can hold is its last two
          * characters: what ilahrs_pahr_parse() checks before pahr_body(). */
         i = (size_t)(lf - p) + 1;
-        if (i < PAHR_PREFIX_LENGTH + 2 || memcmp(p, PAHR_PREFIX, PAHR_PREFIX_LENGTH) != 0 || p[i - 2] != PAHR_CR
-            || !pahr_body(p, i, &msg->sentence, NULL)) {
+        if (i < PAHR_PREFIX_LENGTH + 2 || !pahr_prefix(p, PAHR_PREFIX_LENGTH) || p[i - 2] != PAHR_CR
+            || pahr_body(p, i, &msg->sentence, &at, &field) != ILAHRS_OK) {
             return INVALID;
         }
         msg->kind = ILAHRS_MESSAGE_SENTENCE;
@@ -1839,7 +2008,9 @@ static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 
 void ilahrs_stream_init(ilahrs_stream_t *stream)
 {
-    memset(stream, 0, sizeof *stream);
+    stream->discarded = 0;
+    stream->start = 0;
+    stream->count = 0;
 }
 
 /*
@@ -1855,7 +2026,7 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
     size_t taken = 0; /* input bytes taken in this call */
     size_t fresh = 0; /* input bytes in buf, always its last ones (when fewer remain, `rest` bounds them) */
     if (s->start != 0) {
-        memmove(buf, buf + s->start, s->count);
+        copy_forward(buf, buf + s->start, s->count);
         s->start = 0;
     }
     count = s->count;
@@ -1865,7 +2036,7 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
             add = sizeof s->held - count;
         }
         if (add > 0) {
-            memcpy(buf + count, *data + taken, add);
+            copy_forward(buf + count, *data + taken, add);
             count += add;
             taken += add;
             fresh += add;
@@ -1898,7 +2069,7 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
         }
         if (pos == count || taken == *len) {
             /* Held bytes gone, or all input taken: keep what waits, return the rest. */
-            memmove(buf, buf + pos, count - pos);
+            copy_forward(buf, buf + pos, count - pos);
             s->start = 0;
             s->count = (uint8_t)(count - pos);
             if (taken > 0) {
@@ -1908,12 +2079,28 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
             return false;
         }
         /* The buffer is full and the candidate at pos waits: make room, take more input. */
-        memmove(buf, buf + pos, count - pos);
+        copy_forward(buf, buf + pos, count - pos);
         count -= pos;
         pos = 0;
     }
 }
 
+#if ILAHRS_OPTIMIZE_SIZE
+bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
+{
+    /* Everything goes through the held buffer. drain() returns false with input left only when
+     * the held bytes are gone, so this loop ends. */
+    while (s->count != 0 || *len != 0) {
+        if (drain(s, data, len, false, msg)) {
+            return true;
+        }
+        if (*len == 0) {
+            break;
+        }
+    }
+    return false;
+}
+#else
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
 {
     const uint8_t *p;
@@ -1957,6 +2144,24 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
     *len = 0;
     return false;
 }
+#endif
+
+/*
+ * With start 0 and bytes held, the candidate at held[0] was examined and waits for more bytes
+ * (drain() and the chunk path leave nothing else there). True if `byte` cannot decide it:
+ * a frame still short of its length, or a sentence still without LF, within the longest
+ * sentence, the byte printable and not following a CR.
+ */
+static bool still_waiting(const ilahrs_stream_t *s, uint8_t byte)
+{
+    size_t n = s->count;
+    const uint8_t *h = s->held;
+    if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        return n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+            && n + 1 < ILAHRS_FRAME_HEADER_SIZE + get_le(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    }
+    return n >= PAHR_PREFIX_LENGTH && n + 1 < ILAHRS_PAHR_MAX_LENGTH && byte >= 0x20 && byte <= 0x7E && h[n - 1] != PAHR_CR;
+}
 
 bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
 {
@@ -1969,8 +2174,11 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
         }
         s->start = 0;
     } else if (s->start != 0) {
-        memmove(s->held, s->held + s->start, s->count);
+        copy_forward(s->held, s->held + s->start, s->count);
         s->start = 0;
+    } else if (still_waiting(s, byte)) {
+        s->held[s->count++] = byte;
+        return false;
     }
     s->held[s->count] = byte;
     s->count++;

@@ -24,6 +24,10 @@
  * - Payload structs hold raw wire values: integers as sent, floats as float32, char fields
  *   as the bytes received (NUL-terminated for convenience), reserved bytes verbatim. The
  *   `*_<unit>()` helpers give engineering values.
+ * - Speed or size: on 64-bit hosts ilahrs.c takes faster paths (word-at-a-time checksums,
+ *   zero-copy stream decoding, a fast path for sentences in the layout builders write); on
+ *   32-bit targets it takes the smallest code. Answers are identical. To choose, compile
+ *   ilahrs.c with -DILAHRS_OPTIMIZE_SIZE=1 (small) or 0 (fast).
  *
  * Decoding a byte stream (serial port, capture file):
  * @code
@@ -2352,7 +2356,7 @@ void ilahrs_stream_init(ilahrs_stream_t *stream);
  * messages completed earlier.
  *
  * When a whole message lies in the caller's chunk, `msg->data` and `msg->frame.payload`
- * point into that chunk (no copy).
+ * point into that chunk (no copy) unless the library is optimized for size.
  *
  * @code
  *     const uint8_t *p = buf;

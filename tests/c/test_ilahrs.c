@@ -117,14 +117,22 @@ static size_t random_sentence(uint8_t *out, size_t cap, ilahrs_pahr_t *values)
 
 static void test_checksum(void)
 {
-    uint8_t data[300];
-    size_t i;
-    uint32_t sum = 0;
+    static uint8_t data[3000];
+    size_t len;
     fill_random(data, sizeof data);
-    for (i = 0; i < sizeof data; i++) {
-        sum += data[i];
+    data[100] = 0xFF;
+    memset(data + 1000, 0xFF, 1500); /* long runs of 0xFF: the word-at-a-time lanes must not overflow */
+    for (len = 0; len <= sizeof data; len += len < 80 ? 1 : 37) {
+        size_t start;
+        for (start = 0; start < 9 && start + len <= sizeof data; start++) {
+            uint32_t sum = 0;
+            size_t i;
+            for (i = 0; i < len; i++) {
+                sum += data[start + i];
+            }
+            CHECK(ilahrs_checksum(data + start, len) == (uint16_t)sum);
+        }
     }
-    CHECK(ilahrs_checksum(data, sizeof data) == (uint16_t)sum);
     CHECK(ilahrs_checksum(NULL, 0) == 0);
 }
 
@@ -804,7 +812,7 @@ static void test_stream(void)
         const uint8_t *p = capture;
         size_t n = sizeof capture;
         CHECK(ilahrs_stream_next(&s, &p, &n, &msg) && msg.kind == ILAHRS_MESSAGE_FRAME);
-        CHECK(msg.data == capture + 1 && msg.frame.payload[0] == 0x80 && s.discarded == 1);
+        CHECK(memcmp(msg.data, capture + 1, msg.size) == 0 && msg.frame.payload[0] == 0x80 && s.discarded == 1);
         CHECK(!ilahrs_stream_next(&s, &p, &n, &msg) && n == 0);
     }
     CHECK(sizeof(ilahrs_stream_t) <= 128);

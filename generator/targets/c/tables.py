@@ -232,3 +232,48 @@ def response_kinds(spec: Spec) -> list[str]:
         if c.response_kind not in kinds:
             kinds.append(c.response_kind)
     return kinds
+
+
+@dataclass(frozen=True)
+class CanonicalField:
+    """Where a $PAHR field sits in a sentence a builder writes (E16: fixed template widths)."""
+
+    index: int
+    position: int  # character position of its first character
+    length: int  # characters, sign included
+    width: int  # integer-part (decimal) or digit (hex) characters, sign included
+    decimals: int
+    hex: bool
+
+
+@dataclass(frozen=True)
+class CanonicalLayout:
+    fields: tuple[CanonicalField, ...]
+    star: int  # position of "*"
+    length: int  # whole sentence, "$" through CR LF
+
+
+def canonical_layout(spec: Spec) -> CanonicalLayout | None:
+    """The text layout of sentences written by the builders, when every value in range fits its
+    template width (then every built sentence has the same length and field positions)."""
+    if spec.nmea is None:
+        return None
+    position = len(spec.nmea.identifier) + 2  # "$", identifier, ","
+    fields = []
+    for k, f in enumerate(spec.nmea.fields):
+        hex_field = f.format == "hex"
+        if hex_field:
+            fits = f.min >= 0 and f.max < 16**f.width
+            length = f.width
+        else:
+            positive = len(str(max(f.max, 0) // f.divisor)) <= f.width
+            negative = f.min >= 0 or len(str(-f.min // f.divisor)) + 1 <= f.width
+            fits = positive and negative
+            length = f.width + (1 + f.decimals if f.decimals else 0)
+        digits = f.width + f.decimals
+        if not fits or digits > 9:  # the fast path adds digits in 32 bits
+            return None
+        fields.append(CanonicalField(k, position, length, f.width, f.decimals, hex_field))
+        position += length + 1
+    star = position - 1
+    return CanonicalLayout(tuple(fields), star, star + 5)

@@ -34,6 +34,7 @@ def outputs(spec: Spec) -> list[Output]:
         "member_type": tables.member_type(spec),
         "usw_flags_mask": usw_flags,
         "response_kinds": tables.response_kinds(spec),
+        "canon": tables.canonical_layout(spec),
         "max_response_payloads": max(1, *(len(c.response_payloads) for c in spec.commands)),
     }
     return [
