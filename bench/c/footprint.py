@@ -7,9 +7,12 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
 - the stream decoder (ilahrs_stream_init/next/push/poll/finish),
 - the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
   ilahrs_payload_build_frame, ilahrs_ack_build),
-- the whole library (every public function).
+- a firmware core: the two above plus frame, command, payload and sentence decoding and
+  encoding (what a flight computer talking to the AHRS links),
+- the whole library (every public function, the host conveniences in double precision too).
 
-Prints text/data/bss of each next to the targets, the decoder state size, and whether anything
+Prints the code size (text: code and const tables) of each next to the targets, split into the
+library's own code and what newlib-nano/libgcc add, the decoder state size, and whether anything
 uses the heap or static RAM. Sizes are measured, never assumed; targets are reported, not enforced.
 """
 
@@ -26,7 +29,9 @@ STREAM = ["ilahrs_stream_init", "ilahrs_stream_next", "ilahrs_stream_push", "ila
           "ilahrs_stream_finish"]
 BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_payload_build_frame",
             "ilahrs_ack_build"]
-TARGETS = {"stream decoder": 512, "frame and command builders": None, "whole library": 8 * 1024}
+CORE = [*STREAM, *BUILDERS, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_payload_parse",
+        "ilahrs_payload_build", "ilahrs_pahr_parse", "ilahrs_pahr_build", "ilahrs_error_kind_name"]
+TARGETS = {"stream decoder": 512, "frame and command builders": None, "firmware core": None, "whole library": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
 
@@ -48,13 +53,17 @@ def size_of(cc: str, elf: Path) -> tuple[int, int, int]:
     return int(out[0]), int(out[1]), int(out[2])
 
 
-def biggest(cc: str, elf: Path, count: int = 8) -> list[tuple[int, str]]:
-    rows: list[tuple[int, str]] = []
+def symbols(cc: str, elf: Path) -> list[tuple[int, int, str]]:
+    """(address, size, name) of every sized code or data symbol, one name per address."""
+    rows: dict[int, tuple[int, int, str]] = {}
     for line in run([tool(cc, "nm"), "--size-sort", "-S", str(elf)]).splitlines():
         parts = line.split()
         if len(parts) == 4 and parts[2].lower() in ("t", "r", "d", "b"):
-            rows.append((int(parts[1], 16), parts[3]))
-    return sorted(rows, key=lambda r: (-r[0], r[1]))[:count]
+            address = int(parts[0], 16)
+            row = (address, int(parts[1], 16), parts[3])
+            if address not in rows or parts[3].startswith("__aeabi"):  # libgcc aliases: one name
+                rows[address] = row
+    return sorted(rows.values(), key=lambda r: (-r[1], r[2]))
 
 
 def link(cc: str, flags: list[str], obj: Path, entries: list[str], elf: Path) -> None:
@@ -80,8 +89,8 @@ def main() -> int:
     # Static RAM and heap use of the library itself.
     obj_text, obj_data, obj_bss = size_of(args.cc, obj)
     undefined = set(run([tool(args.cc, "nm"), "-u", str(obj)]).split()) - {"U"}
-    symbols = run([tool(args.cc, "nm"), "-g", "--defined-only", str(obj)]).splitlines()
-    public = sorted(parts[2] for parts in (line.split() for line in symbols) if len(parts) == 3 and parts[1] == "T")
+    defined = run([tool(args.cc, "nm"), "-g", "--defined-only", str(obj)]).splitlines()
+    public = sorted(parts[2] for parts in (line.split() for line in defined) if len(parts) == 3 and parts[1] == "T")
 
     # Decoder state and message sizes, from the compiler.
     probe = out / "sizes.c"
@@ -102,22 +111,26 @@ def main() -> int:
     print(f"compiler: {run([args.cc, '--version']).splitlines()[0]}")
     print(f"flags: {args.flags}")
     print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
-    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "whole library": public}
+    own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
+    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "firmware core": CORE,
+              "whole library": public}
     for name, entries in groups.items():
         elf = out / (name.replace(" ", "_") + ".elf")
         link(args.cc, flags, obj, entries, elf)
-        text, data, bss = size_of(args.cc, elf)
+        text, _data, _bss = size_of(args.cc, elf)
+        rows = symbols(args.cc, elf)
+        mine = sum(size for _, size, sym in rows if sym in own)
         target = TARGETS[name]
         verdict = "" if target is None else f"  (target <= {target}: {'met' if text <= target else 'NOT met'})"
-        print(f"{name}: text {text}, data {data}, bss {bss}{verdict}")
-        print("    largest: " + ", ".join(f"{sym} {n}" for n, sym in biggest(args.cc, elf)))
+        print(f"{name}: text {text} = {mine} library + {text - mine} newlib-nano/libgcc{verdict}")
+        print("    largest: " + ", ".join(f"{sym} {size}" for _, size, sym in rows[:8]))
     state = sizes["ilahrs_sizeof_stream"]
     print(f"decoder state (ilahrs_stream_t): {state} bytes of RAM, caller-owned "
           f"(target <= {STATE_TARGET}: {'met' if state <= STATE_TARGET else 'NOT met'})")
     print(f"message (ilahrs_message_t, on the caller's stack): {sizes['ilahrs_sizeof_message']} bytes")
     heap = sorted(undefined & HEAP_SYMBOLS)
     print(f"heap: {'none' if not heap else 'uses ' + ', '.join(heap)} (target: none)")
-    print(f"static RAM: {obj_data + obj_bss} bytes (target: 0)")
+    print(f"static RAM (data + bss of the library): {obj_data + obj_bss} bytes (target: 0)")
     print(f"library calls: {', '.join(sorted(undefined)) or 'none'}")
     return 0
 
