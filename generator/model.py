@@ -217,6 +217,7 @@ class Command:
     starts_output: str | None = None
     parameter_block: str | None = None
     shares_code_with: str | None = None
+    default_for_code: bool = False  # the meaning of a shared code in a mode where no name is valid
     former_names: tuple[FormerName, ...] = ()
     erratum: str | None = None
 
@@ -559,7 +560,10 @@ class Spec:
         for c in named:
             if mode in c.valid_in:
                 return c
-        return named[0] if named else None
+        for c in named:
+            if c.default_for_code or len(named) == 1:
+                return c
+        return None
 
     def commands_with_code(self, code: int) -> tuple[Command, ...]:
         """Commands sharing `code`, sorted by ICD name."""
@@ -693,6 +697,7 @@ def build(loaded: LoadedSpec) -> Spec:
             starts_output=c["starts"]["output"] if "starts" in c else None,
             parameter_block=c.get("parameter_block"),
             shares_code_with=c.get("shares_code_with"),
+            default_for_code=bool(c.get("default_for_code", False)),
             former_names=tuple(
                 FormerName(f["name"], f.get("until_firmware", ""), _doc(f["doc"])) for f in c.get("former_names", ())
             ),

@@ -312,6 +312,16 @@ def validate(spec: LoadedSpec) -> None:
                     f"duplicate command code {c['code']:#04x} ({c['name']} and {other['name']})"
                     " not declared with shares_code_with",
                 )
+        if others and partner is not None:
+            group = [c, *(d["commands"][k] for k in others)]
+            defaults = [x["name"] for x in group if x.get("default_for_code")]
+            if len(defaults) != 1:
+                raise spec.error(
+                    (*path, "shares_code_with"),
+                    f"exactly one of {sorted(x['name'] for x in group)} must be default_for_code (found {defaults})",
+                )
+        elif c.get("default_for_code"):
+            raise spec.error((*path, "default_for_code"), "default_for_code only applies to a shared code")
         for j, former in enumerate(c.get("former_names", [])):
             if former["name"] in by_name:
                 raise spec.error(

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 #
 # Kaitai Struct description of the Inertial Labs AHRS Interface Control Document, revision 1.7
@@ -699,7 +699,8 @@ types:
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload bytes 20-23. Unit: fractional year, see
-          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
+          encoding `date`. Builders accept raw 1900.002685546875 to 2200.001708984375. Encoding
+          date: years 1900 to 2199.
       - id: alignment_angle_a1
         -orig-id: Alignment angle A1
         type: f4
@@ -769,7 +770,8 @@ types:
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload bytes 20-23. Unit: fractional year, see
-          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
+          encoding `date`. Builders accept raw 1900.002685546875 to 2200.001708984375. Encoding
+          date: years 1900 to 2199.
       - id: alignment_angle_a1
         -orig-id: Alignment angle A1
         type: f4
@@ -874,7 +876,8 @@ types:
         type: f4
         doc: |
           Date as Year + (Month - 1)/12 + Day/365. Payload bytes 18-21. Unit: fractional year, see
-          encoding `date`. Builders accept raw 1900 to 2200. Encoding date: years 1900 to 2199.
+          encoding `date`. Builders accept raw 1900.002685546875 to 2200.001708984375. Encoding
+          date: years 1900 to 2199.
   calibration_result:
     doc: |
       Calibration result (Table 6.14), 52 bytes, device to host. Sent when a calibration completes
