@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+/* Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /*
@@ -343,9 +343,9 @@ static const struct {
 static const int32_t ilahrs_int_bounds[11][2] = {
     { 0, 0 },
     { 0, 35999u },
-    { -9000, 9000 },
-    { -18000, 18000 },
-    { -10000, 10000 },
+    { (-9000), 9000 },
+    { (-18000), 18000 },
+    { (-10000), 10000 },
     { 1, 100 },
     { 1, 65535u },
     { 1, 3 },
@@ -356,24 +356,24 @@ static const int32_t ilahrs_int_bounds[11][2] = {
 
 static const float ilahrs_float_bounds[8][2] = {
     { 0.0f, 0.0f },
-    { -3.4028234663852886e+38f, 3.4028234663852886e+38f },
+    { (-3.4028234663852886e+38f), 3.4028234663852886e+38f },
     { 0.0f, 360.0f },
-    { -180.0f, 180.0f },
-    { -90.0f, 90.0f },
-    { -20000.0f, 100000.0f },
+    { (-180.0f), 180.0f },
+    { (-90.0f), 90.0f },
+    { (-20000.0f), 100000.0f },
     { 1900.002685546875f, 2200.001708984375f },
-    { -360.0f, 360.0f },
+    { (-360.0f), 360.0f },
 };
 
 static const double ilahrs_exact_bounds[8][2] = {
     { 0.0, 0.0 },
-    { -3.4028234663852886e+38, 3.4028234663852886e+38 },
+    { (-3.4028234663852886e+38), 3.4028234663852886e+38 },
     { 0.0, 360.0 },
-    { -180.0, 180.0 },
-    { -90.0, 90.0 },
-    { -20000.0, 100000.0 },
+    { (-180.0), 180.0 },
+    { (-90.0), 90.0 },
+    { (-20000.0), 100000.0 },
     { 1900.002685546875, 2200.001708984375 },
-    { -360.0, 360.0 },
+    { (-360.0), 360.0 },
 };
 
 /* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
@@ -1399,10 +1399,10 @@ static const struct {
     int32_t min;
     int32_t max;
 } ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
-    { 61, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, -18000, 18000 },
-    { 66, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, -9000, 9000 },
+    { 61, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, (-18000), 18000 },
+    { 66, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, (-9000), 9000 },
     { 72, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
-    { 80, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, -999, 9999 },
+    { 80, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, (-999), 9999 },
     { 92, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
     { 96, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
 };
@@ -1587,10 +1587,10 @@ static bool pahr_canonical(const uint8_t *p, uint8_t checksum, ilahrs_pahr_t *ou
     ok &= (unsigned)(p[27] == PAHR_SEPARATOR);
     ok &= (unsigned)(p[33] == PAHR_SEPARATOR);
     ok &= (unsigned)(p[38] == PAHR_SEPARATOR);
-    ok &= (unsigned)(v0 >= -18000) & (unsigned)(v0 <= 18000);
-    ok &= (unsigned)(v1 >= -9000) & (unsigned)(v1 <= 9000);
+    ok &= (unsigned)(v0 >= (-18000)) & (unsigned)(v0 <= 18000);
+    ok &= (unsigned)(v1 >= (-9000)) & (unsigned)(v1 <= 9000);
     ok &= (unsigned)(v2 >= 0) & (unsigned)(v2 <= 35999u);
-    ok &= (unsigned)(v3 >= -999) & (unsigned)(v3 <= 9999);
+    ok &= (unsigned)(v3 >= (-999)) & (unsigned)(v3 <= 9999);
     ok &= (unsigned)(v4 >= 0) & (unsigned)(v4 <= 999);
     ok &= (unsigned)(v5 >= 0) & (unsigned)(v5 <= 65535u);
     if (!ok) {

@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+/* Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /**
@@ -71,13 +71,14 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef"
+#define ILAHRS_SPEC_HASH "35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
 
 /* ======================================================================================== */
 /* Errors                                                                                   */
 /* ======================================================================================== */
+
 
 /** What went wrong. The names (ilahrs_error_kind_name()) are the spec's `errors` list. */
 typedef enum ilahrs_error_kind {
@@ -130,8 +131,9 @@ typedef struct ilahrs_error {
 const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind);
 
 /* ======================================================================================== */
-/* Frame (Table 6.2, Table 6.3)                                                                */
+/* Frame (Table 6.2, Table 6.3)                                                             */
 /* ======================================================================================== */
+
 
 /** Size of the header every frame starts with. */
 #define ILAHRS_FRAME_HEADER_SIZE 2
@@ -278,6 +280,7 @@ typedef enum ilahrs_payload {
 /* ======================================================================================== */
 /* Commands (Appendix C, Table C.1)                                                         */
 /* ======================================================================================== */
+
 
 /** The operating modes (section 6.1). */
 typedef enum ilahrs_mode {
@@ -622,6 +625,7 @@ static inline size_t ilahrs_build_get_clb_res(uint8_t *out, size_t cap, ilahrs_e
 /* Device variants (Table 6.6 note 1) and engineering scales                                */
 /* ======================================================================================== */
 
+
 /** Device variants: scale factors that depend on the part number. */
 typedef enum ilahrs_variant {
     /** AHRS-G300-A2-TMGA-C1-V1.1 (Table 6.6 note 1): KG = 100, KA = 10000. */
@@ -660,6 +664,7 @@ bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *vari
 /* ======================================================================================== */
 /* Payload tables: generic interface                                                        */
 /* ======================================================================================== */
+
 
 
 /** Wire kinds of payload fields. */
@@ -783,6 +788,7 @@ size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint
 /* ======================================================================================== */
 /* Payload tables                                                                           */
 /* ======================================================================================== */
+
 
 /* ---- Full Output Data (Table 6.4) ---- */
 
@@ -1982,6 +1988,7 @@ static inline size_t ilahrs_acknowledgement_build_frame(const ilahrs_acknowledge
 /* Named values and encodings                                                               */
 /* ======================================================================================== */
 
+
 /** Values of `calibration_type` (Table 6.14, Table 6.15). */
 typedef enum ilahrs_calibration_type {
     ILAHRS_CALIBRATION_TYPE_TWO_D = 1, /**< 2D calibration */
@@ -1999,7 +2006,8 @@ typedef enum ilahrs_calibration_status_type {
 /** `calibration_status_type` values above this mean parameters loaded by other software. */
 #define ILAHRS_CALIBRATION_STATUS_TYPE_EXTERNAL_ABOVE 0x80u
 
-/* Date (Table 6.9, Table 6.10, Table 6.13, erratum E15): Year + (Month - 1)/12 + Day/365, as a float. */
+/* Date (Table 6.9, Table 6.10, Table 6.13, erratum E15): Year + (Month - 1)/12 + Day/365, as a
+ * float. */
 
 /** First year a date may have. */
 #define ILAHRS_DATE_YEAR_MIN 1900
@@ -2014,8 +2022,9 @@ typedef struct ilahrs_date {
 } ilahrs_date_t;
 
 /**
- * The date float of a calendar date: Year + (Month - 1)/12 + Day/365, as a float. Refuses (`out_of_range`, field "date") a
- * date that is not a real calendar date within ILAHRS_DATE_YEAR_MIN..ILAHRS_DATE_YEAR_MAX.
+ * The date float of a calendar date: Year + (Month - 1)/12 + Day/365, as a float. Refuses
+ * (`out_of_range`, field "date") a date that is not a real calendar date within
+ * ILAHRS_DATE_YEAR_MIN..ILAHRS_DATE_YEAR_MAX.
  */
 bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error_t *err);
 
@@ -2026,10 +2035,11 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
  */
 bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err);
 
-/* Declination (Table 6.9): Magnetic declination in degrees; any value greater than 360 asks the AHRS to compute it. */
+/* Declination (Table 6.9): Magnetic declination in degrees; any value greater than 360 asks the
+ * AHRS to compute it. */
 
 /** Smallest declination, degrees. */
-#define ILAHRS_DECLINATION_MIN -180.0f
+#define ILAHRS_DECLINATION_MIN (-180.0f)
 /** Largest declination, degrees. */
 #define ILAHRS_DECLINATION_MAX 180.0f
 /** A declination above this asks the AHRS to compute it from position and date. */
@@ -2043,7 +2053,9 @@ static inline bool ilahrs_declination_is_computed(float value)
     return value > ILAHRS_DECLINATION_COMPUTE_ABOVE;
 }
 
-/* Calibration success (Tables 6.14, 6.15, 6.17 and the notes below them, erratum E26): 0: not successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware 4.9.9.0); 255: successful, no estimate. */
+/* Calibration success (Tables 6.14, 6.15, 6.17 and the notes below them, erratum E26): 0: not
+ * successful; 1..254: predicted maximum (3 sigma) heading error, deg*10 (since firmware
+ * 4.9.9.0); 255: successful, no estimate. */
 
 /** "Calibration success" value of a failed calibration. */
 #define ILAHRS_CALIBRATION_FAILED 0u
@@ -2069,8 +2081,9 @@ static inline bool ilahrs_calibration_accuracy_deg(uint8_t success, float *degre
 }
 
 /* ======================================================================================== */
-/* Unit Status Word (6.5, Table 6.18, Table 6.19)                                                        */
+/* Unit Status Word (6.5, Table 6.18, Table 6.19)                                           */
 /* ======================================================================================== */
+
 
 /** Bit 0, failure byte (Initial Alignment): Unsuccessful initial alignment (AHRS moved or the magnetic field changed). */
 #define ILAHRS_USW_INITIAL_ALIGNMENT_FAILED 0x0001u
@@ -2165,6 +2178,7 @@ const char *ilahrs_usw_flag_name(unsigned bit);
 /* $PAHR sentences (Table 6.7, section 6.2): $PAHR,RRRR.rr,PPP.pp,HHH.hh,TTT.t,V.vv,SSSS*CC<CR><LF> */
 /* ======================================================================================== */
 
+
 /** Longest sentence, "$" through CR LF (E16). */
 #define ILAHRS_PAHR_MAX_LENGTH 82
 /** Number of fields in a sentence. */
@@ -2172,13 +2186,13 @@ const char *ilahrs_usw_flag_name(unsigned bit);
 /** The AHRS sends at most this many sentences per second. */
 #define ILAHRS_PAHR_MAX_RATE_HZ 50
 /** Smallest `roll` (scaled by 100). */
-#define ILAHRS_PAHR_ROLL_MIN -18000
+#define ILAHRS_PAHR_ROLL_MIN (-18000)
 /** Largest `roll`. */
 #define ILAHRS_PAHR_ROLL_MAX 18000
 /** `roll` is held in units of 1/100 deg. */
 #define ILAHRS_PAHR_ROLL_DIVISOR 100
 /** Smallest `pitch` (scaled by 100). */
-#define ILAHRS_PAHR_PITCH_MIN -9000
+#define ILAHRS_PAHR_PITCH_MIN (-9000)
 /** Largest `pitch`. */
 #define ILAHRS_PAHR_PITCH_MAX 9000
 /** `pitch` is held in units of 1/100 deg. */
@@ -2190,7 +2204,7 @@ const char *ilahrs_usw_flag_name(unsigned bit);
 /** `heading` is held in units of 1/100 deg. */
 #define ILAHRS_PAHR_HEADING_DIVISOR 100
 /** Smallest `temperature` (scaled by 10). */
-#define ILAHRS_PAHR_TEMPERATURE_MIN -999
+#define ILAHRS_PAHR_TEMPERATURE_MIN (-999)
 /** Largest `temperature`. */
 #define ILAHRS_PAHR_TEMPERATURE_MAX 9999
 /** `temperature` is held in units of 1/10 degc. */
@@ -2307,6 +2321,7 @@ static inline float ilahrs_pahr_vdd_v(const ilahrs_pahr_t *s)
 /* ======================================================================================== */
 /* Stream decoder                                                                           */
 /* ======================================================================================== */
+
 
 /** What a stream message is. */
 typedef enum ilahrs_message_kind {

@@ -61,14 +61,15 @@ def c_double(value: float) -> str:
     value = float(value)
     if not math.isfinite(value):
         raise ValueError("no literal for a non-finite value")
-    text = repr(value)
-    if "e" not in text and "." not in text:
+    text = repr(abs(value)) if value < 0 else repr(value)
+    if "e" not in text and "." not in text and "inf" not in text:
         text += ".0"
-    return text
+    return f"(-{text})" if value < 0 else text
 
 
 def c_float(value: float) -> str:
-    return c_double(value) + "f"
+    text = c_double(value)
+    return f"{text[:-1]}f)" if text.endswith(")") else text + "f"
 
 
 def c_int(value: float) -> str:
@@ -80,7 +81,7 @@ def c_int(value: float) -> str:
         return f"{number}u" if number > 0x7FFF else str(number)
     if number == -0x80000000:
         return "(-2147483647 - 1)"
-    return str(number)
+    return f"({number})"
 
 
 def c_string(text: str) -> str:
