@@ -6,7 +6,8 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
 
 - the stream decoder (ilahrs_stream_init/next/push/poll/finish),
 - the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
-  ilahrs_payload_build_frame, ilahrs_ack_build),
+  ilahrs_ack_build),
+- the parameter-block (payload) builder, ilahrs_payload_build_frame, with the field table,
 - a firmware core: the two above plus frame, command, payload and sentence decoding and
   encoding (what a flight computer talking to the AHRS links),
 - the whole library (every public function, the host conveniences in double precision too).
@@ -27,11 +28,12 @@ from pathlib import Path
 
 STREAM = ["ilahrs_stream_init", "ilahrs_stream_next", "ilahrs_stream_push", "ilahrs_stream_poll",
           "ilahrs_stream_finish"]
-BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_payload_build_frame",
-            "ilahrs_ack_build"]
-CORE = [*STREAM, *BUILDERS, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_payload_parse",
+BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_ack_build"]
+BLOCKS = ["ilahrs_payload_build_frame"]
+CORE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_payload_parse",
         "ilahrs_payload_build", "ilahrs_pahr_parse", "ilahrs_pahr_build", "ilahrs_error_kind_name"]
-TARGETS = {"stream decoder": 512, "frame and command builders": None, "firmware core": None, "whole library": 8 * 1024}
+TARGETS = {"stream decoder": 512, "frame and command builders": None, "payload builder": None, "firmware core": None,
+           "whole library": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
 
@@ -112,8 +114,8 @@ def main() -> int:
     print(f"flags: {args.flags}")
     print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
     own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
-    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "firmware core": CORE,
-              "whole library": public}
+    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "payload builder": BLOCKS,
+              "firmware core": CORE, "whole library": public}
     for name, entries in groups.items():
         elf = out / (name.replace(" ", "_") + ".elf")
         link(args.cc, flags, obj, entries, elf)

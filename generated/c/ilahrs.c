@@ -40,13 +40,15 @@ static const char ilahrs_error_names[151] =
     "buffer_too_small\000"
     "unexpected_message";
 
-static const char ilahrs_field_names[793] =
+static const char ilahrs_frame_names[61] =
     "header\000"
     "payload\000"
     "message_type\000"
     "reserved\000"
     "message_length\000"
-    "checksum\000"
+    "checksum";
+
+static const char ilahrs_field_names[750] =
     "roll\000"
     "pitch\000"
     "heading\000"
@@ -63,6 +65,7 @@ static const char ilahrs_field_names[793] =
     "umag_x\000"
     "umag_y\000"
     "umag_z\000"
+    "reserved\000"
     "utermo\000"
     "lk0\000"
     "lk1\000"
@@ -123,7 +126,8 @@ static const char ilahrs_field_names[793] =
     "reserved_1\000"
     "average_pitch\000"
     "average_roll\000"
-    "reserved_2";
+    "reserved_2\000"
+    "checksum";
 
 static const char ilahrs_command_names[264] =
     "AHRScont1\000"
@@ -204,19 +208,20 @@ static const char ilahrs_flag_names[272] =
 
 
 #define ERROR_NAME(offset) (ilahrs_error_names + (offset))
+#define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
 #define FIELD_NAME(offset) (ilahrs_field_names + (offset))
 #define COMMAND_NAME(offset) (ilahrs_command_names + (offset))
 #define PAYLOAD_NAME(offset) (ilahrs_payload_names + (offset))
 #define VARIANT_NAME(offset) (ilahrs_variant_names + (offset))
 #define MODE_NAME(offset) (ilahrs_mode_names + (offset))
 #define FLAG_NAME(offset) (ilahrs_flag_names + (offset))
-#define NAME_FRAME_MESSAGE_TYPE FIELD_NAME(15)
-#define NAME_FRAME_RESERVED FIELD_NAME(28)
-#define NAME_FRAME_MESSAGE_LENGTH FIELD_NAME(37)
-#define NAME_FRAME_HEADER FIELD_NAME(0)
-#define NAME_FRAME_PAYLOAD FIELD_NAME(7)
-#define NAME_FRAME_CHECKSUM FIELD_NAME(52)
-#define NAME_DATE FIELD_NAME(100)
+#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
+#define NAME_FRAME_RESERVED FRAME_NAME(28)
+#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
+#define NAME_FRAME_HEADER FRAME_NAME(0)
+#define NAME_FRAME_PAYLOAD FRAME_NAME(7)
+#define NAME_FRAME_CHECKSUM FRAME_NAME(52)
+#define NAME_DATE FIELD_NAME(39)
 
 static const uint8_t ilahrs_error_offsets[] = {
     0, /* truncated */
@@ -403,150 +408,150 @@ static const struct {
  * member, kind and encoding, bounds, scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { 72, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 66, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 61, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 105, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
-    { 113, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
-    { 121, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
-    { 129, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
-    { 136, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
-    { 143, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
-    { 150, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
-    { 157, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
-    { 164, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
-    { 28, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 96, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 92, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 171, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
+    { 11, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 5, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 0, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 44, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
+    { 52, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
+    { 60, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
+    { 68, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
+    { 75, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
+    { 82, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
+    { 89, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
+    { 96, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
+    { 103, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
+    { 110, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 35, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 31, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 119, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { 72, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 66, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 61, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 178, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
-    { 182, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
-    { 186, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
-    { 190, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
-    { 28, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 96, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 92, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 171, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 11, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 5, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 0, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 126, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
+    { 130, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
+    { 134, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
+    { 138, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
+    { 110, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 35, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 31, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 119, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { 72, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 66, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 61, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 194, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
-    { 201, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
-    { 208, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
-    { 215, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
-    { 221, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
-    { 227, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
-    { 233, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
-    { 239, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
-    { 245, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
-    { 28, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 96, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 92, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 171, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 11, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 5, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 0, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 142, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
+    { 149, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
+    { 156, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
+    { 163, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
+    { 169, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
+    { 175, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
+    { 181, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
+    { 187, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
+    { 193, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
+    { 110, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 35, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 31, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 119, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { 251, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
-    { 263, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
-    { 275, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
-    { 287, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
-    { 301, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
-    { 315, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
-    { 329, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
-    { 343, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
-    { 357, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
-    { 371, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
-    { 387, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
-    { 400, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
-    { 96, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 199, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
+    { 211, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
+    { 223, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
+    { 235, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
+    { 249, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
+    { 263, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
+    { 277, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
+    { 291, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
+    { 305, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
+    { 319, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
+    { 335, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
+    { 348, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
+    { 35, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { 414, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 426, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 441, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 453, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 462, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 472, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 100, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 481, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 500, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 519, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 28, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 362, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 374, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 389, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 401, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 410, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 420, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 39, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 429, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 448, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 467, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 110, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { 414, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 426, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 441, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 453, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 462, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 472, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 100, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 481, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 500, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 519, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 538, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
-    { 28, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 362, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 374, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 389, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 401, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 410, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 420, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 39, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 429, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 448, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 467, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 486, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
+    { 110, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { 548, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
+    { 496, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
     /* bit_result (Table 6.12) */
-    { 556, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
-    { 96, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 504, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
+    { 35, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { 566, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
-    { 584, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
-    { 453, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 462, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 472, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 100, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 514, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
+    { 532, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
+    { 401, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 410, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 420, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 39, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
     /* calibration_result (Table 6.14) */
-    { 602, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
-    { 619, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 629, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 639, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 647, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 655, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 663, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 671, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 679, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 687, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 695, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 703, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 711, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 719, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 726, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 733, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 550, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
+    { 567, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 577, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 587, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 595, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 603, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 611, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 619, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 627, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 635, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 643, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 651, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 659, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 667, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 674, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 681, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { 602, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
-    { 740, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
-    { 629, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 639, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 744, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
-    { 755, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
-    { 769, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
-    { 782, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
-    { 96, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 550, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
+    { 688, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
+    { 577, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 587, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 692, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
+    { 703, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
+    { 717, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
+    { 730, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
+    { 35, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { 28, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 110, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { 602, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
-    { 619, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 28, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 639, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 647, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 655, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 663, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 671, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 679, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 687, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 695, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 703, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 711, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 719, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 726, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 733, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 550, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
+    { 567, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 110, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 587, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 595, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 603, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 611, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 619, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 627, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 635, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 643, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 651, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 659, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 667, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 674, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 681, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { 52, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
+    { 741, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
 };
 
 static const struct {
@@ -946,9 +951,16 @@ size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t
         return 0;
     }
     at = ILAHRS_FRAME_PAYLOAD_OFFSET + frame.payload_size;
-    memset(&payload, 0, sizeof payload);
-    payload.checksum = (uint16_t)get_le(message + at, ILAHRS_FRAME_CHECKSUM_SIZE);
-    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_ACKNOWLEDGEMENT, &payload, out, cap, err);
+    /* The table is the checksum alone, which needs no check: write it here (no field table). */
+    (void)payload;
+    if (out == NULL || cap < ILAHRS_ACKNOWLEDGEMENT_SIZE + ILAHRS_FRAME_OVERHEAD) {
+        return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
+    }
+    put_le(out + ILAHRS_FRAME_PAYLOAD_OFFSET + ILAHRS_ACKNOWLEDGEMENT_CHECKSUM_OFFSET,
+           get_le(message + at, ILAHRS_FRAME_CHECKSUM_SIZE), ILAHRS_ACKNOWLEDGEMENT_CHECKSUM_SIZE);
+    memset(&frame, 0, sizeof frame);
+    frame.message_type = ILAHRS_MESSAGE_TYPE_DATA;
+    return frame_finish(out, &frame, ILAHRS_ACKNOWLEDGEMENT_SIZE);
 }
 
 /* ---- Variants -------------------------------------------------------------------------- */
@@ -1399,12 +1411,12 @@ static const struct {
     int32_t min;
     int32_t max;
 } ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
-    { 61, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, (-18000), 18000 },
-    { 66, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, (-9000), 9000 },
-    { 72, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
-    { 80, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, (-999), 9999 },
-    { 92, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
-    { 96, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
+    { 0, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, (-18000), 18000 },
+    { 5, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, (-9000), 9000 },
+    { 11, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
+    { 19, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, (-999), 9999 },
+    { 31, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
+    { 35, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
 };
 
 const char *ilahrs_pahr_field_name(size_t index)

@@ -144,15 +144,16 @@ def _index(table: list[Bounds], b: Bounds) -> int:
 
 
 def build_tables(spec: Spec) -> Tables:
-    pools = {name: StringPool(name) for name in ("error", "field", "command", "payload", "variant", "mode", "flag")}
+    kinds = ("error", "frame", "field", "command", "payload", "variant", "mode", "flag")
+    pools = {name: StringPool(name) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
-    names = pools["field"]
-    names.add(FRAME_HEADER_NAME)
-    names.add(FRAME_PAYLOAD_NAME)
+    pools["frame"].add(FRAME_HEADER_NAME)
+    pools["frame"].add(FRAME_PAYLOAD_NAME)
     for f in spec.frame.fields:
-        names.add(f.name)
-    names.add(spec.frame.checksum.name)
+        pools["frame"].add(f.name)
+    pools["frame"].add(spec.frame.checksum.name)
+    names = pools["field"]
     if spec.nmea is not None:
         for nf in spec.nmea.fields:
             names.add(nf.name)
