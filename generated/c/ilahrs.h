@@ -14,7 +14,8 @@
  * Conventions
  * - Functions that decode return `bool` (true on success). Functions that build return the
  *   number of bytes written, or 0 on failure; they write into a caller buffer `out` of `cap`
- *   bytes and never past it.
+ *   bytes and never past it. After a failure the outputs hold nothing useful.
+ * - Pointers must be valid; an input pointer may be NULL only when its length is 0.
  * - Every function that can fail takes an `ilahrs_error_t *err` last. It may be NULL. On
  *   failure it receives the error kind, the byte offset into the input the error refers to
  *   (ILAHRS_NO_OFFSET when none applies) and the name of the field at fault (NULL when none
