@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! The conformance runner of the `ilahrs` crate: reads requests on standard input, one per
@@ -10,6 +10,7 @@
 use std::io::{self, BufRead, Write};
 
 use ilahrs::payload::{AnyPayload, FieldKind, PayloadKind, Value};
+use ilahrs::state_machine::{Device, Event, Firmware};
 use ilahrs::{Error, FrameRepr, MessageType, PahrSentence, StreamDecoder, Variant};
 
 /// An answer line, or the error to report.
@@ -82,6 +83,7 @@ fn answer(line: &str) -> Answer {
         "nmea_decode" => nmea_decode(&read_text(arg(0)?)?),
         "nmea_encode" => nmea_encode(&args),
         "stream" => stream(args.first().copied().unwrap_or("")),
+        "session" => session(arg(0)?, arg(1)?),
         _ => Err(Refusal::Unsupported),
     }
 }
@@ -250,6 +252,48 @@ fn stream(chunks: &str) -> Answer {
         "ok discarded={} events={listed}",
         decoder.discarded()
     ))
+}
+
+/// Runs the device state machine from its initial state: `C:HH` a command code, `D:N` a data
+/// message of N payload bytes, `E:NAME` another event; one `EVENT>STATE>SENDS` step each.
+fn session(firmware: &str, events: &str) -> Answer {
+    let firmware = match firmware {
+        "-" => None,
+        text => Some(Firmware::parse(text)?),
+    };
+    let mut device = Device::new(firmware);
+    let mut steps: Vec<String> = Vec::new();
+    for token in events.split(',') {
+        let (event, step) = match token.split_once(':') {
+            Some(("C", code)) => {
+                let code = u8::from_str_radix(code, 16).map_err(|_| Refusal::Unsupported)?;
+                device.handle_command(code)
+            }
+            Some(("D", size)) => {
+                let size = size.parse().map_err(|_| Refusal::Unsupported)?;
+                device.handle_data(size)
+            }
+            Some(("E", name)) => {
+                let event = Event::from_name(name).ok_or(Refusal::Unsupported)?;
+                (event, device.handle(event))
+            }
+            _ => return Err(Refusal::Unsupported),
+        };
+        let sends: Vec<&str> = step
+            .map(|step| step.sends)
+            .unwrap_or(&[])
+            .iter()
+            .map(|answer| answer.name())
+            .collect();
+        let sends = if sends.is_empty() {
+            "-".to_string()
+        } else {
+            sends.join("+")
+        };
+        let state = device.state().name();
+        steps.push(format!("{}>{state}>{sends}", event.name()));
+    }
+    Ok(format!("ok steps={}", steps.join(",")))
 }
 
 /// An INT token; one beyond 64 bits (or not a number) saturates, so that range checks refuse it.

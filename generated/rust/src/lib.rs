@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Inertial Labs AHRS Interface Control Document, revision 1.7 (2014-03-11): frames,
@@ -16,6 +16,7 @@
 //! | [`payload`] | one module per payload table: view, value, field positions and descriptions |
 //! | [`nmea`] | [`PahrSentence`]: the $PAHR sentence, parsed and built without allocation |
 //! | [`stream`] | [`StreamDecoder`]: frames and sentences out of a byte stream |
+//! | [`state_machine`] | the device's states and transitions as a table, [`state_machine::Device`] |
 //! | [`status`], [`encoding`], [`variant`] | the Unit Status Word, value encodings, device variants |
 //! | [`error`] | [`Error`] and [`ErrorKind`], the one list of error kinds |
 //!
@@ -55,6 +56,7 @@ pub mod frame;
 pub mod io;
 pub mod nmea;
 pub mod payload;
+pub mod state_machine;
 pub mod status;
 pub mod stream;
 pub mod variant;
@@ -76,6 +78,6 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef";
+pub const SPEC_HASH: &str = "35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Unit tests drawn from the spec: every command, every payload table, every error of a frame
@@ -290,6 +290,85 @@ fn word_scan_finds_the_first_byte_at_every_position() {
                 let expected = data[..len].iter().position(|candidate| *candidate == byte);
                 assert_eq!(find_byte(&data[..len], byte), expected, "{byte} {len} {at}");
             }
+        }
+    }
+}
+
+#[test]
+fn the_lookup_finds_every_row_and_nothing_else() {
+    use crate::state_machine::{transition, Event, State, TRANSITIONS};
+    let mut found = 0;
+    for state in State::ALL {
+        for event in Event::ALL {
+            let row = TRANSITIONS
+                .iter()
+                .find(|row| row.state == state && row.event == event);
+            assert_eq!(
+                transition(state, event, None),
+                row.map(|row| row.transition)
+            );
+            found += usize::from(row.is_some());
+        }
+    }
+    assert_eq!(found, TRANSITIONS.len());
+    assert!(TRANSITIONS
+        .windows(2)
+        .all(|pair| (pair[0].state, pair[0].event) < (pair[1].state, pair[1].event)));
+}
+
+#[test]
+fn older_firmware_rows_apply_only_below_their_version() {
+    use crate::state_machine::{transition, Firmware, OLDER_FIRMWARE};
+    let oldest = Firmware::new(&[0]).unwrap();
+    for (before, row) in OLDER_FIRMWARE {
+        let at = Firmware::new(before).unwrap();
+        let current = transition(row.state, row.event, None);
+        assert_eq!(
+            transition(row.state, row.event, Some(oldest)),
+            Some(row.transition)
+        );
+        assert_eq!(transition(row.state, row.event, Some(at)), current);
+    }
+}
+
+#[test]
+fn firmware_versions_parse_and_compare_part_by_part() {
+    use crate::state_machine::{Firmware, MAX_FIRMWARE_PARTS};
+    let parse = |text: &str| Firmware::parse(text).map_err(|error| (error.kind(), error.offset()));
+    assert_eq!(parse("4.9.9.0").unwrap().parts(), &[4, 9, 9, 0]);
+    assert!(parse("4.9").unwrap() < parse("4.9.0").unwrap());
+    assert!(parse("4.10").unwrap() > parse("4.9.9.0").unwrap());
+    assert_eq!(parse(""), Err((ErrorKind::Malformed, Some(0))));
+    assert_eq!(parse("4..1"), Err((ErrorKind::Malformed, Some(2))));
+    assert_eq!(parse("4.x"), Err((ErrorKind::Malformed, Some(2))));
+    assert_eq!(parse("4.99999999999"), Err((ErrorKind::Malformed, Some(2))));
+    let long = [1u32; MAX_FIRMWARE_PARTS + 1];
+    assert!(Firmware::new(&long).is_none());
+    assert!(Firmware::new(&long[1..]).is_some());
+    assert!(Firmware::new(&[]).is_none());
+}
+
+#[test]
+fn wire_input_maps_to_events_by_mode_and_size() {
+    use crate::state_machine::{Event, State};
+    for state in State::ALL {
+        for code in 0..=255u8 {
+            let event = Event::for_code(code, state);
+            match event.command() {
+                Some(command) => {
+                    assert_eq!(command.code(), code);
+                    let valid = Command::with_code(code)
+                        .iter()
+                        .any(|named| named.valid_in().contains(&state.mode()));
+                    assert!(!valid || command.valid_in().contains(&state.mode()));
+                }
+                None => assert!(Command::with_code(code).is_empty()),
+            }
+        }
+        for size in 0..=frame::MAX_PAYLOAD {
+            let event = Event::for_data(size, state);
+            let fits = state.expects().is_some_and(|block| block.size() == size);
+            assert_eq!(event == Event::for_data(usize::MAX, state), !fits);
         }
     }
 }

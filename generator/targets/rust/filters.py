@@ -10,7 +10,7 @@ from collections.abc import Callable
 from typing import Any
 
 from generator import naming
-from generator.model import FLOAT32_MAX, Field, NmeaField, Payload, Spec
+from generator.model import FLOAT32_MAX, TIMER_EVENTS, Field, NmeaField, Payload, Spec, StateMachine, Transition
 
 # Rust integer type of each integer primitive.
 _INT_TYPES = {"u8": "u8", "s8": "i8", "u16": "u16", "s16": "i16", "u32": "u32", "s32": "i32"}
@@ -372,6 +372,131 @@ def format_pair(name: str) -> str:
     return f"{name}={{}}"
 
 
+# The device state machine. Events are the commands (by their `id`) and the spec's other events;
+# answers are `ack`, `output`, `output_` + a USW mode name, or a payload table (spec/README.md).
+ACK_ANSWER = "ack"
+UNKNOWN_EVENT = "unknown"
+OUTPUT_ANSWER = "output"
+
+
+def _machine(spec: Spec) -> StateMachine:
+    if spec.state_machine is None:
+        raise ValueError("the spec has no state_machine")
+    return spec.state_machine
+
+
+def _unique(names: list[str], what: str) -> list[str]:
+    clashes = sorted({n for n in names if names.count(n) > 1})
+    if clashes:
+        raise ValueError(f"{what} names clash in Rust: {clashes}")
+    return names
+
+
+def sm_events(spec: Spec) -> list[dict[str, Any]]:
+    """Every event of the table, commands first (spec order), then the other events: the Rust
+    variant, the name the table uses, the command (or None) and a doc line."""
+    events: list[dict[str, Any]] = [
+        {"variant": type_name(c.id), "name": c.name, "command": c, "doc": f"The command `{c.name}` ({c.icd})."}
+        for c in spec.commands
+    ]
+    events += [
+        {"variant": type_name(e.name), "name": e.name, "command": None, "doc": e.doc} for e in _machine(spec).events
+    ]
+    _unique([e["variant"] for e in events], "event")
+    return events
+
+
+def sm_event(spec: Spec, name: str) -> str:
+    """The Rust variant of the table's event `name` (a command's ICD name or another event)."""
+    for event in sm_events(spec):
+        if event["name"] == name:
+            return str(event["variant"])
+    raise ValueError(f"the state machine has no event {name!r}")
+
+
+def sm_timer_event(spec: Spec, timer: str) -> str:
+    """The Rust variant of the event a state's `timer` fires."""
+    return sm_event(spec, TIMER_EVENTS[timer])
+
+
+def sm_answers(spec: Spec) -> list[dict[str, Any]]:
+    """Every answer the table sends, in first-use order: the Rust variant, the spec name, the payload
+    table (or None), the USW mode (or None) and a doc line."""
+    modes = {m.name for m in spec.status_word.modes} if spec.status_word else set()
+    answers: list[dict[str, Any]] = []
+    for name in _machine(spec).sends:
+        payload = next((p for p in spec.payloads if p.name == name), None)
+        mode = name.removeprefix(OUTPUT_ANSWER + "_")
+        if payload is not None:
+            doc = f"One {payload.name} block ({payload.icd}, {payload.title})."
+        elif name == ACK_ANSWER:
+            doc = "The acknowledgement of the message just received."
+        elif name == OUTPUT_ANSWER:
+            doc = "One block of the output format chosen by the start command."
+        elif name.startswith(OUTPUT_ANSWER + "_") and mode in modes:
+            doc = f"One block of the output format with the USW mode bits of `{mode}`."
+        else:
+            raise ValueError(f"the state machine sends {name!r}: neither ack, output, output_MODE nor a payload")
+        answers.append(
+            {
+                "variant": type_name(name),
+                "name": name,
+                "payload": payload,
+                "mode": None if payload is not None or name in (ACK_ANSWER, OUTPUT_ANSWER) else mode,
+                "doc": doc,
+            }
+        )
+    _unique([a["variant"] for a in answers], "answer")
+    return answers
+
+
+def firmware_parts(version: str) -> list[int]:
+    """A firmware version as its numeric parts: "4.9.9.0" -> [4, 9, 9, 0]."""
+    parts = version.strip().split(".")
+    if not all(part.isdigit() for part in parts):
+        raise ValueError(f"firmware version {version!r} is not numeric")
+    return [int(part) for part in parts]
+
+
+def sm_rows(spec: Spec) -> list[Transition]:
+    """The table's rows sorted by state, then event (declaration order), the rows for older firmware
+    before the current row of the same pair."""
+    machine = _machine(spec)
+    states = [s.name for s in machine.states]
+    events = [e["name"] for e in sm_events(spec)]
+
+    def key(t: Transition) -> tuple[int, int, bool, list[int]]:
+        return (
+            states.index(t.state),
+            events.index(t.event),
+            t.firmware_before is None,
+            firmware_parts(t.firmware_before or "0"),
+        )
+
+    rows = sorted(machine.transitions, key=key)
+    current = [(t.state, t.event) for t in rows if t.firmware_before is None]
+    if len(set(current)) != len(current):
+        raise ValueError("the state machine has two current rows for one (state, event)")
+    return rows
+
+
+def sm_max_firmware_parts(spec: Spec) -> int:
+    """The most parts a firmware version of the table has."""
+    versions = [t.firmware_before for t in _machine(spec).transitions if t.firmware_before]
+    return max([len(firmware_parts(v)) for v in versions] or [1])
+
+
+def sm_code_events(spec: Spec, code: int) -> list[tuple[list[str], str]]:
+    """What a command code means in each mode, as (modes, event variant) groups in mode order: the
+    command valid in the mode, else the spec's `unknown` event."""
+    groups: dict[str, list[str]] = {}
+    for mode in spec.modes:
+        command = spec.command_in_mode(code, mode.name)
+        variant = sm_event(spec, UNKNOWN_EVENT) if command is None else type_name(command.id)
+        groups.setdefault(variant, []).append(mode.name)
+    return [(modes, variant) for variant, modes in groups.items()]
+
+
 # Layout: the generated code must be what rustfmt (default configuration, edition 2021) would
 # write, without running rustfmt. Data-dependent lines pick rustfmt's one-line or vertical form
 # by the same widths rustfmt uses.
@@ -505,4 +630,12 @@ GLOBALS: dict[str, Any] = {
     "date_decode": date_decode,
     "nmea_unit_suffix": nmea_unit_suffix,
     "nmea_unit_doc": nmea_unit_doc,
+    "sm_events": sm_events,
+    "sm_event": sm_event,
+    "sm_timer_event": sm_timer_event,
+    "sm_answers": sm_answers,
+    "sm_rows": sm_rows,
+    "sm_code_events": sm_code_events,
+    "sm_max_firmware_parts": sm_max_firmware_parts,
+    "firmware_parts": firmware_parts,
 }

@@ -46,5 +46,7 @@ def outputs(spec: Spec) -> list[Output]:
         Output(f"rust/src/payload/{payload.name}.rs", "payload.rs.j2", {"payload": payload})
         for payload in spec.payloads
     ]
+    if spec.state_machine is not None:
+        files.append(Output("rust/src/state_machine.rs", "state_machine.rs.j2"))
     files += [Output(f"rust-conformance/{path}", template) for path, template in _RUNNER_FILES]
     return files
