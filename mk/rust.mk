@@ -43,11 +43,14 @@ lint-rust: rust-crates
 	$(CARGO) clippy --quiet --manifest-path tests/rust/Cargo.toml --all-targets -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path bench/rust/Cargo.toml -- -D warnings
 
-test-rust: rust-crates
+# The differential test runs the Rust and Python runners on the same seeded, mutated inputs
+# (tests/rust/differential.py) and checks sessions against the spec model.
+test-rust: build-rust
 	$(CARGO) build --quiet --manifest-path $(RUST_LIB) --no-default-features
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB)
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB) --all-features
 	$(CARGO) test --quiet --release --manifest-path tests/rust/Cargo.toml
+	$(PY) tests/rust/differential.py
 
 SETUP_TARGETS += setup-rust
 BUILD_TARGETS += build-rust
