@@ -4,7 +4,8 @@ Compiles generated/c/ilahrs.c with arm-none-eabi-gcc, then links three closures 
 --gc-sections, keeping only what the named entry points reach (newlib-nano's memcpy/memchr and
 libgcc's soft-float helpers included, since a firmware image needs them too):
 
-- the stream decoder (ilahrs_stream_init/next/push/poll/finish),
+- the stream decoder (ilahrs_stream_init/next/push/poll/finish), and how much of it is the
+  $PAHR validation it shares with ilahrs_pahr_parse (the sentence parser, also linked alone),
 - the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
   ilahrs_ack_build),
 - the parameter-block (payload) builder, ilahrs_payload_build_frame, with the field table,
@@ -32,8 +33,8 @@ BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "il
 BLOCKS = ["ilahrs_payload_build_frame"]
 CORE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_payload_parse",
         "ilahrs_payload_build", "ilahrs_pahr_parse", "ilahrs_pahr_build", "ilahrs_error_kind_name"]
-TARGETS = {"stream decoder": 512, "frame and command builders": None, "payload builder": None, "firmware core": None,
-           "whole library": 8 * 1024}
+TARGETS = {"stream decoder": 512, "sentence parser": None, "frame and command builders": None,
+           "payload builder": None, "firmware core": None, "whole library": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
 
@@ -113,9 +114,11 @@ def main() -> int:
     print(f"compiler: {run([args.cc, '--version']).splitlines()[0]}")
     print(f"flags: {args.flags}")
     print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
+    linked: dict[str, set[tuple[str, int]]] = {}
     own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
-    groups = {"stream decoder": STREAM, "frame and command builders": BUILDERS, "payload builder": BLOCKS,
-              "firmware core": CORE, "whole library": public}
+    groups = {"stream decoder": STREAM, "sentence parser": ["ilahrs_pahr_parse"],
+              "frame and command builders": BUILDERS, "payload builder": BLOCKS, "firmware core": CORE,
+              "whole library": public}
     for name, entries in groups.items():
         elf = out / (name.replace(" ", "_") + ".elf")
         link(args.cc, flags, obj, entries, elf)
@@ -126,6 +129,10 @@ def main() -> int:
         verdict = "" if target is None else f"  (target <= {target}: {'met' if text <= target else 'NOT met'})"
         print(f"{name}: text {text} = {mine} library + {text - mine} newlib-nano/libgcc{verdict}")
         print("    largest: " + ", ".join(f"{sym} {size}" for _, size, sym in rows[:8]))
+        linked[name] = {(sym, size) for _, size, sym in rows}
+    shared = sum(size for _, size in linked["stream decoder"] & linked["sentence parser"])
+    print(f"stream decoder without the $PAHR validation it shares with ilahrs_pahr_parse: "
+          f"{sum(size for _, size in linked['stream decoder']) - shared} (shared: {shared})")
     state = sizes["ilahrs_sizeof_stream"]
     print(f"decoder state (ilahrs_stream_t): {state} bytes of RAM, caller-owned "
           f"(target <= {STATE_TARGET}: {'met' if state <= STATE_TARGET else 'NOT met'})")

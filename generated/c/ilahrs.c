@@ -48,14 +48,10 @@ static const char ilahrs_frame_names[61] =
     "message_length\000"
     "checksum";
 
-static const char ilahrs_field_names[750] =
-    "roll\000"
-    "pitch\000"
+static const char ilahrs_field_names[738] =
     "heading\000"
-    "temperature\000"
-    "vdd\000"
-    "usw\000"
-    "date\000"
+    "pitch\000"
+    "roll\000"
     "ugyro_x\000"
     "ugyro_y\000"
     "ugyro_z\000"
@@ -66,6 +62,8 @@ static const char ilahrs_field_names[750] =
     "umag_y\000"
     "umag_z\000"
     "reserved\000"
+    "usw\000"
+    "vdd\000"
     "utermo\000"
     "lk0\000"
     "lk1\000"
@@ -98,6 +96,7 @@ static const char ilahrs_field_names[750] =
     "latitude\000"
     "longitude\000"
     "altitude\000"
+    "date\000"
     "alignment_angle_a1\000"
     "alignment_angle_a2\000"
     "alignment_angle_a3\000"
@@ -128,6 +127,17 @@ static const char ilahrs_field_names[750] =
     "average_roll\000"
     "reserved_2\000"
     "checksum";
+
+static const char ilahrs_sentence_names[39] =
+    "roll\000"
+    "pitch\000"
+    "heading\000"
+    "temperature\000"
+    "vdd\000"
+    "usw";
+
+static const char ilahrs_date_names[5] =
+    "date";
 
 static const char ilahrs_command_names[264] =
     "AHRScont1\000"
@@ -210,6 +220,7 @@ static const char ilahrs_flag_names[272] =
 #define ERROR_NAME(offset) (ilahrs_error_names + (offset))
 #define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
 #define FIELD_NAME(offset) (ilahrs_field_names + (offset))
+#define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
 #define COMMAND_NAME(offset) (ilahrs_command_names + (offset))
 #define PAYLOAD_NAME(offset) (ilahrs_payload_names + (offset))
 #define VARIANT_NAME(offset) (ilahrs_variant_names + (offset))
@@ -221,7 +232,7 @@ static const char ilahrs_flag_names[272] =
 #define NAME_FRAME_HEADER FRAME_NAME(0)
 #define NAME_FRAME_PAYLOAD FRAME_NAME(7)
 #define NAME_FRAME_CHECKSUM FRAME_NAME(52)
-#define NAME_DATE FIELD_NAME(39)
+#define NAME_DATE (ilahrs_date_names + 0)
 
 static const uint8_t ilahrs_error_offsets[] = {
     0, /* truncated */
@@ -408,150 +419,150 @@ static const struct {
  * member, kind and encoding, bounds, scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { 11, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 5, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 0, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 44, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
-    { 52, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
-    { 60, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
-    { 68, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
-    { 75, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
-    { 82, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
-    { 89, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
-    { 96, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
-    { 103, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
-    { 110, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 35, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 31, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 119, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
+    { 0, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 8, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 14, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 19, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
+    { 27, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
+    { 35, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
+    { 43, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
+    { 50, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
+    { 57, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
+    { 64, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
+    { 71, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
+    { 78, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
+    { 85, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 94, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 98, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 102, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { 11, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 5, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 0, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 126, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
-    { 130, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
-    { 134, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
-    { 138, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
-    { 110, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 35, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 31, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 119, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 0, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 8, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 14, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 109, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
+    { 113, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
+    { 117, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
+    { 121, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
+    { 85, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 94, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 98, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 102, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { 11, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 5, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 0, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 142, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
-    { 149, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
-    { 156, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
-    { 163, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
-    { 169, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
-    { 175, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
-    { 181, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
-    { 187, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
-    { 193, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
-    { 110, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 35, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 31, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 119, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 0, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 8, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 14, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 125, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
+    { 132, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
+    { 139, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
+    { 146, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
+    { 152, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
+    { 158, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
+    { 164, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
+    { 170, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
+    { 176, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
+    { 85, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 94, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 98, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 102, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { 199, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
-    { 211, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
-    { 223, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
-    { 235, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
-    { 249, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
-    { 263, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
-    { 277, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
-    { 291, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
-    { 305, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
-    { 319, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
-    { 335, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
-    { 348, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
-    { 35, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 182, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
+    { 194, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
+    { 206, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
+    { 218, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
+    { 232, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
+    { 246, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
+    { 260, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
+    { 274, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
+    { 288, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
+    { 302, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
+    { 318, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
+    { 331, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
+    { 94, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { 362, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 374, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 389, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 401, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 410, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 420, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 39, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 429, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 448, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 467, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 110, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 345, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 357, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 372, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 384, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 393, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 403, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 412, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 417, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 436, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 455, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 85, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { 362, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 374, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 389, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 401, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 410, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 420, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 39, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 429, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 448, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 467, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 486, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
-    { 110, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 345, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 357, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 372, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 384, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 393, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 403, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 412, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 417, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 436, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 455, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 474, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
+    { 85, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { 496, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
+    { 484, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
     /* bit_result (Table 6.12) */
-    { 504, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
-    { 35, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 492, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
+    { 94, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { 514, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
-    { 532, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
-    { 401, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 410, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 420, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 39, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 502, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
+    { 520, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
+    { 384, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 393, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 403, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 412, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
     /* calibration_result (Table 6.14) */
-    { 550, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
-    { 567, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 577, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 587, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 595, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 603, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 611, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 619, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 627, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 635, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 643, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 651, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 659, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 667, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 674, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 681, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 538, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
+    { 555, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 565, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 575, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 583, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 591, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 599, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 607, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 615, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 623, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 631, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 639, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 647, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 655, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 662, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 669, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { 550, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
-    { 688, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
-    { 577, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 587, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 692, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
-    { 703, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
-    { 717, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
-    { 730, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
-    { 35, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 538, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
+    { 676, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
+    { 565, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 575, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 680, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
+    { 691, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
+    { 705, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
+    { 718, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
+    { 94, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { 110, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 85, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { 550, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
-    { 567, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 110, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 587, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 595, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 603, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 611, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 619, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 627, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 635, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 643, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 651, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 659, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 667, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 674, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 681, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 538, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
+    { 555, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 85, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 575, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 583, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 591, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 599, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 607, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 615, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 623, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 631, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 639, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 647, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 655, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 662, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 669, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { 741, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
+    { 729, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
 };
 
 static const struct {
@@ -1400,7 +1411,7 @@ const char *ilahrs_usw_flag_name(unsigned bit)
 
 /* One field: name, format, template width, fraction digits, struct member, range. */
 static const struct {
-    uint16_t name;
+    uint8_t name;
     uint8_t hex;
     uint8_t width;
     uint8_t decimals;
@@ -1421,7 +1432,7 @@ static const struct {
 
 const char *ilahrs_pahr_field_name(size_t index)
 {
-    return index < ILAHRS_PAHR_FIELD_COUNT ? FIELD_NAME(ilahrs_pahr_fields[index].name) : NULL;
+    return index < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[index].name) : NULL;
 }
 
 bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max)
@@ -1732,7 +1743,7 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
         size_t field;
         ilahrs_error_kind_t kind = pahr_body(p, end, out, &at, &field);
         return kind == ILAHRS_OK
-            || fail(err, kind, at, field < ILAHRS_PAHR_FIELD_COUNT ? FIELD_NAME(ilahrs_pahr_fields[field].name) : NULL);
+            || fail(err, kind, at, field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
     }
 }
 
@@ -1775,7 +1786,7 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         int32_t value = pahr_get(in, k);
         if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
-            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
+            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
         }
     }
     memcpy(buf, PAHR_PREFIX, PAHR_PREFIX_LENGTH);
@@ -1849,7 +1860,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         double value = values[k];
         if (!ilahrs_pahr_fields[k].hex) {
             if (!(value - value == 0.0)) { /* NaN or infinite */
-                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
+                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
             }
             value *= (double)ilahrs_pahr_fields[k].divisor;
         }
@@ -1860,7 +1871,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, FIELD_NAME(ilahrs_pahr_fields[k].name));
+            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
         }
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {

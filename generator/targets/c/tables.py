@@ -144,7 +144,7 @@ def _index(table: list[Bounds], b: Bounds) -> int:
 
 
 def build_tables(spec: Spec) -> Tables:
-    kinds = ("error", "frame", "field", "command", "payload", "variant", "mode", "flag")
+    kinds = ("error", "frame", "field", "sentence", "date", "command", "payload", "variant", "mode", "flag")
     pools = {name: StringPool(name) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
@@ -156,9 +156,9 @@ def build_tables(spec: Spec) -> Tables:
     names = pools["field"]
     if spec.nmea is not None:
         for nf in spec.nmea.fields:
-            names.add(nf.name)
+            pools["sentence"].add(nf.name)
     if spec.date is not None:
-        names.add("date")
+        pools["date"].add("date")
     for c in spec.commands:
         pools["command"].add(c.name)
     for v in spec.variants:
