@@ -1986,6 +1986,66 @@ static inline size_t ilahrs_acknowledgement_build_frame(const ilahrs_acknowledge
 }
 
 /* ======================================================================================== */
+/* Parameter blocks: the data message that must follow a command                            */
+/* ======================================================================================== */
+
+
+/**
+ * The parameter block that must follow LoadAHRSPar without pause (Parameters to load, Table 6.9):
+ * a data frame (E5) carrying `block`, checked as ilahrs_payload_build() checks it. Start `block`
+ * from ilahrs_payload_defaults(); send ilahrs_build_load_ahrs_par() first.
+ * @return the frame size (50 + ILAHRS_FRAME_OVERHEAD), or 0 on failure
+ */
+static inline size_t ilahrs_build_load_ahrs_par_block(const ilahrs_ahrs_parameters_load_t *block, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, block, out, cap, err);
+}
+
+/**
+ * The parameter block that must follow Start2DClb without pause (Calibration parameters, Table 6.13):
+ * a data frame (E5) carrying `block`, checked as ilahrs_payload_build() checks it. Start `block`
+ * from ilahrs_payload_defaults(); send ilahrs_build_start_2d_clb() first.
+ * @return the frame size (22 + ILAHRS_FRAME_OVERHEAD), or 0 on failure
+ */
+static inline size_t ilahrs_build_start_2d_clb_block(const ilahrs_calibration_parameters_t *block, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, block, out, cap, err);
+}
+
+/**
+ * The parameter block that must follow Start2D2TClb without pause (Calibration parameters, Table 6.13):
+ * a data frame (E5) carrying `block`, checked as ilahrs_payload_build() checks it. Start `block`
+ * from ilahrs_payload_defaults(); send ilahrs_build_start_2d2t_clb() first.
+ * @return the frame size (22 + ILAHRS_FRAME_OVERHEAD), or 0 on failure
+ */
+static inline size_t ilahrs_build_start_2d2t_clb_block(const ilahrs_calibration_parameters_t *block, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, block, out, cap, err);
+}
+
+/**
+ * The parameter block that must follow Start3DClb without pause (Calibration parameters, Table 6.13):
+ * a data frame (E5) carrying `block`, checked as ilahrs_payload_build() checks it. Start `block`
+ * from ilahrs_payload_defaults(); send ilahrs_build_start_3d_clb() first.
+ * @return the frame size (22 + ILAHRS_FRAME_OVERHEAD), or 0 on failure
+ */
+static inline size_t ilahrs_build_start_3d_clb_block(const ilahrs_calibration_parameters_t *block, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, block, out, cap, err);
+}
+
+/**
+ * The parameter block that must follow StartClbRun without pause (Calibration run parameters, Table 6.16):
+ * a data frame (E5) carrying `block`, checked as ilahrs_payload_build() checks it. Start `block`
+ * from ilahrs_payload_defaults(); send ilahrs_build_start_clb_run() first.
+ * @return the frame size (6 + ILAHRS_FRAME_OVERHEAD), or 0 on failure
+ */
+static inline size_t ilahrs_build_start_clb_run_block(const ilahrs_calibration_run_parameters_t *block, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    return ilahrs_payload_build_frame(ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, block, out, cap, err);
+}
+
+/* ======================================================================================== */
 /* Named values and encodings                                                               */
 /* ======================================================================================== */
 
