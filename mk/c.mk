@@ -162,9 +162,12 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 
 # --- bench, footprint, fuzz ----------------------------------------------------------------
 
+C_BENCH_OPT ?= -O2
+
 $(C_OUT)/bench_stream: bench/c/bench_stream.c bench/c/capture.c bench/c/capture.h $(C_LIB)
 	@mkdir -p $(@D)
-	gcc $(C_STD) -O2 -I$(C_DIR) -Ibench/c bench/c/bench_stream.c bench/c/capture.c $(C_DIR)/ilahrs.c -o $@
+	gcc $(C_STD) $(C_BENCH_OPT) -DBENCH_BUILD='"gcc $(C_BENCH_OPT)"' -I$(C_DIR) -Ibench/c \
+		bench/c/bench_stream.c bench/c/capture.c $(C_DIR)/ilahrs.c -o $@
 
 # build/bench/capture.bin is the same capture bench_stream builds in memory (64 MiB, seed 1), for
 # other bindings' benchmarks; capture.txt says what the C decoder finds in it.
