@@ -62,30 +62,33 @@ def frame(spec: Spec, rng: random.Random) -> bytes:
     return bytes(body)
 
 
-def nmea_field(field: NmeaField, rng: random.Random) -> str:
-    """A field as a device may write it: any padding, fewer decimals, either hex case; sometimes
-    out of range or beyond the grammar."""
+def nmea_field(field: NmeaField, rng: random.Random, canonical: bool) -> str:
+    """A field as builders write it (`canonical`: every field at its template width, E16) or as a
+    device may write it (any padding, fewer decimals, either hex case); sometimes out of range."""
     if field.format == "hex":
         value = rng.randint(field.min, field.max)
-        text = f"{value:0{rng.randint(1, field.width)}X}" if value else "0"
+        text = f"{value:0{field.width if canonical else rng.randint(1, field.width)}X}"
         return text.lower() if rng.random() < 0.3 else text
     low, high = field.min, field.max
     if rng.random() < 0.05:
         low, high = field.min - 10 * field.divisor, field.max + 10 * field.divisor
     scaled = rng.randint(low, high)
+    sign = "-" if scaled < 0 else ""
     whole, fraction = divmod(abs(scaled), field.divisor)
-    decimals = rng.randint(0, field.decimals + (1 if rng.random() < 0.05 else 0))
     digits = f"{fraction:0{field.decimals}d}" if field.decimals else ""
+    if canonical:
+        return f"{sign}{whole:0{max(field.width - len(sign), 1)}d}" + (f".{digits}" if digits else "")
+    decimals = rng.randint(0, field.decimals + (1 if rng.random() < 0.05 else 0))
     digits = (digits + "0")[:decimals] if decimals else ""
-    text = f"{whole:0{rng.randint(1, field.width)}d}" + (f".{digits}" if digits else "")
-    return ("-" if scaled < 0 else "") + text
+    return f"{sign}{whole:0{rng.randint(1, field.width)}d}" + (f".{digits}" if digits else "")
 
 
 def sentence(spec: Spec, rng: random.Random) -> bytes:
     """A $PAHR sentence with a right (usually) or wrong checksum."""
     nmea = spec.nmea
     assert nmea is not None
-    fields = ",".join(nmea_field(f, rng) for f in nmea.fields)
+    canonical = rng.random() < 0.5
+    fields = ",".join(nmea_field(f, rng, canonical) for f in nmea.fields)
     if rng.random() < 0.5:
         # Broken fields under a right checksum reach the field checks.
         fields = mutate(fields.encode("latin-1"), rng, FIELD_BYTES).decode("latin-1")

@@ -134,7 +134,16 @@ pub struct PahrSentence {
 
 /// The sentence checksum of `body`: the XOR of its bytes.
 pub fn checksum(body: &[u8]) -> u8 {
-    body.iter().fold(0, |sum, byte| sum ^ byte)
+    // Eight bytes at a time, then the lanes folded into one byte.
+    let mut words = body.chunks_exact(8);
+    let lanes = words.by_ref().fold(0u64, |lanes, word| {
+        lanes ^ u64::from_le_bytes(word.try_into().unwrap_or([0; 8]))
+    });
+    let lanes = lanes ^ (lanes >> 32);
+    let lanes = lanes ^ (lanes >> 16);
+    let lanes = lanes ^ (lanes >> 8);
+    let rest = words.remainder().iter();
+    rest.fold((lanes & 0xFF) as u8, |sum, byte| sum ^ byte)
 }
 
 impl PahrSentence {
@@ -178,6 +187,14 @@ impl PahrSentence {
 
     /// The sentence with these scaled values (sentence order), checked against the ranges.
     fn from_scaled(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
+        let sentence = PahrSentence::from_checked(values)?;
+        sentence.validate()?;
+        Ok(sentence)
+    }
+
+    /// The sentence with these scaled values (sentence order), already checked against the
+    /// ranges.
+    fn from_checked(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
         let roll = i32::try_from(values[0]);
         let pitch = i32::try_from(values[1]);
         let heading = i32::try_from(values[2]);
@@ -192,7 +209,6 @@ impl PahrSentence {
             vdd: vdd.map_err(|_| refuse(4))?,
             usw: usw.map_err(|_| refuse(5))?,
         };
-        sentence.validate()?;
         Ok(sentence)
     }
 
@@ -339,6 +355,11 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
     if checksum(body.get(1..).unwrap_or(&[])) != sent {
         return Err(Error::at(ErrorKind::BadChecksum, star + 1));
     }
+    if data.len() == CANONICAL_LENGTH {
+        if let Some(values) = canonical_values(body) {
+            return PahrSentence::from_checked(values);
+        }
+    }
     // Each field in turn; the first bad one is reported once the fields are counted.
     let mut values = [0i64; FIELD_COUNT];
     let mut first_error = None;
@@ -376,7 +397,140 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
     if let Some(error) = first_error {
         return Err(error);
     }
-    PahrSentence::from_scaled(values)
+    PahrSentence::from_checked(values)
+}
+
+/// The characters a field takes in the layout builders write (every field at its template
+/// width).
+const fn canonical_width(format: Format) -> usize {
+    match format {
+        Format::Decimal { width, decimals: 0 } | Format::Hex { width } => width,
+        Format::Decimal { width, decimals } => width + 1 + decimals as usize,
+    }
+}
+
+/// Where each field starts in the layout builders write.
+const CANONICAL_STARTS: [usize; FIELD_COUNT] = {
+    let mut starts = [0; FIELD_COUNT];
+    let mut at = PREFIX.len();
+    let mut index = 0;
+    while index < FIELD_COUNT {
+        starts[index] = at;
+        at += canonical_width(FIELDS[index].format) + 1;
+        index += 1;
+    }
+    starts
+};
+
+/// The length of a sentence in the layout builders write (bytes).
+pub(crate) const CANONICAL_LENGTH: usize =
+    CANONICAL_STARTS[FIELD_COUNT - 1] + canonical_width(FIELDS[FIELD_COUNT - 1].format) + TAIL;
+
+/// The most characters a field may have for the fast path, which sums digits without
+/// saturating.
+const CANONICAL_MAX_DIGITS: usize = 18;
+
+/// A whole sentence in the layout builders write (`$` through CR LF, [`CANONICAL_LENGTH`]
+/// bytes), or `None`. Every byte is checked, so such a sentence holds no earlier LF: the stream
+/// decoder may take it without looking for the end first.
+pub(crate) fn parse_canonical(data: &[u8]) -> Option<PahrSentence> {
+    let star = CANONICAL_LENGTH - TAIL;
+    let (body, tail) = (data.get(..star)?, data.get(star..)?);
+    let [b'*', high, low, b'\r', b'\n'] = *tail else {
+        return None;
+    };
+    let sent = hex_digit(high)? << 4 | hex_digit(low)?;
+    if !body.starts_with(PREFIX) || checksum(body.get(1..)?) != sent {
+        return None;
+    }
+    PahrSentence::from_checked(canonical_values(body)?).ok()
+}
+
+/// The fast path for a sentence in the layout builders write: every field at its template width
+/// at a fixed position, read without a branch per character. `body` runs to the star. Accepts
+/// only what the general path accepts, with the same values; `None` leaves the decision (and
+/// the error) to it.
+fn canonical_values(body: &[u8]) -> Option<[i64; FIELD_COUNT]> {
+    let mut ok = true;
+    let values = [
+        canonical_decimal::<4, 2>(body, CANONICAL_STARTS[0], &mut ok),
+        canonical_decimal::<3, 2>(body, CANONICAL_STARTS[1], &mut ok),
+        canonical_decimal::<3, 2>(body, CANONICAL_STARTS[2], &mut ok),
+        canonical_decimal::<3, 1>(body, CANONICAL_STARTS[3], &mut ok),
+        canonical_decimal::<1, 2>(body, CANONICAL_STARTS[4], &mut ok),
+        canonical_hex::<4>(body, CANONICAL_STARTS[5], &mut ok),
+    ];
+    for ((value, spec), &at) in values.iter().zip(&FIELDS).zip(&CANONICAL_STARTS) {
+        ok &= *value >= spec.min && *value <= spec.max;
+        ok &= body.get(at.wrapping_sub(1)) == Some(&b',');
+    }
+    ok.then_some(values)
+}
+
+/// A decimal field of `WIDTH` integer characters (a `-` counting as one where a digit follows
+/// it), `.` and `DECIMALS` digits at `body[at..]`, scaled by 10^DECIMALS; clears `ok` when it is
+/// not one.
+#[inline(always)]
+fn canonical_decimal<const WIDTH: usize, const DECIMALS: u32>(
+    body: &[u8],
+    at: usize,
+    ok: &mut bool,
+) -> i64 {
+    let format = Format::Decimal {
+        width: WIDTH,
+        decimals: DECIMALS,
+    };
+    let size = canonical_width(format);
+    if size > CANONICAL_MAX_DIGITS {
+        *ok = false;
+        return 0;
+    }
+    let Some(text) = body.get(at..at + size) else {
+        *ok = false;
+        return 0;
+    };
+    let negative = WIDTH > 1 && text.first() == Some(&b'-');
+    let mut magnitude = 0i64;
+    for (index, byte) in text.iter().enumerate() {
+        if index == WIDTH {
+            *ok &= *byte == b'.';
+        } else if !(negative && index == 0) {
+            let digit = byte.wrapping_sub(b'0');
+            *ok &= digit <= 9;
+            magnitude = magnitude * 10 + i64::from(digit);
+        }
+    }
+    if negative {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// A hex field of `WIDTH` digits, either case, at `body[at..]`; clears `ok` when it is not one.
+#[inline(always)]
+fn canonical_hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
+    if WIDTH > CANONICAL_MAX_DIGITS {
+        *ok = false;
+        return 0;
+    }
+    let Some(text) = body.get(at..at + WIDTH) else {
+        *ok = false;
+        return 0;
+    };
+    let mut value = 0i64;
+    for byte in text {
+        let digit = byte.wrapping_sub(b'0');
+        let letter = (byte | 0x20).wrapping_sub(b'a');
+        *ok &= digit <= 9 || letter <= 5;
+        let digit = if digit <= 9 {
+            digit
+        } else {
+            letter.wrapping_add(10)
+        };
+        value = value * 16 + i64::from(digit);
+    }
+    value
 }
 
 /// Magnitudes saturate here, far above every field's range (and far below `i64::MAX`).
@@ -482,11 +636,14 @@ fn scale_round(value: f64, scale: f64) -> Option<i64> {
 
 /// The value of a hex digit, either case.
 fn hex_digit(byte: u8) -> Option<u8> {
-    match byte {
-        b'0'..=b'9' => Some(byte - b'0'),
-        b'a'..=b'f' => Some(byte - b'a' + 10),
-        b'A'..=b'F' => Some(byte - b'A' + 10),
-        _ => None,
+    let digit = byte.wrapping_sub(b'0');
+    let letter = (byte | 0x20).wrapping_sub(b'a');
+    if digit <= 9 {
+        Some(digit)
+    } else if letter <= 5 {
+        Some(letter + 10)
+    } else {
+        None
     }
 }
 

@@ -28,7 +28,10 @@
 //! ```
 
 use crate::frame::{check_frame, Frame, HEADER};
-use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
+use crate::nmea::{
+    parse_body, parse_canonical, PahrSentence, CANONICAL_LENGTH, MAX_LENGTH as MAX_SENTENCE_LENGTH,
+    PREFIX,
+};
 
 /// The most bytes the decoder holds: the longest frame or sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
@@ -154,6 +157,12 @@ fn decide_frame(data: &[u8]) -> Decision<'_> {
 
 /// Decides on a sentence candidate: it runs to the first LF within the longest sentence.
 fn decide_sentence(data: &[u8]) -> Decision<'_> {
+    // A sentence in the builders' layout needs no search for its end.
+    if let Some(raw) = data.get(..CANONICAL_LENGTH) {
+        if let Some(sentence) = parse_canonical(raw) {
+            return Decision::Accept(raw.len(), Event::Sentence(raw, sentence));
+        }
+    }
     let window = data.get(..MAX_SENTENCE_LENGTH).unwrap_or(data);
     match find_byte(window, b'\n') {
         Some(lf) => {
