@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The reference model of the AHRS: what the device does with every message, as time passes.
 
@@ -60,6 +60,7 @@ from .statemachine import (
     STATES,
     TIMER_EVENTS,
     TIMER_FIELDS,
+    UNKNOWN,
     Transition,
     command_event,
     firmware_version,
@@ -372,6 +373,11 @@ class Device:
         return STATES[self._state].mode
 
     @property
+    def output_format(self) -> str | None:
+        """The output format the last start command chose (a payload name, or the $PAHR sentence)."""
+        return self._output
+
+    @property
     def now(self) -> float:
         """Seconds since power-up."""
         return self._now / _NS
@@ -420,7 +426,7 @@ class Device:
         expects = STATES[self._state].expects
         event: str | None
         if frame.message_type == MessageType.COMMAND and len(frame.payload) == 1:
-            event = command_event(frame.payload[0], self._state) or OTHER_MESSAGE
+            event = command_event(frame.payload[0], self._state) or UNKNOWN
         elif expects is not None and len(frame.payload) == PAYLOADS[expects].SIZE:
             event = PARAMETER_BLOCK  # message type 0 or 1 (E5)
         else:

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
@@ -190,6 +190,11 @@ class Host:
     def owed(self) -> tuple[str, ...]:
         """What the device still owes for the last command (ack, output, payload names)."""
         return tuple(o.item for o in self._owed)
+
+    @property
+    def pending(self) -> int:
+        """Received bytes held while the decoder waits to decide on them."""
+        return self._decoder.pending
 
     @property
     def output_format(self) -> str | None:

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
@@ -300,7 +300,7 @@ class AhrsClient:
         """LowPowerOn or LowPowerOff. Going to sleep from continuous output returns the last
         block, which carries the sleep mode bits (E35)."""
         command = 'LowPowerOn' if on else 'LowPowerOff'
-        for event in self._request(command, None):
+        for event in self.request(command):
             if isinstance(event, Output):
                 return event.data
         return None

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The device's behaviour (6.1, 6.3, 6.4) as data: state x event -> next state and what the AHRS sends.
 
@@ -52,6 +52,7 @@ __all__ = [
     "TIMER_EVENTS",
     "TIMER_FIELDS",
     "TRANSITIONS",
+    "UNKNOWN",
     "StateInfo",
     "Transition",
     "command_event",
@@ -76,6 +77,8 @@ PARAMETER_BLOCK: Final = 'parameter_block'
 """A data message whose payload has the size of the table the current state expects."""
 OTHER_MESSAGE: Final = 'other_message'
 """A data message of any other size."""
+UNKNOWN: Final = 'unknown'
+"""A command frame whose code no command of Table C.1 has."""
 BLOCK_TIMEOUT: Final = 'block_timeout'
 """No parameter block within parameter_block_timeout_s of the command (E34)."""
 ALIGNMENT_DONE: Final = 'alignment_done'
@@ -88,6 +91,7 @@ EVENTS: Final[Mapping[str, str]] = MappingProxyType(
     {
         PARAMETER_BLOCK: 'A data message whose payload has the size of the table the current state expects.',
         OTHER_MESSAGE: 'A data message of any other size.',
+        UNKNOWN: 'A command frame whose code no command of Table C.1 has.',
         BLOCK_TIMEOUT: 'No parameter block within parameter_block_timeout_s of the command (E34).',
         ALIGNMENT_DONE: 'The initial alignment time (Table 6.9, 30 s by default) has elapsed.',
         ACCUMULATION_DONE: 'The accumulation time of the calibration run (Table 6.13) has elapsed.',
@@ -318,13 +322,19 @@ TRANSITIONS: Final[Mapping[tuple[str, str], Transition]] = MappingProxyType(
             Transition('idle', (), erratum='E14'),
         ('awaiting_parameters', 'parameter_block'):
             Transition('idle', ('ack',)),
+        ('awaiting_parameters', 'unknown'):
+            Transition('idle', (), erratum='E34'),
         ('awaiting_parameters', 'other_message'):
             Transition('idle', (), erratum='E34'),
         ('awaiting_parameters', 'block_timeout'):
             Transition('idle', (), erratum='E34'),
+        ('calibration_awaiting_parameters', 'unknown'):
+            Transition('idle', (), erratum='E34'),
         ('calibration_awaiting_parameters', 'other_message'):
             Transition('idle', (), erratum='E34'),
         ('calibration_awaiting_parameters', 'block_timeout'):
+            Transition('idle', (), erratum='E34'),
+        ('runs_awaiting_parameters', 'unknown'):
             Transition('idle', (), erratum='E34'),
         ('runs_awaiting_parameters', 'other_message'):
             Transition('idle', (), erratum='E34'),
@@ -336,6 +346,8 @@ TRANSITIONS: Final[Mapping[tuple[str, str], Transition]] = MappingProxyType(
             Transition('idle', ('ack',)),
         ('run_awaiting_parameters', 'ExitClb'):
             Transition('idle', ('ack',)),
+        ('run_awaiting_parameters', 'unknown'):
+            Transition('runs_ready', (), erratum='E34'),
         ('run_awaiting_parameters', 'other_message'):
             Transition('runs_ready', (), erratum='E34'),
         ('run_awaiting_parameters', 'block_timeout'):
@@ -619,7 +631,7 @@ _SHARED_CODES: Final[Mapping[tuple[int, str], str]] = MappingProxyType(
         (0xFE, 'continuous'): 'Stop',
         (0xFE, 'on_request'): 'Stop',
         (0xFE, 'calibration'): 'ExitClb',
-        (0xFE, 'sleep'): 'ExitClb',
+        (0xFE, 'sleep'): 'Stop',
     }
 )
 
@@ -641,11 +653,14 @@ def lookup(state: str, event: str, firmware: str | None = None) -> Transition | 
 
 def command_event(code: int, state: str) -> str | None:
     """The command a code means in `state`: of the names sharing a code, the one valid in the
-    state's mode (0xFE is ExitClb in calibration, Stop elsewhere, E14); None for an unknown code."""
+    state's mode, else the code's default name (0xFE is ExitClb in calibration, Stop elsewhere,
+    E14); None for a code no command has."""
     names = CODES.get(code)
     if names is None:
         return None
-    return _SHARED_CODES.get((code, STATES[state].mode), names[0])
+    if len(names) == 1:
+        return names[0]
+    return _SHARED_CODES.get((code, STATES[state].mode))
 
 
 def timer_transition(state: str) -> tuple[str, Transition] | None:
@@ -677,11 +692,11 @@ _MERMAID: Final = (
     '    idle --> sleep: LowPowerOn',
     '    idle --> calibration_awaiting_parameters: Start2DClb, Start3DClb',
     '    idle --> runs_awaiting_parameters: Start2D2TClb',
-    '    awaiting_parameters --> idle: parameter_block / ack, other_message, block_timeout, *',
-    '    calibration_awaiting_parameters --> idle: other_message, block_timeout, ExitClb / ack, *',
-    '    runs_awaiting_parameters --> idle: other_message, block_timeout, ExitClb / ack, *',
+    '    awaiting_parameters --> idle: parameter_block / ack, unknown, other_message, block_timeout, *',
+    '    calibration_awaiting_parameters --> idle: unknown, other_message, block_timeout, ExitClb / ack, *',
+    '    runs_awaiting_parameters --> idle: unknown, other_message, block_timeout, ExitClb / ack, *',
     '    run_awaiting_parameters --> idle: ExitClb / ack',
-    '    run_awaiting_parameters --> runs_ready: other_message, block_timeout, *',
+    '    run_awaiting_parameters --> runs_ready: unknown, other_message, block_timeout, *',
     '    aligning_continuous --> continuous: alignment_done / initial_alignment',
     '    aligning_on_request --> on_request: alignment_done / initial_alignment',
     '    continuous --> continuous: output_due / output',

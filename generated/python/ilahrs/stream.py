@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash b29217e2acd36b99c3446f15c5c54dd170e9aaaecfe9535ae7c08a1ac85716ef.
+# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
 # Do not edit: change the spec or the generator and run `make generate`.
 """A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
 
