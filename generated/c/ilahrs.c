@@ -956,14 +956,12 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
 size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t cap, ilahrs_error_t *err)
 {
     ilahrs_frame_t frame;
-    ilahrs_acknowledgement_t payload;
     size_t at;
     if (!ilahrs_frame_parse(message, len, &frame, err)) {
         return 0;
     }
     at = ILAHRS_FRAME_PAYLOAD_OFFSET + frame.payload_size;
     /* The table is the checksum alone, which needs no check: write it here (no field table). */
-    (void)payload;
     if (out == NULL || cap < ILAHRS_ACKNOWLEDGEMENT_SIZE + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
     }
