@@ -300,11 +300,10 @@ def _raw(value: object, row: _FillRow, variant: Variant) -> object:
 
 @dataclass(slots=True)
 class _Calibration:
-    """A calibration in progress: its type, the runs done, the accumulation under way."""
+    """A calibration in progress: its type, the runs done, the last evaluation and result."""
 
     type: int
     runs: list[dict[str, object]] = field(default_factory=list)
-    accumulation_start: float | None = None
     last: dict[str, object] | None = None
     """The evaluation of the accumulation that ended last."""
     result: dict[str, object] | None = None
@@ -630,8 +629,6 @@ class Device:
         # time ... to provide necessary rotation"), keeping the pitch and roll of the alignment.
         seconds = self._setting("accumulation")
         self._motion.start("turning", t, turn_rate=360.0 / (0.8 * seconds))
-        if self._calibration is not None:
-            self._calibration.accumulation_start = t
 
     def _end_accumulation(self) -> None:
         calibration = self._calibration
