@@ -1,7 +1,8 @@
 //! bench-rust: decodes the benchmark capture (build/bench/capture.bin, written by the C
 //! benchmark's capture tool; when it is missing, a capture made here with the same recipe) with
-//! the Rust stream decoder, whole and in 4 KiB chunks, next to a loop that only sums every
-//! byte. Prints `name: X MiB/s` lines; the best of several runs counts.
+//! the Rust stream decoder, whole, in 4 KiB chunks and one byte at a time (its first 4 MiB),
+//! next to a loop that only sums every byte; and 16 MiB of seeded random bytes (all garbage).
+//! Prints `name: X MiB/s` lines; the best of several runs counts.
 //!
 //!   ilahrs-bench [CAPTURE] [--size BYTES]
 
@@ -160,6 +161,13 @@ fn main() {
             data
         }
     };
+    // Seeded random bytes: nothing but false starts and garbage to scan.
+    let mut rng = Rng(7);
+    let garbage: Vec<u8> = (0..16usize << 20).map(|_| rng.next() as u8).collect();
+    let (garbage_time, _) = best(|| decode(&garbage, garbage.len()));
+    // One byte at a time, as a UART interrupt handler would feed it (the first 4 MiB).
+    let head = &data[..data.len().min(4 << 20)];
+    let (bytewise_time, _) = best(|| decode(head, 1));
     let (sum_time, _) = best(|| sum_bytes(&data));
     let (whole_time, whole) = best(|| decode(&data, data.len().max(1)));
     let (chunk_time, chunks) = best(|| decode(&data, 4096));
@@ -179,6 +187,14 @@ fn main() {
     println!(
         "rust_stream_4k_chunks: {:.0} MiB/s",
         mib_per_s(data.len(), chunk_time)
+    );
+    println!(
+        "rust_stream_bytewise: {:.0} MiB/s",
+        mib_per_s(head.len(), bytewise_time)
+    );
+    println!(
+        "rust_stream_random_bytes: {:.0} MiB/s",
+        mib_per_s(garbage.len(), garbage_time)
     );
     println!("rust_stream / rust_sum_bytes: {:.2}", sum_time / whole_time);
     println!(

@@ -164,7 +164,7 @@ fn decide_sentence(data: &[u8]) -> Decision<'_> {
         }
     }
     let window = data.get(..MAX_SENTENCE_LENGTH).unwrap_or(data);
-    match find_byte(window, b'\n') {
+    match find_any(window, [b'\n']) {
         Some(lf) => {
             // The first LF ends the candidate, so the only CR LF it can hold is its last two
             // bytes: what `PahrSentence::parse` checks before the rest.
@@ -199,34 +199,37 @@ fn decide_sentence(data: &[u8]) -> Decision<'_> {
     }
 }
 
-/// The index of the first `byte` in `data`, looked for eight bytes at a time.
-pub(crate) fn find_byte(data: &[u8], byte: u8) -> Option<usize> {
+/// The index of the first byte of `data` equal to one of `bytes`, looked for eight bytes at a
+/// time.
+pub(crate) fn find_any<const N: usize>(data: &[u8], bytes: [u8; N]) -> Option<usize> {
     const ONES: u64 = u64::from_ne_bytes([0x01; 8]);
     const HIGHS: u64 = u64::from_ne_bytes([0x80; 8]);
-    let pattern = ONES * u64::from(byte);
     let mut words = data.chunks_exact(8);
     let mut at = 0;
     for word in words.by_ref() {
-        let word = u64::from_le_bytes(word.try_into().unwrap_or([0; 8])) ^ pattern;
-        // A zero byte of `word` is a match; the lowest flagged byte is always a true one.
-        let found = word.wrapping_sub(ONES) & !word & HIGHS;
+        let word = u64::from_le_bytes(word.try_into().unwrap_or([0; 8]));
+        // A zero byte of `word ^ pattern` is a match; for each pattern the lowest flagged byte
+        // is a true one, so the lowest of all flags is the first match.
+        let found = bytes.iter().fold(0, |found, byte| {
+            let word = word ^ (ONES * u64::from(*byte));
+            found | (word.wrapping_sub(ONES) & !word & HIGHS)
+        });
         if found != 0 {
             return Some(at + (found.trailing_zeros() / 8) as usize);
         }
         at += 8;
     }
-    words
-        .remainder()
-        .iter()
-        .position(|candidate| *candidate == byte)
+    let mut rest = words.remainder().iter();
+    rest.position(|candidate| bytes.contains(candidate))
         .map(|index| at + index)
 }
 
 /// The index of the first byte of `data` that may start a message, or its length.
 fn next_start(data: &[u8]) -> usize {
-    data.iter()
-        .position(|byte| *byte == FRAME_START || *byte == SENTENCE_START)
-        .unwrap_or(data.len())
+    match data.first() {
+        Some(&FRAME_START | &SENTENCE_START) => 0,
+        _ => find_any(data, [FRAME_START, SENTENCE_START]).unwrap_or(data.len()),
+    }
 }
 
 /// The stream decoder: feed it bytes, get frames and sentences back in order.

@@ -9,7 +9,7 @@ use crate::error::ErrorKind;
 use crate::frame::{self, checksum, Frame, FrameRepr, MessageType};
 use crate::nmea::PahrSentence;
 use crate::payload::{AnyPayload, PayloadKind, Value};
-use crate::stream::{find_byte, StreamDecoder};
+use crate::stream::{find_any, StreamDecoder};
 
 /// Builds a frame of `payload` into an array.
 fn frame_of(message_type: MessageType, payload: &[u8]) -> ([u8; frame::MAX_FRAME_SIZE], usize) {
@@ -288,7 +288,14 @@ fn word_scan_finds_the_first_byte_at_every_position() {
                     }
                 }
                 let expected = data[..len].iter().position(|candidate| *candidate == byte);
-                assert_eq!(find_byte(&data[..len], byte), expected, "{byte} {len} {at}");
+                assert_eq!(
+                    find_any(&data[..len], [byte]),
+                    expected,
+                    "{byte} {len} {at}"
+                );
+                let other = byte.wrapping_add(1);
+                let either = data[..len].iter().position(|c| *c == byte || *c == other);
+                assert_eq!(find_any(&data[..len], [byte, other]), either);
             }
         }
     }
