@@ -206,12 +206,12 @@ def _configure_pty(fd: int) -> None:
 
 def run_pty(line: Line, out: TextIO = sys.stdout) -> int:
     """Serve `line` on a new pseudo-terminal; print its path first. Returns an exit status."""
+    stop = _Stop()  # before the path is printed: a client may signal as soon as it reads it
     master, slave = os.openpty()
     try:
         _configure_pty(slave)
         os.set_blocking(master, False)
         print(os.ttyname(slave), file=out, flush=True)
-        stop = _Stop()
 
         def read() -> bytes:
             try:
