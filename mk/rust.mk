@@ -42,6 +42,7 @@ test-rust: build-rust
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB)
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB) --all-features
 	$(CARGO) test --quiet --release --manifest-path tests/rust/Cargo.toml
+	$(CARGO) test --quiet --release --manifest-path tests/rust/Cargo.toml --features ilahrs/small
 	$(PY) tests/rust/differential.py
 
 SETUP_TARGETS += setup-rust

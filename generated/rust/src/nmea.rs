@@ -355,8 +355,9 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
     if checksum(body.get(1..).unwrap_or(&[])) != sent {
         return Err(Error::at(ErrorKind::BadChecksum, star + 1));
     }
-    if data.len() == CANONICAL_LENGTH {
-        if let Some(values) = canonical_values(body) {
+    #[cfg(not(feature = "small"))]
+    if data.len() == canonical::LENGTH {
+        if let Some(values) = canonical::values(body) {
             return PahrSentence::from_checked(values);
         }
     }
@@ -400,137 +401,136 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
     PahrSentence::from_checked(values)
 }
 
-/// The characters a field takes in the layout builders write (every field at its template
-/// width).
-const fn canonical_width(format: Format) -> usize {
-    match format {
-        Format::Decimal { width, decimals: 0 } | Format::Hex { width } => width,
-        Format::Decimal { width, decimals } => width + 1 + decimals as usize,
-    }
-}
+/// The fast path for sentences in the layout builders write (E16: every field at its template
+/// width, so one length and fixed positions, derived here from the field table): fields read
+/// without a branch per character. It accepts only what the general path accepts, with the same
+/// values; on anything else it steps aside and the general path decides and names the error.
+/// The `small` feature leaves it out.
+#[cfg(not(feature = "small"))]
+pub(crate) mod canonical {
+    use super::{checksum, hex_digit, Format, PahrSentence, FIELDS, FIELD_COUNT, PREFIX, TAIL};
 
-/// Where each field starts in the layout builders write.
-const CANONICAL_STARTS: [usize; FIELD_COUNT] = {
-    let mut starts = [0; FIELD_COUNT];
-    let mut at = PREFIX.len();
-    let mut index = 0;
-    while index < FIELD_COUNT {
-        starts[index] = at;
-        at += canonical_width(FIELDS[index].format) + 1;
-        index += 1;
-    }
-    starts
-};
-
-/// The length of a sentence in the layout builders write (bytes).
-pub(crate) const CANONICAL_LENGTH: usize =
-    CANONICAL_STARTS[FIELD_COUNT - 1] + canonical_width(FIELDS[FIELD_COUNT - 1].format) + TAIL;
-
-/// The most characters a field may have for the fast path, which sums digits without
-/// saturating.
-const CANONICAL_MAX_DIGITS: usize = 18;
-
-/// A whole sentence in the layout builders write (`$` through CR LF, [`CANONICAL_LENGTH`]
-/// bytes), or `None`. Every byte is checked, so such a sentence holds no earlier LF: the stream
-/// decoder may take it without looking for the end first.
-pub(crate) fn parse_canonical(data: &[u8]) -> Option<PahrSentence> {
-    let star = CANONICAL_LENGTH - TAIL;
-    let (body, tail) = (data.get(..star)?, data.get(star..)?);
-    let [b'*', high, low, b'\r', b'\n'] = *tail else {
-        return None;
-    };
-    let sent = hex_digit(high)? << 4 | hex_digit(low)?;
-    if !body.starts_with(PREFIX) || checksum(body.get(1..)?) != sent {
-        return None;
-    }
-    PahrSentence::from_checked(canonical_values(body)?).ok()
-}
-
-/// The fast path for a sentence in the layout builders write: every field at its template width
-/// at a fixed position, read without a branch per character. `body` runs to the star. Accepts
-/// only what the general path accepts, with the same values; `None` leaves the decision (and
-/// the error) to it.
-fn canonical_values(body: &[u8]) -> Option<[i64; FIELD_COUNT]> {
-    let mut ok = true;
-    let values = [
-        canonical_decimal::<4, 2>(body, CANONICAL_STARTS[0], &mut ok),
-        canonical_decimal::<3, 2>(body, CANONICAL_STARTS[1], &mut ok),
-        canonical_decimal::<3, 2>(body, CANONICAL_STARTS[2], &mut ok),
-        canonical_decimal::<3, 1>(body, CANONICAL_STARTS[3], &mut ok),
-        canonical_decimal::<1, 2>(body, CANONICAL_STARTS[4], &mut ok),
-        canonical_hex::<4>(body, CANONICAL_STARTS[5], &mut ok),
-    ];
-    for ((value, spec), &at) in values.iter().zip(&FIELDS).zip(&CANONICAL_STARTS) {
-        ok &= *value >= spec.min && *value <= spec.max;
-        ok &= body.get(at.wrapping_sub(1)) == Some(&b',');
-    }
-    ok.then_some(values)
-}
-
-/// A decimal field of `WIDTH` integer characters (a `-` counting as one where a digit follows
-/// it), `.` and `DECIMALS` digits at `body[at..]`, scaled by 10^DECIMALS; clears `ok` when it is
-/// not one.
-#[inline(always)]
-fn canonical_decimal<const WIDTH: usize, const DECIMALS: u32>(
-    body: &[u8],
-    at: usize,
-    ok: &mut bool,
-) -> i64 {
-    let format = Format::Decimal {
-        width: WIDTH,
-        decimals: DECIMALS,
-    };
-    let size = canonical_width(format);
-    if size > CANONICAL_MAX_DIGITS {
-        *ok = false;
-        return 0;
-    }
-    let Some(text) = body.get(at..at + size) else {
-        *ok = false;
-        return 0;
-    };
-    let negative = WIDTH > 1 && text.first() == Some(&b'-');
-    let mut magnitude = 0i64;
-    for (index, byte) in text.iter().enumerate() {
-        if index == WIDTH {
-            *ok &= *byte == b'.';
-        } else if !(negative && index == 0) {
-            let digit = byte.wrapping_sub(b'0');
-            *ok &= digit <= 9;
-            magnitude = magnitude * 10 + i64::from(digit);
+    /// The characters a field takes.
+    const fn width(format: Format) -> usize {
+        match format {
+            Format::Decimal { width, decimals: 0 } | Format::Hex { width } => width,
+            Format::Decimal { width, decimals } => width + 1 + decimals as usize,
         }
     }
-    if negative {
-        -magnitude
-    } else {
-        magnitude
-    }
-}
 
-/// A hex field of `WIDTH` digits, either case, at `body[at..]`; clears `ok` when it is not one.
-#[inline(always)]
-fn canonical_hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
-    if WIDTH > CANONICAL_MAX_DIGITS {
-        *ok = false;
-        return 0;
-    }
-    let Some(text) = body.get(at..at + WIDTH) else {
-        *ok = false;
-        return 0;
+    /// Where each field starts.
+    const STARTS: [usize; FIELD_COUNT] = {
+        let mut starts = [0; FIELD_COUNT];
+        let mut at = PREFIX.len();
+        let mut index = 0;
+        while index < FIELD_COUNT {
+            starts[index] = at;
+            at += width(FIELDS[index].format) + 1;
+            index += 1;
+        }
+        starts
     };
-    let mut value = 0i64;
-    for byte in text {
-        let digit = byte.wrapping_sub(b'0');
-        let letter = (byte | 0x20).wrapping_sub(b'a');
-        *ok &= digit <= 9 || letter <= 5;
-        let digit = if digit <= 9 {
-            digit
-        } else {
-            letter.wrapping_add(10)
+
+    /// The length of a sentence, `$` through CR LF (bytes).
+    pub(crate) const LENGTH: usize =
+        STARTS[FIELD_COUNT - 1] + width(FIELDS[FIELD_COUNT - 1].format) + TAIL;
+
+    /// The most characters of a decimal field and digits of a hex field the fast path reads
+    /// (more could overflow its sums; such fields take the general path).
+    const MAX_DECIMAL: usize = 18;
+    const MAX_HEX: usize = 15;
+
+    /// A whole sentence (`$` through CR LF, [`LENGTH`] bytes), or `None`. Every byte is checked,
+    /// so such a sentence holds no earlier LF: the stream decoder may take it without looking
+    /// for the end first.
+    pub(crate) fn parse(data: &[u8]) -> Option<PahrSentence> {
+        let star = LENGTH - TAIL;
+        let (body, tail) = (data.get(..star)?, data.get(star..)?);
+        let [b'*', high, low, b'\r', b'\n'] = *tail else {
+            return None;
         };
-        value = value * 16 + i64::from(digit);
+        let sent = hex_digit(high)? << 4 | hex_digit(low)?;
+        if !body.starts_with(PREFIX) || checksum(body.get(1..)?) != sent {
+            return None;
+        }
+        PahrSentence::from_checked(values(body)?).ok()
     }
-    value
+
+    /// The fields of `body` (`$` up to the star), in range, or `None`.
+    pub(crate) fn values(body: &[u8]) -> Option<[i64; FIELD_COUNT]> {
+        let mut ok = true;
+        let values = [
+            decimal::<4, 2>(body, STARTS[0], &mut ok),
+            decimal::<3, 2>(body, STARTS[1], &mut ok),
+            decimal::<3, 2>(body, STARTS[2], &mut ok),
+            decimal::<3, 1>(body, STARTS[3], &mut ok),
+            decimal::<1, 2>(body, STARTS[4], &mut ok),
+            hex::<4>(body, STARTS[5], &mut ok),
+        ];
+        for ((value, spec), &at) in values.iter().zip(&FIELDS).zip(&STARTS) {
+            ok &= *value >= spec.min && *value <= spec.max;
+            ok &= body.get(at.wrapping_sub(1)) == Some(&b',');
+        }
+        ok.then_some(values)
+    }
+
+    /// A decimal field of `WIDTH` integer characters (a `-` counting as one where a digit
+    /// follows it), `.` and `DECIMALS` digits at `body[at..]`, scaled by 10^DECIMALS; clears
+    /// `ok` when it is not one.
+    #[inline(always)]
+    fn decimal<const WIDTH: usize, const DECIMALS: u32>(
+        body: &[u8],
+        at: usize,
+        ok: &mut bool,
+    ) -> i64 {
+        let size = width(Format::Decimal {
+            width: WIDTH,
+            decimals: DECIMALS,
+        });
+        let Some(text) = body.get(at..at + size).filter(|_| size <= MAX_DECIMAL) else {
+            *ok = false;
+            return 0;
+        };
+        let negative = WIDTH > 1 && text.first() == Some(&b'-');
+        let mut magnitude = 0i64;
+        for (index, byte) in text.iter().enumerate() {
+            if index == WIDTH {
+                *ok &= *byte == b'.';
+            } else if !(negative && index == 0) {
+                let digit = byte.wrapping_sub(b'0');
+                *ok &= digit <= 9;
+                magnitude = magnitude.wrapping_mul(10).wrapping_add(i64::from(digit));
+            }
+        }
+        if negative {
+            -magnitude
+        } else {
+            magnitude
+        }
+    }
+
+    /// A hex field of `WIDTH` digits, either case, at `body[at..]`; clears `ok` when it is not
+    /// one.
+    #[inline(always)]
+    fn hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
+        let Some(text) = body.get(at..at + WIDTH).filter(|_| WIDTH <= MAX_HEX) else {
+            *ok = false;
+            return 0;
+        };
+        let mut value = 0i64;
+        for byte in text {
+            let digit = byte.wrapping_sub(b'0');
+            let letter = (byte | 0x20).wrapping_sub(b'a');
+            *ok &= digit <= 9 || letter <= 5;
+            let digit = if digit <= 9 {
+                digit
+            } else {
+                letter.wrapping_add(10)
+            };
+            value = value.wrapping_mul(16).wrapping_add(i64::from(digit));
+        }
+        value
+    }
 }
 
 /// Magnitudes saturate here, far above every field's range (and far below `i64::MAX`).

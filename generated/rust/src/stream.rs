@@ -28,10 +28,9 @@
 //! ```
 
 use crate::frame::{check_frame, Frame, HEADER};
-use crate::nmea::{
-    parse_body, parse_canonical, PahrSentence, CANONICAL_LENGTH, MAX_LENGTH as MAX_SENTENCE_LENGTH,
-    PREFIX,
-};
+#[cfg(not(feature = "small"))]
+use crate::nmea::canonical;
+use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
 
 /// The most bytes the decoder holds: the longest frame or sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
@@ -158,8 +157,9 @@ fn decide_frame(data: &[u8]) -> Decision<'_> {
 /// Decides on a sentence candidate: it runs to the first LF within the longest sentence.
 fn decide_sentence(data: &[u8]) -> Decision<'_> {
     // A sentence in the builders' layout needs no search for its end.
-    if let Some(raw) = data.get(..CANONICAL_LENGTH) {
-        if let Some(sentence) = parse_canonical(raw) {
+    #[cfg(not(feature = "small"))]
+    if let Some(raw) = data.get(..canonical::LENGTH) {
+        if let Some(sentence) = canonical::parse(raw) {
             return Decision::Accept(raw.len(), Event::Sentence(raw, sentence));
         }
     }
@@ -201,6 +201,7 @@ fn decide_sentence(data: &[u8]) -> Decision<'_> {
 
 /// The index of the first byte of `data` equal to one of `bytes`, looked for eight bytes at a
 /// time.
+#[cfg(not(feature = "small"))]
 pub(crate) fn find_any<const N: usize>(data: &[u8], bytes: [u8; N]) -> Option<usize> {
     const ONES: u64 = u64::from_ne_bytes([0x01; 8]);
     const HIGHS: u64 = u64::from_ne_bytes([0x80; 8]);
@@ -222,6 +223,13 @@ pub(crate) fn find_any<const N: usize>(data: &[u8], bytes: [u8; N]) -> Option<us
     let mut rest = words.remainder().iter();
     rest.position(|candidate| bytes.contains(candidate))
         .map(|index| at + index)
+}
+
+/// The index of the first byte of `data` equal to one of `bytes` (the `small` feature: byte by
+/// byte).
+#[cfg(feature = "small")]
+pub(crate) fn find_any<const N: usize>(data: &[u8], bytes: [u8; N]) -> Option<usize> {
+    data.iter().position(|candidate| bytes.contains(candidate))
 }
 
 /// The index of the first byte of `data` that may start a message, or its length.
