@@ -36,8 +36,17 @@ lint-rust: setup-rust
 	$(CARGO) clippy --quiet --manifest-path bench/rust/Cargo.toml -- -D warnings
 
 # The differential test runs the Rust and Python runners on the same seeded, mutated inputs
-# (tests/rust/differential.py) and checks sessions against the spec model.
+# (tests/rust/differential.py) and checks sessions against the spec model. A spec with one more
+# command and payload table (tests/c/extend_spec.py) must give a crate that is laid out as
+# rustfmt writes it, clippy-clean, and passes its unit tests, with no template change.
+RUST_EXTENDED := $(RUST_BUILD)/extended
+
 test-rust: build-rust
+	$(PY) tests/c/extend_spec.py $(RUST_EXTENDED)/ilahrs.yaml
+	$(PY) -m generator --spec $(RUST_EXTENDED)/ilahrs.yaml --out $(RUST_EXTENDED)/generated --target rust >/dev/null
+	cargo fmt --check --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml
+	$(CARGO) clippy --quiet --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml --all-targets -- -D warnings
+	$(CARGO) test --quiet --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml
 	$(CARGO) build --quiet --manifest-path $(RUST_LIB) --no-default-features
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB)
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB) --all-features

@@ -532,6 +532,18 @@ def seq(items: list[str], indent: int, head: str = "", tail: str = "", brackets:
     return f"{head}{brackets[0]}\n{_lines(items, indent)}{' ' * indent}{brackets[1]}{tail}"
 
 
+def assign_seq(items: list[str], indent: int, head: str, tail: str = ";") -> str:
+    """`head = [a, b]tail`: on one line when it fits; else the array alone on the next line when it
+    fits there (rustfmt prefers a one-line right-hand side); else one item per line."""
+    inner = ", ".join(items)
+    array = f"[{inner}]"
+    if fits(f"{head} = {array}{tail}", indent) and len(inner) <= SHORT_WIDTH:
+        return f"{head} = {array}{tail}"
+    if len(array) <= SHORT_WIDTH and fits(f"{array}{tail}", indent + 4):
+        return f"{head} =\n{' ' * (indent + 4)}{array}{tail}"
+    return f"{head} = [\n{_lines(items, indent)}{' ' * indent}]{tail}"
+
+
 def signature(head: str, params: list[str], tail: str, indent: int) -> str:
     """`head(params) tail {` on one line when it fits, else one parameter per line."""
     one = f"{head}({', '.join(params)}){tail} {{"
@@ -611,6 +623,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
 
 GLOBALS: dict[str, Any] = {
     "fits": fits,
+    "assign_seq": assign_seq,
     "arm": arm,
     "seq": seq,
     "signature": signature,
