@@ -9,13 +9,17 @@ $(ILAHRS_STAMP): $(VENV)/.stamp generated/python/pyproject.toml
 
 SETUP_TARGETS += $(ILAHRS_STAMP)
 
-PY_LINT_PATHS := generator generated/python tests $(wildcard conformance/*.py conformance/runners/*.py conformance/tools/*.py) $(wildcard bench/python/*.py)
+PY_LINT_PATHS := generator generated/python $(wildcard tests/*.py conformance/*.py conformance/runners/*.py conformance/tools/*.py bench/python/*.py)
+# Helper scripts of one binding live in tests/<binding>/; each folder is checked on its own, since
+# their module names may repeat across folders.
+PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
 
 .PHONY: lint-python test-python
 
 lint-python: setup
-	$(VENV)/bin/ruff check $(PY_LINT_PATHS)
+	$(VENV)/bin/ruff check $(PY_LINT_PATHS) $(PY_LINT_FOLDERS)
 	$(VENV)/bin/mypy $(PY_LINT_PATHS)
+	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 
 test-python: setup
 	$(PY) -m pytest tests
