@@ -218,6 +218,7 @@ class Command:
     parameter_block: str | None = None
     shares_code_with: str | None = None
     default_for_code: bool = False  # the meaning of a shared code in a mode where no name is valid
+    begins_calibration: str | None = None  # the calibration_type value a start command begins
     former_names: tuple[FormerName, ...] = ()
     erratum: str | None = None
 
@@ -444,6 +445,16 @@ class Transition:
     wildcard: bool = False  # from a `*` row
     firmware_before: str | None = None  # only on firmware older than this
     erratum: str | None = None
+    effect: str | None = None  # store_parameters, save_calibration, clear_calibration
+
+
+@dataclass(frozen=True)
+class SmTimer:
+    """A timer of the device and the parameter field that sets it (seconds, or Hz for output)."""
+
+    name: str
+    payload: str
+    field: str
 
 
 TIMER_EVENTS = {"alignment": "alignment_done", "accumulation": "accumulation_done", "output": "output_due"}
@@ -460,6 +471,14 @@ class StateMachine:
     default_alignment_time_s: float
     default_update_rate_hz: float
     result_delay_s: float
+    timers: tuple[SmTimer, ...] = ()
+    min_successful_runs: int | None = None
+
+    def timer(self, name: str) -> SmTimer:
+        for t in self.timers:
+            if t.name == name:
+                return t
+        raise KeyError(name)
 
     def state(self, name: str) -> SmState:
         for s in self.states:
@@ -491,6 +510,16 @@ class StateMachine:
 
     def rows(self, state: str) -> tuple[Transition, ...]:
         return tuple(t for t in self.transitions if t.state == state)
+
+
+@dataclass(frozen=True)
+class SerialLine:
+    """The serial port settings (section 6)."""
+
+    baud_rate: int
+    data_bits: int
+    parity: str
+    stop_bits: int
 
 
 @dataclass(frozen=True)
@@ -530,6 +559,7 @@ class Spec:
     nmea: Nmea | None
     errata: tuple[Erratum, ...]
     state_machine: StateMachine | None = None
+    serial_line: SerialLine | None = None
 
     def payload(self, name: str) -> Payload:
         for p in self.payloads:
@@ -698,6 +728,7 @@ def build(loaded: LoadedSpec) -> Spec:
             parameter_block=c.get("parameter_block"),
             shares_code_with=c.get("shares_code_with"),
             default_for_code=bool(c.get("default_for_code", False)),
+            begins_calibration=c.get("begins_calibration"),
             former_names=tuple(
                 FormerName(f["name"], f.get("until_firmware", ""), _doc(f["doc"])) for f in c.get("former_names", ())
             ),
@@ -852,6 +883,14 @@ def build(loaded: LoadedSpec) -> Spec:
         state_machine=_state_machine(d["state_machine"], [c["name"] for c in d["commands"]])
         if "state_machine" in d
         else None,
+        serial_line=SerialLine(
+            d["serial_line"]["baud_rate"],
+            d["serial_line"]["data_bits"],
+            d["serial_line"]["parity"],
+            d["serial_line"]["stop_bits"],
+        )
+        if "serial_line" in d
+        else None,
     )
 
 
@@ -873,6 +912,7 @@ def _state_machine(raw: dict[str, Any], commands: list[str]) -> StateMachine:
                         send=tuple(row["send"]),
                         firmware_before=row.get("firmware_before"),
                         erratum=row.get("erratum"),
+                        effect=row.get("effect"),
                     )
                 )
     covered = {(t.state, t.event) for t in explicit if t.firmware_before is None}
@@ -912,4 +952,6 @@ def _state_machine(raw: dict[str, Any], commands: list[str]) -> StateMachine:
         default_alignment_time_s=float(timing["default_alignment_time_s"]),
         default_update_rate_hz=float(timing["default_update_rate_hz"]),
         result_delay_s=float(timing["result_delay_s"]),
+        timers=tuple(SmTimer(t["name"], t["payload"], t["field"]) for t in raw.get("timers", ())),
+        min_successful_runs=raw["calibration"]["min_successful_runs"] if "calibration" in raw else None,
     )

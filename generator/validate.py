@@ -322,6 +322,12 @@ def validate(spec: LoadedSpec) -> None:
                 )
         elif c.get("default_for_code"):
             raise spec.error((*path, "default_for_code"), "default_for_code only applies to a shared code")
+        if "begins_calibration" in c:
+            values = [v["name"] for v in enums.get("calibration_type", {}).get("values", [])]
+            if c["begins_calibration"] not in values:
+                raise spec.error(
+                    (*path, "begins_calibration"), f"{c['begins_calibration']!r} is not a calibration_type value"
+                )
         for j, former in enumerate(c.get("former_names", [])):
             if former["name"] in by_name:
                 raise spec.error(
@@ -488,7 +494,25 @@ def _check_state_machine(
                         f"{a['name']} and {b['name']} share code {a['code']:#04x}"
                         f" and are both valid in {sorted(shared)}",
                     )
+    payloads = {p["name"]: p for p in d["payloads"]}
+    timers = {}
+    for i, t in enumerate(sm.get("timers", [])):
+        path = (*base, "timers", i)
+        if t["name"] in timers:
+            raise spec.error((*path, "name"), f"duplicate timer {t['name']!r}")
+        timers[t["name"]] = t
+        if t["payload"] not in payloads:
+            raise spec.error((*path, "payload"), f"unknown payload {t['payload']!r}")
+        fields = {f["name"]: f for f in payloads[t["payload"]]["fields"]}
+        if t["field"] not in fields:
+            raise spec.error((*path, "field"), f"payload {t['payload']!r} has no field {t['field']!r}")
+        unit = fields[t["field"]].get("unit")
+        wanted = "Hz" if t["name"] == "output" else "s"
+        if unit != wanted:
+            raise spec.error((*path, "field"), f"the {t['name']} timer needs a field in {wanted}, not {unit}")
     for i, st in enumerate(sm["states"]):
+        if "timer" in st and "timers" in sm and st["timer"] not in timers:
+            raise spec.error((*base, "states", i, "timer"), f"no entry under timers sets the {st['timer']!r} timer")
         needed = []
         if "timer" in st:
             needed.append(TIMER_EVENTS[st["timer"]])

@@ -54,6 +54,7 @@ def test_missing_answer_is_reported_after_the_timeout() -> None:
     (missing,) = host.advance(0.01)
     assert isinstance(missing, ProtocolError)
     assert (missing.problem, missing.expected, missing.source) == ("missing", "ahrs_parameters_read", "ReadAHRSPar")
+    assert missing.kind == ilahrs.ErrorKind.TIMEOUT
     assert host.owed == ()
     assert host.advance(10.0) == []
 

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 # Do not edit: change the spec or the generator and run `make generate`.
 """Errors: one list of kinds for every ilahrs binding (spec `errors`)."""
 
@@ -36,6 +36,8 @@ class ErrorKind(StrEnum):
     """The caller's output buffer cannot hold the message being built."""
     UNEXPECTED_MESSAGE = 'unexpected_message'
     """The peer sent a message that the protocol state does not allow (host session and device model)."""
+    TIMEOUT = 'timeout'
+    """An answer the protocol requires did not arrive in time (host session)."""
 
 
 class IlahrsError(ValueError):

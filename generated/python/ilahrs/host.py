@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
@@ -284,7 +284,7 @@ class Host:
             missing = ", ".join(self.owed)
             detail = f"no {missing} within {self.reply_timeout} s of {self._owed[0].source}"
             owed = self._owed[0]
-            events.append(ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "missing", detail, owed.item, None, owed.source))
+            events.append(ProtocolError(ErrorKind.TIMEOUT, "missing", detail, owed.item, None, owed.source))
             self._owed = []
             self._enter(self._target)
         if not self._owed and self._timer_deadline is not None and self._timer_deadline < self._now:
@@ -293,7 +293,7 @@ class Host:
             event, transition = timed
             item = transition.send[self._timer_index] if transition.send else event
             detail = f"no {item} ({event}) in state {self._state}"
-            events.append(ProtocolError(ErrorKind.UNEXPECTED_MESSAGE, "missing", detail, item, None, event))
+            events.append(ProtocolError(ErrorKind.TIMEOUT, "missing", detail, item, None, event))
             self._timer_done(transition.to)
         return events
 

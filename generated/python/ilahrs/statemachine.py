@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The device's behaviour (6.1, 6.3, 6.4) as data: state x event -> next state and what the AHRS sends.
 
@@ -126,8 +126,8 @@ OUTPUT_FORMATS: Final[Mapping[str, str | None]] = MappingProxyType({
 CALIBRATION_TYPES: Final[Mapping[str, int]] = MappingProxyType({'Start2DClb': 1, 'Start2D2TClb': 2, 'Start3DClb': 3})
 """Start command -> the calibration type (enum calibration_type) its result reports."""
 COMMAND_EFFECTS: Final[Mapping[str, str]] = MappingProxyType({
-    'AcceptClb': 'save_calibration',
     'ClearClb': 'clear_calibration',
+    'AcceptClb': 'save_calibration',
 })
 """Commands that change the calibration in non-volatile memory (6.4.3, 6.4.9)."""
 MIN_SUCCESSFUL_RUNS: Final = 2

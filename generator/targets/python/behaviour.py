@@ -1,11 +1,10 @@
 """Filters and globals for the behaviour modules of the Python target: the state-machine table,
 the device model, the host session and the virtual device.
 
-Everything here is derived from the model. Where the spec does not (yet) say something the device
-model needs as data (which start command makes which calibration type, which commands save or
-clear the calibration, which field sets which timer), the mapping is written once below, checked
-against the model when the package is generated (a missing name fails generation instead of
-producing a device that silently does less), and listed as a wanted spec change.
+Everything about the protocol is read from the model (calibration types of the start commands,
+transition effects, timer fields, the serial line, the minimum number of 2D-2T runs). What is
+written here is the library's own design: which command each convenience method of the serial
+client sends, and which synthetic quantity fills each device-to-host field.
 """
 
 from __future__ import annotations
@@ -16,16 +15,8 @@ from typing import Any
 
 from generator.model import TIMER_EVENTS, Field, Payload, Spec, Transition
 
-# --- Mappings the spec does not carry yet (each checked against the model by `behaviour`) ---------
+# --- The serial client's convenience methods (library design), checked against the model ----------
 
-# The calibration type (enum `calibration_type`) each start command begins (6.4.1, 6.4.5, 6.4.8).
-CALIBRATION_TYPES = {"Start2DClb": "two_d", "Start2D2TClb": "two_d_two_t", "Start3DClb": "three_d"}
-# Side effects of commands on the device's non-volatile memory (6.4.3, 6.4.9).
-COMMAND_EFFECTS = {"AcceptClb": "save_calibration", "ClearClb": "clear_calibration"}
-# Fewer successful 2D-2T runs than this: FinishClb reports calibration success 0 (6.4.5, E37).
-MIN_SUCCESSFUL_RUNS = 2
-# The serial line of section 6: 115200 baud, 8 data bits, no parity, 1 stop bit.
-SERIAL_LINE = {"baudrate": 115200, "bytesize": 8, "parity": "N", "stopbits": 1}
 # The commands the serial client's convenience methods send, by role.
 ROLES = {
     "stop": "Stop",
@@ -138,17 +129,26 @@ def transitions(spec: Spec, legacy: bool = False) -> list[Transition]:
 
 
 def timer_field(spec: Spec, timer: str) -> tuple[str, str]:
-    """(payload, field) of the host-to-device parameter that sets a timer: the field with unit Hz
-    for the output timer (the update rate), else the field in seconds named after the timer
-    (`alignment_time`, `accumulation_time`)."""
-    for p in spec.parameter_blocks:
-        for f in p.fields:
-            unit = f.unit.key if f.unit is not None else None
-            if timer == "output" and unit == "Hz":
-                return p.name, f.name
-            if unit == "s" and f.name.startswith(timer):
-                return p.name, f.name
-    raise KeyError(f"no parameter block field sets the {timer} timer")
+    """(payload, field) of the host-to-device parameter that sets a timer (`state_machine.timers`)."""
+    assert spec.state_machine is not None
+    entry = spec.state_machine.timer(timer)
+    return entry.payload, entry.field
+
+
+_PARITY = {"none": "N", "even": "E", "odd": "O"}
+
+
+def serial_line(spec: Spec) -> dict[str, Any]:
+    """The serial line of the spec in pyserial's terms."""
+    line = spec.serial_line
+    if line is None:
+        raise KeyError("the spec has no serial_line")
+    return {
+        "baudrate": line.baud_rate,
+        "bytesize": line.data_bits,
+        "parity": _PARITY[line.parity],
+        "stopbits": line.stop_bits,
+    }
 
 
 def output_formats(spec: Spec) -> dict[str, str | None]:
@@ -184,18 +184,22 @@ def behaviour(spec: Spec) -> dict[str, Any]:
     sm = spec.state_machine
     if sm is None:
         raise KeyError("the spec has no state_machine")
-    for name in [*CALIBRATION_TYPES, *COMMAND_EFFECTS, *ROLES.values()]:
+    for name in ROLES.values():
         spec.command(name)
     calibration_enum = spec.enum("calibration_type")
     by_name = {v.name: v.value for v in calibration_enum.values}
-    calibration_types = {command: by_name[value] for command, value in CALIBRATION_TYPES.items()}
+    calibration_types = {c.name: by_name[c.begins_calibration] for c in spec.commands if c.begins_calibration}
+    commands = {c.name for c in spec.commands}
+    effects = {t.event: t.effect for t in sm.transitions if t.effect is not None and t.event in commands}
+    if sm.min_successful_runs is None:
+        raise KeyError("the spec's state_machine has no calibration.min_successful_runs")
     timers = sorted({s.timer for s in sm.states if s.timer is not None})
     return {
         **_payload_roles(spec),
         "calibration_types": calibration_types,
-        "effects": COMMAND_EFFECTS,
-        "min_successful_runs": MIN_SUCCESSFUL_RUNS,
-        "serial_line": SERIAL_LINE,
+        "effects": effects,
+        "min_successful_runs": sm.min_successful_runs,
+        "serial_line": serial_line(spec),
         "roles": ROLES,
         "timer_fields": {timer: timer_field(spec, timer) for timer in timers if timer in TIMER_EVENTS},
         "timer_events": {timer: TIMER_EVENTS[timer] for timer in timers},
