@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Errors: one list of kinds for every binding (`errors` in the spec), carried with the byte
@@ -38,11 +38,13 @@ pub enum ErrorKind {
     /// The peer sent a message that the protocol state does not allow (host session and
     /// device model).
     UnexpectedMessage,
+    /// An answer the protocol requires did not arrive in time (host session).
+    Timeout,
 }
 
 impl ErrorKind {
     /// Every kind, in the spec's order.
-    pub const ALL: [ErrorKind; 11] = [
+    pub const ALL: [ErrorKind; 12] = [
         ErrorKind::Truncated,
         ErrorKind::BadHeader,
         ErrorKind::BadMessageType,
@@ -54,6 +56,7 @@ impl ErrorKind {
         ErrorKind::Malformed,
         ErrorKind::BufferTooSmall,
         ErrorKind::UnexpectedMessage,
+        ErrorKind::Timeout,
     ];
 
     /// The kind's name in the spec (`bad_checksum`), the same in every binding.
@@ -70,6 +73,7 @@ impl ErrorKind {
             ErrorKind::Malformed => "malformed",
             ErrorKind::BufferTooSmall => "buffer_too_small",
             ErrorKind::UnexpectedMessage => "unexpected_message",
+            ErrorKind::Timeout => "timeout",
         }
     }
 
@@ -87,6 +91,7 @@ impl ErrorKind {
             "malformed" => Some(ErrorKind::Malformed),
             "buffer_too_small" => Some(ErrorKind::BufferTooSmall),
             "unexpected_message" => Some(ErrorKind::UnexpectedMessage),
+            "timeout" => Some(ErrorKind::Timeout),
             _ => None,
         }
     }
@@ -124,6 +129,9 @@ impl ErrorKind {
             }
             ErrorKind::UnexpectedMessage => {
                 "The peer sent a message that the protocol state does not allow (host session and device model)."
+            }
+            ErrorKind::Timeout => {
+                "An answer the protocol requires did not arrive in time (host session)."
             }
         }
     }

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Inertial Labs AHRS Interface Control Document, revision 1.7 (2014-03-11): frames,
@@ -78,6 +78,6 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1";
+pub const SPEC_HASH: &str = "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;

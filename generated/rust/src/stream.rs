@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! A stream decoder: bytes in, frames and $PAHR sentences out ("leftmost valid message").
@@ -27,10 +27,11 @@
 //! assert_eq!(decoder.discarded(), 4);
 //! ```
 
-use crate::frame::{check_frame, Frame, HEADER};
+use crate::frame::{check_frame, field, Frame, HEADER, HEADER_SIZE};
 #[cfg(not(feature = "small"))]
 use crate::nmea::canonical;
 use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
+use crate::wire;
 
 /// The most bytes the decoder holds: the longest frame or sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
@@ -251,6 +252,7 @@ pub struct StreamDecoder {
     start: usize,
     end: usize,
     discarded: u64,
+    waiting: Waiting,
 }
 
 impl Default for StreamDecoder {
@@ -267,6 +269,7 @@ impl StreamDecoder {
             start: 0,
             end: 0,
             discarded: 0,
+            waiting: Waiting::Any,
         }
     }
 
@@ -286,6 +289,16 @@ impl StreamDecoder {
     pub fn decode<'s>(&'s mut self, input: &'s [u8]) -> (usize, Option<Event<'s>>) {
         let mut used = 0;
         if self.start < self.end {
+            // Bytes that cannot change the decision are taken without deciding again.
+            if self.waiting.still(self.end - self.start, input) {
+                self.compact();
+                if let Some(target) = self.buffer.get_mut(self.end..self.end + input.len()) {
+                    target.copy_from_slice(input);
+                    self.end += input.len();
+                    return (input.len(), None);
+                }
+            }
+            self.waiting = Waiting::Any;
             // A candidate is waiting: top the buffer up and decide on what it holds.
             loop {
                 self.compact();
@@ -310,7 +323,11 @@ impl StreamDecoder {
                         return (used, accepted(bytes));
                     }
                     Step::Empty => break,
-                    Step::Waiting if used == input.len() => return (used, None),
+                    Step::Waiting if used == input.len() => {
+                        let held = self.buffer.get(self.start..self.end).unwrap_or(&[]);
+                        self.waiting = Waiting::of(held);
+                        return (used, None);
+                    }
                     Step::Waiting if take == 0 => {
                         // Unreachable (no decision needs more than the buffer holds); never
                         // loop on it.
@@ -343,6 +360,7 @@ impl StreamDecoder {
                     }
                     self.start = 0;
                     self.end = candidate.len().min(MAX_MESSAGE_SIZE);
+                    self.waiting = Waiting::of(candidate);
                     return (input.len(), None);
                 }
             }
@@ -365,6 +383,7 @@ impl StreamDecoder {
     /// The input has ended: decides on every byte held, discarding candidates that wait for
     /// more, and returns the next message behind them (call until it returns `None`).
     pub fn finish_next(&mut self) -> Option<Event<'_>> {
+        self.waiting = Waiting::Any;
         match self.step(true) {
             Step::Accepted(from, size) => {
                 accepted(self.buffer.get(from..from + size).unwrap_or(&[]))
@@ -419,6 +438,51 @@ impl StreamDecoder {
         self.start = 0;
         self.end = 0;
         Step::Empty
+    }
+}
+
+/// What the held candidate waits for: bytes that cannot change the decision are taken without
+/// deciding again, so a message fed byte by byte costs each byte once.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Waiting {
+    /// Decide again on any byte.
+    Any,
+    /// A frame whose header is held: nothing is decided until it holds this many bytes.
+    Frame(usize),
+    /// A sentence past its identifier, not ending in CR: printable bytes decide nothing until
+    /// the longest sentence.
+    Sentence,
+}
+
+impl Waiting {
+    /// What `held`, a candidate that waits for more bytes, waits for.
+    fn of(held: &[u8]) -> Waiting {
+        match held.first() {
+            Some(&FRAME_START) if held.len() < HEADER_SIZE => Waiting::Any,
+            Some(&FRAME_START) if held.len() < field::PAYLOAD_START => {
+                Waiting::Frame(field::PAYLOAD_START)
+            }
+            Some(&FRAME_START) => {
+                let length = wire::get_u16(held, field::MESSAGE_LENGTH);
+                Waiting::Frame(field::checksum(usize::from(length)).end)
+            }
+            Some(&SENTENCE_START) if held.len() >= PREFIX.len() && held.last() != Some(&b'\r') => {
+                Waiting::Sentence
+            }
+            _ => Waiting::Any,
+        }
+    }
+
+    /// True if `more` bytes after `held` ones leave the candidate waiting.
+    fn still(self, held: usize, more: &[u8]) -> bool {
+        let total = held + more.len();
+        match self {
+            Waiting::Any => false,
+            Waiting::Frame(until) => total < until,
+            Waiting::Sentence => {
+                total < MAX_SENTENCE_LENGTH && more.iter().all(|byte| (0x20..=0x7E).contains(byte))
+            }
+        }
     }
 }
 
