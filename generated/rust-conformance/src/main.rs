@@ -11,7 +11,7 @@ use std::io::{self, BufRead, Write};
 
 use ilahrs::payload::{AnyPayload, FieldKind, PayloadKind, Value};
 use ilahrs::state_machine::{Device, Event, Firmware};
-use ilahrs::{Error, FrameRepr, MessageType, PahrSentence, StreamDecoder, Variant};
+use ilahrs::{Error, ErrorKind, FrameRepr, MessageType, PahrSentence, StreamDecoder, Variant};
 
 /// An answer line, or the error to report.
 type Answer = Result<String, Refusal>;
@@ -21,7 +21,7 @@ enum Refusal {
     /// The crate refused the input.
     Crate(Error),
     /// A refusal with a field name that is not a spec name (an unknown field).
-    Named(&'static str, String),
+    Named(ErrorKind, String),
     /// The request does not follow the protocol.
     Unsupported,
 }
@@ -45,7 +45,7 @@ fn main() -> io::Result<()> {
                 let field = error.field().unwrap_or("-");
                 format!("error {} {offset} {field}", error.kind().name())
             }
-            Err(Refusal::Named(kind, field)) => format!("error {kind} - {field}"),
+            Err(Refusal::Named(kind, field)) => format!("error {} - {field}", kind.name()),
             Err(Refusal::Unsupported) => "unsupported".to_string(),
         };
         writeln!(out, "{reply}")?;
@@ -99,16 +99,18 @@ fn frame_decode(data: &[u8]) -> Answer {
 }
 
 fn frame_encode(message_type: &str, payload: &[u8], reserved: Option<&str>) -> Answer {
-    let refusal = Refusal::Named("bad_message_type", "message_type".to_string());
-    let message_type = message_type
-        .parse::<u8>()
-        .ok()
-        .and_then(MessageType::from_raw)
-        .ok_or(refusal)?;
+    let message_type = match message_type.parse::<u8>() {
+        Ok(raw) => MessageType::try_from(raw)?,
+        Err(_) => {
+            let field = "message_type".to_string();
+            return Err(Refusal::Named(ErrorKind::BadMessageType, field));
+        }
+    };
     let reserved = match reserved {
-        Some(text) => text
-            .parse::<u8>()
-            .map_err(|_| Refusal::Named("out_of_range", "reserved".to_string()))?,
+        Some(text) => text.parse::<u8>().map_err(|_| {
+            let field = "reserved".to_string();
+            Refusal::Named(ErrorKind::OutOfRange, field)
+        })?,
         None => 0,
     };
     let repr = FrameRepr {
@@ -158,7 +160,7 @@ fn payload_encode(name: &str, pairs: &[&str]) -> Answer {
         let (key, token) = pair.split_once('=').ok_or(Refusal::Unsupported)?;
         match kind.field_index(key) {
             Some(index) => given[index] = Some(token),
-            None => return Err(Refusal::Named("malformed", key.to_string())),
+            None => return Err(Refusal::Named(ErrorKind::Malformed, key.to_string())),
         }
     }
     let mut payload = AnyPayload::new(kind);
@@ -220,7 +222,7 @@ fn nmea_encode(pairs: &[&str]) -> Answer {
     let usw = u16::try_from(usw_raw).unwrap_or_default();
     let sentence = PahrSentence::from_engineering(roll, pitch, heading, temperature, vdd, usw)?;
     if u16::try_from(usw_raw).is_err() {
-        return Err(Refusal::Named("out_of_range", "usw".to_string()));
+        return Err(Refusal::Named(ErrorKind::OutOfRange, "usw".to_string()));
     }
     let mut buf = [0u8; ilahrs::nmea::MAX_LENGTH];
     let n = sentence.build(&mut buf)?;

@@ -435,9 +435,10 @@ pub(crate) mod canonical {
     pub(crate) const LENGTH: usize =
         STARTS[FIELD_COUNT - 1] + width(FIELDS[FIELD_COUNT - 1].format) + TAIL;
 
-    /// The most characters of a decimal field and digits of a hex field the fast path reads
-    /// (more could overflow its sums; such fields take the general path).
+    /// The most characters of a decimal field the fast path reads (more could overflow its
+    /// sums; such fields take the general path).
     const MAX_DECIMAL: usize = 18;
+    /// The most digits of a hex field the fast path reads.
     const MAX_HEX: usize = 15;
 
     /// A whole sentence (`$` through CR LF, [`LENGTH`] bytes), or `None`. Every byte is checked,
