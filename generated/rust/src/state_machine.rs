@@ -167,57 +167,57 @@ impl State {
 /// What happens to the device: a command (by the name valid in the current mode) or another event.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Event {
-    /// The command `AHRScont1` (6.3.1).
+    /// The command `AHRScont1` (0x80, 6.3.1).
     AhrsCont1,
-    /// The command `AHRScont2` (6.3.1).
+    /// The command `AHRScont2` (0x82, 6.3.1).
     AhrsCont2,
-    /// The command `AHRScont3` (6.3.1).
+    /// The command `AHRScont3` (0x83, 6.3.1).
     AhrsCont3,
-    /// The command `AHRSreq1` (6.3.2).
+    /// The command `AHRSreq1` (0x84, 6.3.2).
     AhrsReq1,
-    /// The command `AHRSreq2` (6.3.2).
+    /// The command `AHRSreq2` (0x86, 6.3.2).
     AhrsReq2,
-    /// The command `AHRSreq3` (6.3.2).
+    /// The command `AHRSreq3` (0x87, 6.3.2).
     AhrsReq3,
-    /// The command `NMEAcont` (6.3.3).
+    /// The command `NMEAcont` (0x88, 6.3.3).
     NmeaCont,
-    /// The command `NMEAreq` (6.3.3).
+    /// The command `NMEAreq` (0x89, 6.3.3).
     NmeaReq,
-    /// The command `GetDataReq` (6.3.4).
+    /// The command `GetDataReq` (0xCA, 6.3.4).
     GetDataReq,
-    /// The command `Stop` (6.3.5).
+    /// The command `Stop` (0xFE, 6.3.5).
     Stop,
-    /// The command `LoadAHRSPar` (6.3.6).
+    /// The command `LoadAHRSPar` (0x40, 6.3.6).
     LoadAhrsPar,
-    /// The command `ReadAHRSPar` (6.3.7).
+    /// The command `ReadAHRSPar` (0x41, 6.3.7).
     ReadAhrsPar,
-    /// The command `LowPowerOn` (6.3.8).
+    /// The command `LowPowerOn` (0xB0, 6.3.8).
     LowPowerOn,
-    /// The command `LowPowerOff` (6.3.9).
+    /// The command `LowPowerOff` (0xBA, 6.3.9).
     LowPowerOff,
-    /// The command `GetVerFirmware` (6.3.10).
+    /// The command `GetVerFirmware` (0x1F, 6.3.10).
     GetVerFirmware,
-    /// The command `GetBIT` (6.3.11).
+    /// The command `GetBIT` (0x1A, 6.3.11).
     GetBit,
-    /// The command `Start2DClb` (6.4.8).
+    /// The command `Start2DClb` (0x21, 6.4.8).
     Start2dClb,
-    /// The command `Start2D2TClb` (6.4.5).
+    /// The command `Start2D2TClb` (0x22, 6.4.5).
     Start2d2tClb,
-    /// The command `Start3DClb` (6.4.1).
+    /// The command `Start3DClb` (0x23, 6.4.1).
     Start3dClb,
-    /// The command `StartClbRun` (6.4.6).
+    /// The command `StartClbRun` (0x2B, 6.4.6).
     StartClbRun,
-    /// The command `StopClbRun` (6.4.2).
+    /// The command `StopClbRun` (0x20, 6.4.2).
     StopClbRun,
-    /// The command `FinishClb` (6.4.7).
+    /// The command `FinishClb` (0x2C, 6.4.7).
     FinishClb,
-    /// The command `AcceptClb` (6.4.3).
+    /// The command `AcceptClb` (0x2E, 6.4.3).
     AcceptClb,
-    /// The command `ExitClb` (6.4.4).
+    /// The command `ExitClb` (0xFE, 6.4.4).
     ExitClb,
-    /// The command `ClearClb` (6.4.9).
+    /// The command `ClearClb` (0x2F, 6.4.9).
     ClearClb,
-    /// The command `GetClbRes` (6.4.10).
+    /// The command `GetClbRes` (0x2A, 6.4.10).
     GetClbRes,
     /// A data message whose payload has the size of the table the current state expects.
     ParameterBlock,

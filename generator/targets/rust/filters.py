@@ -396,7 +396,12 @@ def sm_events(spec: Spec) -> list[dict[str, Any]]:
     """Every event of the table, commands first (spec order), then the other events: the Rust
     variant, the name the table uses, the command (or None) and a doc line."""
     events: list[dict[str, Any]] = [
-        {"variant": type_name(c.id), "name": c.name, "command": c, "doc": f"The command `{c.name}` ({c.icd})."}
+        {
+            "variant": type_name(c.id),
+            "name": c.name,
+            "command": c,
+            "doc": f"The command `{c.name}` ({naming.hex_byte(c.code)}, {c.icd}).",
+        }
         for c in spec.commands
     ]
     events += [
