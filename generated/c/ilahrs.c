@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+/* Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /*
@@ -27,7 +27,7 @@
 /* ---- Tables --------------------------------------------------------------------------- */
 
 /* Names, one pool per kind of name (NUL-separated); tables hold offsets into them. */
-static const char ilahrs_error_names[151] =
+static const char ilahrs_error_names[159] =
     "truncated\000"
     "bad_header\000"
     "bad_message_type\000"
@@ -38,7 +38,8 @@ static const char ilahrs_error_names[151] =
     "out_of_range\000"
     "malformed\000"
     "buffer_too_small\000"
-    "unexpected_message";
+    "unexpected_message\000"
+    "timeout";
 
 static const char ilahrs_frame_names[61] =
     "header\000"
@@ -216,6 +217,45 @@ static const char ilahrs_flag_names[272] =
     "large_magnetic_field\000"
     "temperature_out_of_range";
 
+static const char ilahrs_state_names[282] =
+    "idle\000"
+    "awaiting_parameters\000"
+    "aligning_continuous\000"
+    "continuous\000"
+    "aligning_on_request\000"
+    "on_request\000"
+    "sleep\000"
+    "calibration_awaiting_parameters\000"
+    "calibration_aligning\000"
+    "calibration_accumulating\000"
+    "calibration_deciding\000"
+    "runs_awaiting_parameters\000"
+    "runs_ready\000"
+    "run_awaiting_parameters\000"
+    "run_aligning\000"
+    "run_accumulating";
+
+static const char ilahrs_event_names[96] =
+    "parameter_block\000"
+    "other_message\000"
+    "unknown\000"
+    "block_timeout\000"
+    "alignment_done\000"
+    "accumulation_done\000"
+    "output_due";
+
+static const char ilahrs_answer_names[152] =
+    "ack\000"
+    "ahrs_parameters_read\000"
+    "firmware_version\000"
+    "bit_result\000"
+    "calibration_status\000"
+    "initial_alignment\000"
+    "output\000"
+    "output_sleep\000"
+    "calibration_result\000"
+    "calibration_run_result";
+
 
 #define ERROR_NAME(offset) (ilahrs_error_names + (offset))
 #define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
@@ -226,6 +266,9 @@ static const char ilahrs_flag_names[272] =
 #define VARIANT_NAME(offset) (ilahrs_variant_names + (offset))
 #define MODE_NAME(offset) (ilahrs_mode_names + (offset))
 #define FLAG_NAME(offset) (ilahrs_flag_names + (offset))
+#define STATE_NAME(offset) (ilahrs_state_names + (offset))
+#define EVENT_NAME(offset) (ilahrs_event_names + (offset))
+#define ANSWER_NAME(offset) (ilahrs_answer_names + (offset))
 #define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
 #define NAME_FRAME_RESERVED FRAME_NAME(28)
 #define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
@@ -246,44 +289,134 @@ static const uint8_t ilahrs_error_offsets[] = {
     105, /* malformed */
     115, /* buffer_too_small */
     132, /* unexpected_message */
+    151, /* timeout */
 };
 
-/* Command table (Table C.1): name, code, modes it is valid in, response, parameter block,
- * payload tables of a data response. */
-static const struct {
-    uint16_t name;
-    uint8_t code;
-    uint8_t valid_in;
-    uint8_t response;
-    int8_t parameter_block;
-    int8_t response_payloads[ILAHRS_RESPONSE_PAYLOADS_MAX];
-} ilahrs_commands[ILAHRS_COMMAND_COUNT] = {
-    { 0, 0x80, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont1 */
-    { 10, 0x82, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont2 */
-    { 20, 0x83, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRScont3 */
-    { 30, 0x84, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq1 */
-    { 39, 0x86, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq2 */
-    { 48, 0x87, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AHRSreq3 */
-    { 57, 0x88, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAcont */
-    { 66, 0x89, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* NMEAreq */
-    { 74, 0xCA, ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_OUTPUT, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* GetDataReq */
-    { 85, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Stop */
-    { 90, 0x40, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LoadAHRSPar */
-    { 102, 0x41, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE } }, /* ReadAHRSPar */
-    { 114, 0xB0, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOn */
-    { 125, 0xBA, ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* LowPowerOff */
-    { 137, 0x1F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE } }, /* GetVerFirmware */
-    { 152, 0x1A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE } }, /* GetBIT */
-    { 159, 0x21, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2DClb */
-    { 170, 0x22, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start2D2TClb */
-    { 183, 0x23, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* Start3DClb */
-    { 194, 0x2B, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_NONE, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* StartClbRun */
-    { 206, 0x20, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT } }, /* StopClbRun */
-    { 217, 0x2C, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE } }, /* FinishClb */
-    { 227, 0x2E, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* AcceptClb */
-    { 237, 0xFE, ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ExitClb */
-    { 245, 0x2F, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_ACK, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE } }, /* ClearClb */
-    { 254, 0x2A, ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), ILAHRS_RESPONSE_DATA, ILAHRS_PAYLOAD_NONE, { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE } }, /* GetClbRes */
+/* Command table (Table C.1), one array per column so that a firmware links only the columns it
+ * uses: name, code, modes it is valid in, response, parameter block, payload tables of a data
+ * response. */
+static const uint16_t ilahrs_command_name_offsets[ILAHRS_COMMAND_COUNT] = {
+    0, /* AHRScont1 */
+    10, /* AHRScont2 */
+    20, /* AHRScont3 */
+    30, /* AHRSreq1 */
+    39, /* AHRSreq2 */
+    48, /* AHRSreq3 */
+    57, /* NMEAcont */
+    66, /* NMEAreq */
+    74, /* GetDataReq */
+    85, /* Stop */
+    90, /* LoadAHRSPar */
+    102, /* ReadAHRSPar */
+    114, /* LowPowerOn */
+    125, /* LowPowerOff */
+    137, /* GetVerFirmware */
+    152, /* GetBIT */
+    159, /* Start2DClb */
+    170, /* Start2D2TClb */
+    183, /* Start3DClb */
+    194, /* StartClbRun */
+    206, /* StopClbRun */
+    217, /* FinishClb */
+    227, /* AcceptClb */
+    237, /* ExitClb */
+    245, /* ClearClb */
+    254, /* GetClbRes */
+};
+
+static const uint8_t ilahrs_command_codes[ILAHRS_COMMAND_COUNT] = {
+0x80, 0x82, 0x83, 0x84, 0x86, 0x87, 0x88, 0x89, 0xCA, 0xFE, 0x40, 0x41, 0xB0, 0xBA, 0x1F, 0x1A, 0x21, 0x22, 0x23, 0x2B, 0x20, 0x2C, 0x2E, 0xFE, 0x2F, 0x2A
+};
+
+static const uint8_t ilahrs_command_modes[ILAHRS_COMMAND_COUNT] = {
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont1 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont2 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont3 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq1 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq2 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq3 */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* NMEAcont */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* NMEAreq */
+ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* GetDataReq */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* Stop */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* LoadAHRSPar */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* ReadAHRSPar */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* LowPowerOn */
+ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP), /* LowPowerOff */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* GetVerFirmware */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* GetBIT */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start2DClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start2D2TClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start3DClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* StartClbRun */
+ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* StopClbRun */
+ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* FinishClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* AcceptClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* ExitClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* ClearClb */
+ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* GetClbRes */
+};
+
+static const uint8_t ilahrs_command_responses[ILAHRS_COMMAND_COUNT] = {
+ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_OUTPUT, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_DATA
+};
+
+static const int8_t ilahrs_command_blocks[ILAHRS_COMMAND_COUNT] = {
+ILAHRS_PAYLOAD_NONE, /* AHRScont1 */
+ILAHRS_PAYLOAD_NONE, /* AHRScont2 */
+ILAHRS_PAYLOAD_NONE, /* AHRScont3 */
+ILAHRS_PAYLOAD_NONE, /* AHRSreq1 */
+ILAHRS_PAYLOAD_NONE, /* AHRSreq2 */
+ILAHRS_PAYLOAD_NONE, /* AHRSreq3 */
+ILAHRS_PAYLOAD_NONE, /* NMEAcont */
+ILAHRS_PAYLOAD_NONE, /* NMEAreq */
+ILAHRS_PAYLOAD_NONE, /* GetDataReq */
+ILAHRS_PAYLOAD_NONE, /* Stop */
+ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, /* LoadAHRSPar */
+ILAHRS_PAYLOAD_NONE, /* ReadAHRSPar */
+ILAHRS_PAYLOAD_NONE, /* LowPowerOn */
+ILAHRS_PAYLOAD_NONE, /* LowPowerOff */
+ILAHRS_PAYLOAD_NONE, /* GetVerFirmware */
+ILAHRS_PAYLOAD_NONE, /* GetBIT */
+ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start2DClb */
+ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start2D2TClb */
+ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start3DClb */
+ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, /* StartClbRun */
+ILAHRS_PAYLOAD_NONE, /* StopClbRun */
+ILAHRS_PAYLOAD_NONE, /* FinishClb */
+ILAHRS_PAYLOAD_NONE, /* AcceptClb */
+ILAHRS_PAYLOAD_NONE, /* ExitClb */
+ILAHRS_PAYLOAD_NONE, /* ClearClb */
+ILAHRS_PAYLOAD_NONE, /* GetClbRes */
+};
+
+static const int8_t ilahrs_command_response_payloads[ILAHRS_COMMAND_COUNT][ILAHRS_RESPONSE_PAYLOADS_MAX] = {
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont1 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont2 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont3 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq1 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq2 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq3 */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* NMEAcont */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* NMEAreq */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* GetDataReq */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Stop */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LoadAHRSPar */
+    { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE }, /* ReadAHRSPar */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LowPowerOn */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LowPowerOff */
+    { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE }, /* GetVerFirmware */
+    { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE }, /* GetBIT */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start2DClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start2D2TClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start3DClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* StartClbRun */
+    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT }, /* StopClbRun */
+    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE }, /* FinishClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AcceptClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* ExitClb */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* ClearClb */
+    { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE }, /* GetClbRes */
 };
 
 /* Commands ordered by code, then ICD name: command_decode() reports all with one code. */
@@ -315,6 +448,10 @@ static const uint8_t ilahrs_commands_by_code[ILAHRS_COMMAND_COUNT] = {
     ILAHRS_COMMAND_EXIT_CLB, /* 0xFE ExitClb */
     ILAHRS_COMMAND_STOP, /* 0xFE Stop */
 };
+
+/* The meaning of a shared code in a mode where none of its names is valid (E14). */
+#define CODE_DEFAULT_COUNT 1u
+static const uint8_t ilahrs_code_defaults[1] = { ILAHRS_COMMAND_STOP };
 
 /* Variant parameters (KG, KA), names and part numbers. */
 static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
@@ -864,19 +1001,19 @@ const char *ilahrs_mode_name(ilahrs_mode_t mode)
 
 const char *ilahrs_command_name(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? COMMAND_NAME(ilahrs_commands[command].name) : NULL;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? COMMAND_NAME(ilahrs_command_name_offsets[command]) : NULL;
 }
 
 uint8_t ilahrs_command_code(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_commands[command].code : 0;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_codes[command] : 0;
 }
 
 bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *command, ilahrs_error_t *err)
 {
     unsigned i;
     for (i = 0; i < ILAHRS_COMMAND_COUNT; i++) {
-        if (equal_name(name, len, COMMAND_NAME(ilahrs_commands[i].name))) {
+        if (equal_name(name, len, COMMAND_NAME(ilahrs_command_name_offsets[i]))) {
             *command = (ilahrs_command_t)i;
             return true;
         }
@@ -886,18 +1023,18 @@ bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *comm
 
 uint8_t ilahrs_command_valid_in(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_commands[command].valid_in : 0;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_modes[command] : 0;
 }
 
 ilahrs_response_t ilahrs_command_response(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_response_t)ilahrs_commands[command].response
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_response_t)ilahrs_command_responses[command]
                                                      : ILAHRS_RESPONSE_NONE;
 }
 
 ilahrs_payload_t ilahrs_command_parameter_block(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_payload_t)ilahrs_commands[command].parameter_block : ILAHRS_PAYLOAD_NONE;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_payload_t)ilahrs_command_blocks[command] : ILAHRS_PAYLOAD_NONE;
 }
 
 ilahrs_payload_t ilahrs_command_response_payload(ilahrs_command_t command, size_t index)
@@ -905,7 +1042,7 @@ ilahrs_payload_t ilahrs_command_response_payload(ilahrs_command_t command, size_
     if ((unsigned)command >= ILAHRS_COMMAND_COUNT || index >= ILAHRS_RESPONSE_PAYLOADS_MAX) {
         return ILAHRS_PAYLOAD_NONE;
     }
-    return (ilahrs_payload_t)ilahrs_commands[command].response_payloads[index];
+    return (ilahrs_payload_t)ilahrs_command_response_payloads[command][index];
 }
 
 size_t ilahrs_command_build(ilahrs_command_t command, uint8_t *out, size_t cap, ilahrs_error_t *err)
@@ -919,7 +1056,7 @@ size_t ilahrs_command_build(ilahrs_command_t command, uint8_t *out, size_t cap, 
     }
     memset(&frame, 0, sizeof frame);
     frame.message_type = ILAHRS_MESSAGE_TYPE_COMMAND;
-    out[ILAHRS_FRAME_PAYLOAD_OFFSET] = ilahrs_commands[command].code;
+    out[ILAHRS_FRAME_PAYLOAD_OFFSET] = ilahrs_command_codes[command];
     return frame_finish(out, &frame, 1);
 }
 
@@ -942,7 +1079,7 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
     match->count = 0;
     for (i = 0; i < ILAHRS_COMMAND_COUNT; i++) {
         uint8_t id = ilahrs_commands_by_code[i];
-        if (ilahrs_commands[id].code == code && match->count < ILAHRS_COMMANDS_PER_CODE_MAX) {
+        if (ilahrs_command_codes[id] == code && match->count < ILAHRS_COMMANDS_PER_CODE_MAX) {
             match->commands[match->count] = (ilahrs_command_t)id;
             match->count++;
         }
@@ -2225,4 +2362,343 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
     s->start = 0;
     s->count = 0;
     return false;
+}
+
+/* ---- Device state machine (6.1, 6.3, 6.4) --------------------------------------- */
+
+/* States: name, mode, the parameter block awaited (payload, -1: none), the event its timer fires
+ * (ILAHRS_EVENT_COUNT: none). */
+static const struct {
+    uint16_t name;
+    uint8_t mode;
+    int8_t expects;
+    uint8_t timer;
+} ilahrs_states[ILAHRS_STATE_COUNT] = {
+    { 0, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* idle */
+    { 5, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, ILAHRS_EVENT_COUNT }, /* awaiting_parameters */
+    { 25, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_continuous */
+    { 45, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_OUTPUT_DUE }, /* continuous */
+    { 56, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_on_request */
+    { 76, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* on_request */
+    { 87, ILAHRS_MODE_SLEEP, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* sleep */
+    { 93, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* calibration_awaiting_parameters */
+    { 125, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* calibration_aligning */
+    { 146, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* calibration_accumulating */
+    { 171, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* calibration_deciding */
+    { 192, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* runs_awaiting_parameters */
+    { 217, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* runs_ready */
+    { 228, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, ILAHRS_EVENT_COUNT }, /* run_awaiting_parameters */
+    { 252, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* run_aligning */
+    { 265, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* run_accumulating */
+};
+
+/* Names of the events that are not commands, from ILAHRS_COMMAND_COUNT on. */
+static const uint8_t ilahrs_event_offsets[ILAHRS_EVENT_COUNT - ILAHRS_COMMAND_COUNT] = { 0, 16, 30, 38, 52, 67, 85 };
+
+/* Answers: name, payload table (-1: none), USW mode of an output answer (NO_USW_MODE: none). */
+#define NO_USW_MODE 0xFFu
+static const struct {
+    uint8_t name;
+    int8_t payload;
+    uint8_t usw_mode;
+} ilahrs_answers[ILAHRS_ANSWER_COUNT] = {
+    { 0, ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* ack */
+    { 4, ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, NO_USW_MODE }, /* ahrs_parameters_read */
+    { 25, ILAHRS_PAYLOAD_FIRMWARE_VERSION, NO_USW_MODE }, /* firmware_version */
+    { 42, ILAHRS_PAYLOAD_BIT_RESULT, NO_USW_MODE }, /* bit_result */
+    { 53, ILAHRS_PAYLOAD_CALIBRATION_STATUS, NO_USW_MODE }, /* calibration_status */
+    { 72, ILAHRS_PAYLOAD_INITIAL_ALIGNMENT, NO_USW_MODE }, /* initial_alignment */
+    { 90, ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* output */
+    { 97, ILAHRS_PAYLOAD_NONE, ILAHRS_USW_MODE_SLEEP }, /* output_sleep */
+    { 110, ILAHRS_PAYLOAD_CALIBRATION_RESULT, NO_USW_MODE }, /* calibration_result */
+    { 129, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT, NO_USW_MODE }, /* calibration_run_result */
+};
+
+/* Answer sequences, one after the other; sequence k is ilahrs_sends[ilahrs_send_start[k] ..
+ * ilahrs_send_start[k + 1]). */
+static const uint8_t ilahrs_sends[10] = { ILAHRS_ANSWER_ACK, ILAHRS_ANSWER_AHRS_PARAMETERS_READ, ILAHRS_ANSWER_FIRMWARE_VERSION, ILAHRS_ANSWER_BIT_RESULT, ILAHRS_ANSWER_CALIBRATION_STATUS, ILAHRS_ANSWER_INITIAL_ALIGNMENT, ILAHRS_ANSWER_OUTPUT, ILAHRS_ANSWER_OUTPUT_SLEEP, ILAHRS_ANSWER_CALIBRATION_RESULT, ILAHRS_ANSWER_CALIBRATION_RUN_RESULT };
+static const uint8_t ilahrs_send_start[12] = { 0, 1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
+
+/* The distinct outcomes of the table: next state, answer sequence. */
+static const struct {
+    uint8_t to;
+    uint8_t sends;
+} ilahrs_outcomes[27] = {
+    { ILAHRS_STATE_ALIGNING_CONTINUOUS, 0 }, /* 1: aligning_continuous, 0 */
+    { ILAHRS_STATE_ALIGNING_ON_REQUEST, 0 }, /* 2: aligning_on_request, 0 */
+    { ILAHRS_STATE_AWAITING_PARAMETERS, 1 }, /* 3: awaiting_parameters, nothing */
+    { ILAHRS_STATE_IDLE, 2 }, /* 4: idle, 1 */
+    { ILAHRS_STATE_IDLE, 3 }, /* 5: idle, 2 */
+    { ILAHRS_STATE_IDLE, 4 }, /* 6: idle, 3 */
+    { ILAHRS_STATE_ON_REQUEST, 4 }, /* 7: on_request, 3 */
+    { ILAHRS_STATE_SLEEP, 1 }, /* 8: sleep, nothing */
+    { ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, 1 }, /* 9: calibration_awaiting_parameters, nothing */
+    { ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, 1 }, /* 10: runs_awaiting_parameters, nothing */
+    { ILAHRS_STATE_IDLE, 0 }, /* 11: idle, 0 */
+    { ILAHRS_STATE_IDLE, 5 }, /* 12: idle, 4 */
+    { ILAHRS_STATE_IDLE, 1 }, /* 13: idle, nothing */
+    { ILAHRS_STATE_RUNS_READY, 1 }, /* 14: runs_ready, nothing */
+    { ILAHRS_STATE_CONTINUOUS, 6 }, /* 15: continuous, 5 */
+    { ILAHRS_STATE_ON_REQUEST, 6 }, /* 16: on_request, 5 */
+    { ILAHRS_STATE_CONTINUOUS, 7 }, /* 17: continuous, 6 */
+    { ILAHRS_STATE_ON_REQUEST, 7 }, /* 18: on_request, 6 */
+    { ILAHRS_STATE_SLEEP, 8 }, /* 19: sleep, 7 */
+    { ILAHRS_STATE_CALIBRATION_ALIGNING, 0 }, /* 20: calibration_aligning, 0 */
+    { ILAHRS_STATE_CALIBRATION_ACCUMULATING, 6 }, /* 21: calibration_accumulating, 5 */
+    { ILAHRS_STATE_CALIBRATION_DECIDING, 9 }, /* 22: calibration_deciding, 8 */
+    { ILAHRS_STATE_RUNS_READY, 0 }, /* 23: runs_ready, 0 */
+    { ILAHRS_STATE_RUN_AWAITING_PARAMETERS, 1 }, /* 24: run_awaiting_parameters, nothing */
+    { ILAHRS_STATE_RUN_ALIGNING, 0 }, /* 25: run_aligning, 0 */
+    { ILAHRS_STATE_RUN_ACCUMULATING, 6 }, /* 26: run_accumulating, 5 */
+    { ILAHRS_STATE_RUNS_READY, 10 }, /* 27: runs_ready, 9 */
+};
+
+/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Events are the
+ * commands in ilahrs_command_t order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
+static const uint8_t ilahrs_cells[ILAHRS_STATE_COUNT][ILAHRS_EVENT_COUNT] = {
+    { 1, 1, 1, 2, 2, 2, 1, 2, 0, 13, 3, 4, 8, 0, 5, 6, 9, 10, 9, 0, 0, 0, 0, 0, 11, 12, 0, 0, 0, 0, 0, 0, 0 }, /* idle */
+    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 13, 0, 0, 0 }, /* awaiting_parameters */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 15, 0, 0 }, /* aligning_continuous */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 19, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 17 }, /* continuous */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 0 }, /* aligning_on_request */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 18, 13, 0, 0, 8, 0, 0, 7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* on_request */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* sleep */
+    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 20, 13, 13, 13, 0, 0, 0 }, /* calibration_awaiting_parameters */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 0, 0, 0, 0, 0, 0, 21, 0, 0 }, /* calibration_aligning */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 22, 0, 0, 11, 0, 0, 0, 0, 0, 0, 0, 22, 0 }, /* calibration_accumulating */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 11, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* calibration_deciding */
+    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 23, 13, 13, 13, 0, 0, 0 }, /* runs_awaiting_parameters */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 24, 0, 22, 0, 11, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* runs_ready */
+    { 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 11, 14, 14, 25, 14, 14, 14, 0, 0, 0 }, /* run_awaiting_parameters */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 0, 0, 0, 0, 0, 0, 26, 0, 0 }, /* run_aligning */
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 27, 0, 0, 11, 0, 0, 0, 0, 0, 0, 0, 27, 0 }, /* run_accumulating */
+};
+
+/* Rows that apply only to firmware before a version, and there take precedence. */
+#define LEGACY_COUNT 1u
+static const ilahrs_firmware_t ilahrs_legacy_versions[1] = {
+    { { 4u, 9u, 9u, 0u }, 4 }, /* 4.9.9.0 */
+};
+
+static const struct {
+    uint8_t state;
+    uint8_t event;
+    uint8_t outcome;
+    uint8_t version;
+} ilahrs_legacy[LEGACY_COUNT] = {
+    { ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_STOP_CLB_RUN, 21, 0 }, /* E29 */
+};
+
+const char *ilahrs_state_name(ilahrs_state_t state)
+{
+    return (unsigned)state < ILAHRS_STATE_COUNT ? STATE_NAME(ilahrs_states[state].name) : NULL;
+}
+
+bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state)
+{
+    unsigned i;
+    for (i = 0; i < ILAHRS_STATE_COUNT; i++) {
+        if (equal_name(name, len, STATE_NAME(ilahrs_states[i].name))) {
+            *state = (ilahrs_state_t)i;
+            return true;
+        }
+    }
+    return false;
+}
+
+ilahrs_mode_t ilahrs_state_mode(ilahrs_state_t state)
+{
+    return (ilahrs_mode_t)((unsigned)state < ILAHRS_STATE_COUNT ? ilahrs_states[state].mode : ILAHRS_MODE_COUNT);
+}
+
+ilahrs_payload_t ilahrs_state_expects(ilahrs_state_t state)
+{
+    return (unsigned)state < ILAHRS_STATE_COUNT ? (ilahrs_payload_t)ilahrs_states[state].expects : ILAHRS_PAYLOAD_NONE;
+}
+
+bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event)
+{
+    if ((unsigned)state >= ILAHRS_STATE_COUNT || ilahrs_states[state].timer == ILAHRS_EVENT_COUNT) {
+        return false;
+    }
+    *event = (ilahrs_event_t)ilahrs_states[state].timer;
+    return true;
+}
+
+const char *ilahrs_event_name(ilahrs_event_t event)
+{
+    if ((unsigned)event < ILAHRS_COMMAND_COUNT) {
+        return ilahrs_command_name((ilahrs_command_t)event);
+    }
+    return (unsigned)event < ILAHRS_EVENT_COUNT ? EVENT_NAME(ilahrs_event_offsets[(unsigned)event - ILAHRS_COMMAND_COUNT]) : NULL;
+}
+
+bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event)
+{
+    unsigned i;
+    for (i = 0; i < ILAHRS_EVENT_COUNT; i++) {
+        if (equal_name(name, len, ilahrs_event_name((ilahrs_event_t)i))) {
+            *event = (ilahrs_event_t)i;
+            return true;
+        }
+    }
+    return false;
+}
+
+const char *ilahrs_answer_name(ilahrs_answer_t answer)
+{
+    return (unsigned)answer < ILAHRS_ANSWER_COUNT ? ANSWER_NAME(ilahrs_answers[answer].name) : NULL;
+}
+
+ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer)
+{
+    return (unsigned)answer < ILAHRS_ANSWER_COUNT ? (ilahrs_payload_t)ilahrs_answers[answer].payload : ILAHRS_PAYLOAD_NONE;
+}
+
+bool ilahrs_answer_usw_mode(ilahrs_answer_t answer, ilahrs_usw_mode_t *mode)
+{
+    if ((unsigned)answer >= ILAHRS_ANSWER_COUNT || ilahrs_answers[answer].usw_mode == NO_USW_MODE) {
+        return false;
+    }
+    *mode = (ilahrs_usw_mode_t)ilahrs_answers[answer].usw_mode;
+    return true;
+}
+
+ilahrs_event_t ilahrs_event_for_code(ilahrs_state_t state, uint8_t code)
+{
+    unsigned modes = (unsigned)state < ILAHRS_STATE_COUNT ? ILAHRS_MODE_BIT(ilahrs_states[state].mode) : 0u;
+    unsigned named = 0;
+    unsigned only = 0;
+    unsigned i;
+    for (i = 0; i < ILAHRS_COMMAND_COUNT; i++) {
+        unsigned id = ilahrs_commands_by_code[i];
+        if (ilahrs_command_codes[id] != code) {
+            continue;
+        }
+        if ((ilahrs_command_modes[id] & modes) != 0) {
+            return (ilahrs_event_t)id; /* the name valid in this mode */
+        }
+        named++;
+        only = id;
+    }
+    if (named == 1) {
+        return (ilahrs_event_t)only;
+    }
+    /* A shared code where no name is valid: the name marked default_for_code (E14). */
+    for (i = 0; i < CODE_DEFAULT_COUNT; i++) {
+        if (ilahrs_command_codes[ilahrs_code_defaults[i]] == code) {
+            return (ilahrs_event_t)ilahrs_code_defaults[i];
+        }
+    }
+    return ILAHRS_EVENT_UNKNOWN;
+}
+
+ilahrs_event_t ilahrs_event_for_data(ilahrs_state_t state, size_t payload_size)
+{
+    ilahrs_payload_t expects = ilahrs_state_expects(state);
+    return expects != ILAHRS_PAYLOAD_NONE && payload_size == ilahrs_payloads[expects].size ? ILAHRS_EVENT_PARAMETER_BLOCK
+                                                                                            : ILAHRS_EVENT_OTHER_MESSAGE;
+}
+
+ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t *frame)
+{
+    if (frame->message_type == ILAHRS_MESSAGE_TYPE_COMMAND && frame->payload_size == 1) {
+        return ilahrs_event_for_code(state, frame->payload[0]);
+    }
+    return ilahrs_event_for_data(state, frame->payload_size);
+}
+
+static bool outcome(unsigned k, ilahrs_step_t *out)
+{
+    unsigned from = ilahrs_send_start[ilahrs_outcomes[k].sends];
+    unsigned n = ilahrs_send_start[ilahrs_outcomes[k].sends + 1u] - from;
+    unsigned i;
+    out->to = (ilahrs_state_t)ilahrs_outcomes[k].to;
+    out->send_count = (uint8_t)n;
+    for (i = 0; i < n && i < ILAHRS_STEP_SEND_MAX; i++) {
+        out->send[i] = (ilahrs_answer_t)ilahrs_sends[from + i];
+    }
+    return true;
+}
+
+/* The legacy row for (state, event) that applies to `firmware` (NULL with `any`: every legacy
+ * row applies), or -1. */
+static int legacy_row(unsigned state, unsigned event, const ilahrs_firmware_t *firmware, bool any)
+{
+    unsigned i;
+    for (i = 0; i < LEGACY_COUNT; i++) {
+        if (ilahrs_legacy[i].state != state || ilahrs_legacy[i].event != event) {
+            continue;
+        }
+        if (any) {
+            return (int)i;
+        }
+        if (firmware != NULL && ilahrs_firmware_compare(firmware, &ilahrs_legacy_versions[ilahrs_legacy[i].version]) < 0) {
+            return (int)i;
+        }
+    }
+    return -1;
+}
+
+static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, ilahrs_step_t *out)
+{
+    unsigned cell;
+    out->to = state;
+    out->send_count = 0;
+    if ((unsigned)state >= ILAHRS_STATE_COUNT || (unsigned)event >= ILAHRS_EVENT_COUNT) {
+        return false;
+    }
+    if (legacy >= 0) {
+        return outcome(ilahrs_legacy[legacy].outcome, out);
+    }
+    cell = ilahrs_cells[state][event];
+    return cell != 0 && outcome(cell - 1u, out);
+}
+
+bool ilahrs_transition(ilahrs_state_t state, ilahrs_event_t event, bool older_firmware, ilahrs_step_t *out)
+{
+    return transition(state, event, older_firmware ? legacy_row((unsigned)state, (unsigned)event, NULL, true) : -1, out);
+}
+
+bool ilahrs_transition_on(ilahrs_state_t state, ilahrs_event_t event, const ilahrs_firmware_t *firmware,
+                          ilahrs_step_t *out)
+{
+    return transition(state, event, legacy_row((unsigned)state, (unsigned)event, firmware, false), out);
+}
+
+bool ilahrs_firmware_parse(const char *text, size_t len, ilahrs_firmware_t *firmware, ilahrs_error_t *err)
+{
+    size_t i = 0;
+    memset(firmware, 0, sizeof *firmware);
+    for (;;) {
+        size_t start = i;
+        uint32_t part = 0;
+        while (i < len && text[i] >= '0' && text[i] <= '9') {
+            uint32_t digit = (uint32_t)(text[i] - '0');
+            if (part > (0xFFFFFFFFu - digit) / 10u) {
+                return fail(err, ILAHRS_ERR_MALFORMED, start, NULL);
+            }
+            part = part * 10u + digit;
+            i++;
+        }
+        if (i == start || (i < len && text[i] != '.') || firmware->count == ILAHRS_FIRMWARE_PARTS_MAX) {
+            return fail(err, ILAHRS_ERR_MALFORMED, start, NULL);
+        }
+        firmware->parts[firmware->count++] = part;
+        if (i == len) {
+            return true;
+        }
+        i++; /* the "." */
+    }
+}
+
+int ilahrs_firmware_compare(const ilahrs_firmware_t *a, const ilahrs_firmware_t *b)
+{
+    unsigned i;
+    for (i = 0; i < a->count && i < b->count && i < ILAHRS_FIRMWARE_PARTS_MAX; i++) {
+        if (a->parts[i] != b->parts[i]) {
+            return a->parts[i] < b->parts[i] ? -1 : 1;
+        }
+    }
+    return a->count < b->count ? -1 : a->count > b->count ? 1 : 0;
 }

@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1.
+/* Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /**
@@ -72,7 +72,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "35f708aa63f85245d54310f23b540b312f60a66f80f1da4ec82abff50f5d61d1"
+#define ILAHRS_SPEC_HASH "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
 
@@ -110,10 +110,12 @@ typedef enum ilahrs_error_kind {
     /** The peer sent a message that the protocol state does not allow (host session and device
      *  model). */
     ILAHRS_ERR_UNEXPECTED_MESSAGE = 11,
+    /** An answer the protocol requires did not arrive in time (host session). */
+    ILAHRS_ERR_TIMEOUT = 12,
 } ilahrs_error_kind_t;
 
 /** Number of error kinds, ILAHRS_OK included. */
-#define ILAHRS_ERROR_KIND_COUNT 12
+#define ILAHRS_ERROR_KIND_COUNT 13
 
 /** `offset` of an error that refers to no particular byte. */
 #define ILAHRS_NO_OFFSET ((size_t)-1)
@@ -2473,6 +2475,251 @@ bool ilahrs_stream_poll(ilahrs_stream_t *stream, ilahrs_message_t *msg);
  * false; the decoder is then empty (`discarded` keeps counting).
  */
 bool ilahrs_stream_finish(ilahrs_stream_t *stream, ilahrs_message_t *msg);
+
+
+/* ======================================================================================== */
+/* Device state machine (6.1, 6.3, 6.4)                                                     */
+/* ======================================================================================== */
+
+
+/*
+ * What the AHRS does with each input in each state: the `state_machine` of the spec as a const
+ * table (spec/README.md, "The device state machine"). A device firmware steps it on every
+ * message and timer; a host uses it to know which answer to expect. A (state, event) pair with
+ * no transition is ignored: no answer, no change of state (E33).
+ *
+ * @code
+ *     ilahrs_state_t state = ILAHRS_STATE_INITIAL;
+ *     ilahrs_frame_t frame;                 // a message received, e.g. from the stream decoder
+ *     ilahrs_step_t step;
+ *     ilahrs_event_t event = ilahrs_event_for_frame(state, &frame);
+ *     if (ilahrs_transition(state, event, false, &step)) {
+ *         for (unsigned i = 0; i < step.send_count; i++) {
+ *             send_answer(step.send[i]);      // ack, output, or a payload table
+ *         }
+ *     }
+ *     state = step.to;                      // also right when the event was ignored
+ * @endcode
+ */
+
+/** The states of the device; each has an operating mode (ilahrs_state_mode()). */
+typedef enum ilahrs_state {
+    /** Waiting for a command (6.1). Mode idle. */
+    ILAHRS_STATE_IDLE = 0,
+    /** LoadAHRSPar received; the parameter block must follow without pause (6.3.6). Mode idle.
+     *  Waits for the parameter block ahrs_parameters_load. */
+    ILAHRS_STATE_AWAITING_PARAMETERS = 1,
+    /** Initial alignment before continuous output (6.3.1, 6.3.3). Mode continuous. Timer:
+     *  alignment. */
+    ILAHRS_STATE_ALIGNING_CONTINUOUS = 2,
+    /** Output of the chosen format at the update rate (6.3.1). Mode continuous. Timer: output. */
+    ILAHRS_STATE_CONTINUOUS = 3,
+    /** Initial alignment before on-request output (6.3.2, 6.3.3). Mode on_request. Timer:
+     *  alignment. */
+    ILAHRS_STATE_ALIGNING_ON_REQUEST = 4,
+    /** One block of the chosen format per GetDataReq (6.3.2, 6.3.4). Mode on_request. */
+    ILAHRS_STATE_ON_REQUEST = 5,
+    /** Low-power mode; only LowPowerOff is heard (6.3.8). Mode sleep. */
+    ILAHRS_STATE_SLEEP = 6,
+    /** Start2DClb or Start3DClb received; the calibration parameter block must follow (6.4.1,
+     *  6.4.8). Mode calibration. Waits for the parameter block calibration_parameters. */
+    ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS = 7,
+    /** Initial alignment before the single calibration run (6.4.1, 6.4.8). Mode calibration.
+     *  Timer: alignment. */
+    ILAHRS_STATE_CALIBRATION_ALIGNING = 8,
+    /** Accumulating data while the object turns (6.4.1, 6.4.8). Mode calibration. Timer:
+     *  accumulation. */
+    ILAHRS_STATE_CALIBRATION_ACCUMULATING = 9,
+    /** Result sent; waiting for AcceptClb or ExitClb (6.4.1, 6.4.7). Mode calibration. */
+    ILAHRS_STATE_CALIBRATION_DECIDING = 10,
+    /** Start2D2TClb received; the calibration parameter block must follow (6.4.5). Mode
+     *  calibration. Waits for the parameter block calibration_parameters. */
+    ILAHRS_STATE_RUNS_AWAITING_PARAMETERS = 11,
+    /** 2D-2T calibration between runs: waiting for StartClbRun, FinishClb or ExitClb (6.4.5).
+     *  Mode calibration. Erratum E36. */
+    ILAHRS_STATE_RUNS_READY = 12,
+    /** StartClbRun received; the run parameter block must follow (6.4.6). Mode calibration.
+     *  Waits for the parameter block calibration_run_parameters. */
+    ILAHRS_STATE_RUN_AWAITING_PARAMETERS = 13,
+    /** Initial alignment before a 2D-2T run (6.4.5). Mode calibration. Timer: alignment. */
+    ILAHRS_STATE_RUN_ALIGNING = 14,
+    /** Accumulating data during a 2D-2T run (6.4.5). Mode calibration. Timer: accumulation. */
+    ILAHRS_STATE_RUN_ACCUMULATING = 15,
+} ilahrs_state_t;
+
+/** Number of states. */
+#define ILAHRS_STATE_COUNT 16
+/** The state after power-up (the value 0, so a zeroed state is at power-up). */
+#define ILAHRS_STATE_INITIAL ILAHRS_STATE_IDLE
+
+/**
+ * What happens to a device: every command of Table C.1 (with the value of its
+ * ilahrs_command_t, so ILAHRS_EVENT_OF_COMMAND() is a cast), then the other events.
+ */
+typedef enum ilahrs_event {
+    ILAHRS_EVENT_AHRS_CONT1 = ILAHRS_COMMAND_AHRS_CONT1, /**< The command AHRScont1 (0x80). */
+    ILAHRS_EVENT_AHRS_CONT2 = ILAHRS_COMMAND_AHRS_CONT2, /**< The command AHRScont2 (0x82). */
+    ILAHRS_EVENT_AHRS_CONT3 = ILAHRS_COMMAND_AHRS_CONT3, /**< The command AHRScont3 (0x83). */
+    ILAHRS_EVENT_AHRS_REQ1 = ILAHRS_COMMAND_AHRS_REQ1, /**< The command AHRSreq1 (0x84). */
+    ILAHRS_EVENT_AHRS_REQ2 = ILAHRS_COMMAND_AHRS_REQ2, /**< The command AHRSreq2 (0x86). */
+    ILAHRS_EVENT_AHRS_REQ3 = ILAHRS_COMMAND_AHRS_REQ3, /**< The command AHRSreq3 (0x87). */
+    ILAHRS_EVENT_NMEA_CONT = ILAHRS_COMMAND_NMEA_CONT, /**< The command NMEAcont (0x88). */
+    ILAHRS_EVENT_NMEA_REQ = ILAHRS_COMMAND_NMEA_REQ, /**< The command NMEAreq (0x89). */
+    ILAHRS_EVENT_GET_DATA_REQ = ILAHRS_COMMAND_GET_DATA_REQ, /**< The command GetDataReq (0xCA). */
+    ILAHRS_EVENT_STOP = ILAHRS_COMMAND_STOP, /**< The command Stop (0xFE). */
+    ILAHRS_EVENT_LOAD_AHRS_PAR = ILAHRS_COMMAND_LOAD_AHRS_PAR, /**< The command LoadAHRSPar (0x40). */
+    ILAHRS_EVENT_READ_AHRS_PAR = ILAHRS_COMMAND_READ_AHRS_PAR, /**< The command ReadAHRSPar (0x41). */
+    ILAHRS_EVENT_LOW_POWER_ON = ILAHRS_COMMAND_LOW_POWER_ON, /**< The command LowPowerOn (0xB0). */
+    ILAHRS_EVENT_LOW_POWER_OFF = ILAHRS_COMMAND_LOW_POWER_OFF, /**< The command LowPowerOff (0xBA). */
+    ILAHRS_EVENT_GET_VER_FIRMWARE = ILAHRS_COMMAND_GET_VER_FIRMWARE, /**< The command GetVerFirmware (0x1F). */
+    ILAHRS_EVENT_GET_BIT = ILAHRS_COMMAND_GET_BIT, /**< The command GetBIT (0x1A). */
+    ILAHRS_EVENT_START_2D_CLB = ILAHRS_COMMAND_START_2D_CLB, /**< The command Start2DClb (0x21). */
+    ILAHRS_EVENT_START_2D2T_CLB = ILAHRS_COMMAND_START_2D2T_CLB, /**< The command Start2D2TClb (0x22). */
+    ILAHRS_EVENT_START_3D_CLB = ILAHRS_COMMAND_START_3D_CLB, /**< The command Start3DClb (0x23). */
+    ILAHRS_EVENT_START_CLB_RUN = ILAHRS_COMMAND_START_CLB_RUN, /**< The command StartClbRun (0x2B). */
+    ILAHRS_EVENT_STOP_CLB_RUN = ILAHRS_COMMAND_STOP_CLB_RUN, /**< The command StopClbRun (0x20). */
+    ILAHRS_EVENT_FINISH_CLB = ILAHRS_COMMAND_FINISH_CLB, /**< The command FinishClb (0x2C). */
+    ILAHRS_EVENT_ACCEPT_CLB = ILAHRS_COMMAND_ACCEPT_CLB, /**< The command AcceptClb (0x2E). */
+    ILAHRS_EVENT_EXIT_CLB = ILAHRS_COMMAND_EXIT_CLB, /**< The command ExitClb (0xFE). */
+    ILAHRS_EVENT_CLEAR_CLB = ILAHRS_COMMAND_CLEAR_CLB, /**< The command ClearClb (0x2F). */
+    ILAHRS_EVENT_GET_CLB_RES = ILAHRS_COMMAND_GET_CLB_RES, /**< The command GetClbRes (0x2A). */
+    /** A data message whose payload has the size of the table the current state expects. */
+    ILAHRS_EVENT_PARAMETER_BLOCK = 26,
+    /** A data message of any other size. */
+    ILAHRS_EVENT_OTHER_MESSAGE = 27,
+    /** A command frame whose code no command of Table C.1 has. */
+    ILAHRS_EVENT_UNKNOWN = 28,
+    /** No parameter block within parameter_block_timeout_s of the command (E34). */
+    ILAHRS_EVENT_BLOCK_TIMEOUT = 29,
+    /** The initial alignment time (Table 6.9, 30 s by default) has elapsed. */
+    ILAHRS_EVENT_ALIGNMENT_DONE = 30,
+    /** The accumulation time of the calibration run (Table 6.13) has elapsed. */
+    ILAHRS_EVENT_ACCUMULATION_DONE = 31,
+    /** One output period has elapsed: 1 / update rate, at most 50 Hz for NMEA (E22). */
+    ILAHRS_EVENT_OUTPUT_DUE = 32,
+} ilahrs_event_t;
+
+/** Number of events. */
+#define ILAHRS_EVENT_COUNT 33
+/** The event of a command (ilahrs_command_t). */
+#define ILAHRS_EVENT_OF_COMMAND(command) ((ilahrs_event_t)(command))
+
+/** What the device sends in a transition. */
+typedef enum ilahrs_answer {
+    ILAHRS_ANSWER_ACK = 0, /**< The acknowledgement of the message just received (ilahrs_ack_build(), E12). */
+    ILAHRS_ANSWER_AHRS_PARAMETERS_READ = 1, /**< One ahrs_parameters_read data block (Parameters read, Table 6.10). */
+    ILAHRS_ANSWER_FIRMWARE_VERSION = 2, /**< One firmware_version data block (Firmware version, Table 6.11). */
+    ILAHRS_ANSWER_BIT_RESULT = 3, /**< One bit_result data block (Built-in test answer, Table 6.12). */
+    ILAHRS_ANSWER_CALIBRATION_STATUS = 4, /**< One calibration_status data block (Calibration results read back, Table 6.17). */
+    ILAHRS_ANSWER_INITIAL_ALIGNMENT = 5, /**< One initial_alignment data block (Initial alignment data, Table 6.8). */
+    ILAHRS_ANSWER_OUTPUT = 6, /**< One block of the output format the start command chose (a frame, or a $PAHR sentence). */
+    ILAHRS_ANSWER_OUTPUT_SLEEP = 7, /**< One output block whose USW reports mode sleep (E35). */
+    ILAHRS_ANSWER_CALIBRATION_RESULT = 8, /**< One calibration_result data block (Calibration result, Table 6.14). */
+    ILAHRS_ANSWER_CALIBRATION_RUN_RESULT = 9, /**< One calibration_run_result data block (2D-2T calibration run result, Table 6.15). */
+} ilahrs_answer_t;
+
+/** Number of answer kinds. */
+#define ILAHRS_ANSWER_COUNT 10
+/** Most answers one transition sends. */
+#define ILAHRS_STEP_SEND_MAX 1
+
+/** One transition: the next state and what the device sends, in order. */
+typedef struct ilahrs_step {
+    ilahrs_state_t to;                               /**< The state after the event. */
+    uint8_t send_count;                              /**< Entries in `send` (0: nothing). */
+    ilahrs_answer_t send[ILAHRS_STEP_SEND_MAX]; /**< What the device sends. */
+} ilahrs_step_t;
+
+/** The spec name of a state ("idle"); NULL for a value outside ilahrs_state_t. */
+const char *ilahrs_state_name(ilahrs_state_t state);
+/** Find a state by its spec name, `len` characters at `name`. */
+bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state);
+/** The operating mode of a state; ILAHRS_MODE_COUNT for a value outside ilahrs_state_t. */
+ilahrs_mode_t ilahrs_state_mode(ilahrs_state_t state);
+/** The payload table of the parameter block a state waits for (E34), or ILAHRS_PAYLOAD_NONE. */
+ilahrs_payload_t ilahrs_state_expects(ilahrs_state_t state);
+/**
+ * The event the timer of a state fires (accumulation: accumulation_done, alignment: alignment_done, output: output_due); false if the
+ * state runs no timer.
+ */
+bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event);
+
+/** The name of an event: the ICD name of a command ("AHRScont1"), else the spec name ("unknown"); NULL if out of range. */
+const char *ilahrs_event_name(ilahrs_event_t event);
+/** Find an event by its name (a command's ICD name or an event's spec name). */
+bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event);
+
+/** The spec name of an answer ("ack"); NULL for a value outside ilahrs_answer_t. */
+const char *ilahrs_answer_name(ilahrs_answer_t answer);
+/** The payload table an answer sends, or ILAHRS_PAYLOAD_NONE (ack and the output answers). */
+ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer);
+/**
+ * The USW mode an output answer reports in place of the device's own (output_sleep: sleep, E35); false
+ * for every other answer.
+ */
+bool ilahrs_answer_usw_mode(ilahrs_answer_t answer, ilahrs_usw_mode_t *mode);
+
+/**
+ * The event of a command frame with code `code` in `state`: of the commands sharing the code, the
+ * one valid in the state's mode, else the code's default (0xFE: ExitClb in calibration, Stop
+ * elsewhere, E14); ILAHRS_EVENT_UNKNOWN for a code no command has.
+ */
+ilahrs_event_t ilahrs_event_for_code(ilahrs_state_t state, uint8_t code);
+
+/**
+ * The event of a data message with a `payload_size`-byte payload in `state`:
+ * ILAHRS_EVENT_PARAMETER_BLOCK if the state waits for a parameter block of that size,
+ * else ILAHRS_EVENT_OTHER_MESSAGE.
+ */
+ilahrs_event_t ilahrs_event_for_data(ilahrs_state_t state, size_t payload_size);
+
+/**
+ * The event of a received frame in `state`: a command-type frame with a one-byte payload is
+ * ilahrs_event_for_code(), any other frame ilahrs_event_for_data() (a parameter block may come
+ * with either message type, E5).
+ */
+ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t *frame);
+
+/**
+ * Look a (state, event) pair up. `older_firmware`: the device runs firmware older than the
+ * version of the rows marked `firmware_before` (runs_ready on StopClbRun before 4.9.9.0, E29); those rows then take
+ * precedence. ilahrs_transition_on() compares a version for you.
+ *
+ * @return true with `*out` filled; false if the device ignores the event (E33), or `state` or
+ *         `event` is out of range, with `*out` set to (`state`, nothing), so that a caller may
+ *         apply `*out` either way
+ */
+bool ilahrs_transition(ilahrs_state_t state, ilahrs_event_t event, bool older_firmware, ilahrs_step_t *out);
+
+/** Most numeric parts a firmware version holds. */
+#define ILAHRS_FIRMWARE_PARTS_MAX 8
+
+/** A firmware version such as 4.9.9.0: numeric parts compared in order. */
+typedef struct ilahrs_firmware {
+    uint32_t parts[ILAHRS_FIRMWARE_PARTS_MAX]; /**< The parts, most significant first. */
+    uint8_t count;                             /**< Number of parts (1..ILAHRS_FIRMWARE_PARTS_MAX). */
+} ilahrs_firmware_t;
+
+/**
+ * Read a version, decimal numbers separated by ".", `len` characters at `text`. Refuses
+ * (`malformed` at the first character of the bad part) an empty or non-numeric part, a part above
+ * 2^32 - 1 and more than ILAHRS_FIRMWARE_PARTS_MAX parts.
+ */
+bool ilahrs_firmware_parse(const char *text, size_t len, ilahrs_firmware_t *firmware, ilahrs_error_t *err);
+
+/**
+ * Compare two versions part by part as numbers (4.10.0.0 is after 4.9.9.0; a version that another
+ * one extends is the older: 4.9 is before 4.9.0). Negative, zero or positive as `a` is before,
+ * equal to or after `b`.
+ */
+int ilahrs_firmware_compare(const ilahrs_firmware_t *a, const ilahrs_firmware_t *b);
+
+/**
+ * ilahrs_transition() for a device running `firmware` (NULL: current firmware): a row marked
+ * `firmware_before` applies when `firmware` is before its version.
+ */
+bool ilahrs_transition_on(ilahrs_state_t state, ilahrs_event_t event, const ilahrs_firmware_t *firmware,
+                          ilahrs_step_t *out);
 
 #ifdef __cplusplus
 }

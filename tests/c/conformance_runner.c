@@ -5,7 +5,7 @@
  * command, variant and sentence-field tables reached through its reflection functions);
  * the runner knows only the request grammar. All test logic lives in conformance/harness.py.
  *
- * Implements every kind except `session`.
+ * Implements every kind. `session` steps the library's state machine (ilahrs_transition_on()).
  *
  * `--bytewise`: the stream kind feeds the decoder one byte at a time through
  * ilahrs_stream_push()/ilahrs_stream_poll() instead of ilahrs_stream_next() on whole chunks.
@@ -684,6 +684,73 @@ static void do_stream(text_t *t, char **args, int nargs)
     free(events.data);
 }
 
+/* One session input: `C:HH` (a command frame with code 0xHH), `D:N` (a data message with an
+ * N-byte payload) or `E:NAME` (another event), as the table's event in `state`. */
+static int session_event(const char *token, ilahrs_state_t state, ilahrs_event_t *event)
+{
+    long long number;
+    if (strncmp(token, "C:", 2) == 0) {
+        bytes_t b;
+        int ok = read_hex(token + 2, &b) && b.len == 1;
+        if (ok) {
+            *event = ilahrs_event_for_code(state, b.data[0]);
+        }
+        free(b.data);
+        return ok;
+    }
+    if (strncmp(token, "D:", 2) == 0) {
+        if (!read_int(token + 2, &number) || number < 0) {
+            return 0;
+        }
+        *event = ilahrs_event_for_data(state, (size_t)number);
+        return 1;
+    }
+    return strncmp(token, "E:", 2) == 0 && ilahrs_event_by_name(token + 2, strlen(token + 2), event);
+}
+
+static void do_session(text_t *t, char **args, int nargs)
+{
+    ilahrs_firmware_t firmware;
+    ilahrs_error_t err;
+    const ilahrs_firmware_t *version = NULL;
+    ilahrs_state_t state = ILAHRS_STATE_INITIAL;
+    size_t count = 0;
+    char *token;
+    if (nargs != 2) {
+        bad_request(t);
+        return;
+    }
+    if (strcmp(args[0], "-") != 0) {
+        if (!ilahrs_firmware_parse(args[0], strlen(args[0]), &firmware, &err)) {
+            out_error(t, &err);
+            return;
+        }
+        version = &firmware;
+    }
+    out_str(t, "ok steps=");
+    for (token = strtok(args[1], ","); token != NULL; token = strtok(NULL, ",")) {
+        ilahrs_event_t event;
+        ilahrs_step_t step;
+        uint8_t i;
+        if (!session_event(token, state, &event)) {
+            bad_request(t);
+            return;
+        }
+        (void)ilahrs_transition_on(state, event, version, &step);
+        state = step.to;
+        out_str(t, count++ > 0 ? "," : "");
+        out_str(t, ilahrs_event_name(event));
+        out_str(t, ">");
+        out_str(t, ilahrs_state_name(state));
+        out_str(t, ">");
+        for (i = 0; i < step.send_count; i++) {
+            out_str(t, i > 0 ? "+" : "");
+            out_str(t, ilahrs_answer_name(step.send[i]));
+        }
+        out_str(t, step.send_count == 0 ? "-" : "");
+    }
+}
+
 typedef struct {
     const char *kind;
     void (*run)(text_t *, char **, int);
@@ -695,7 +762,7 @@ static const handler_t handlers[] = {
     { "command_decode", do_command_decode }, { "ack", do_ack },
     { "payload_decode", do_payload_decode }, { "payload_encode", do_payload_encode },
     { "nmea_decode", do_nmea_decode },     { "nmea_encode", do_nmea_encode },
-    { "stream", do_stream },
+    { "stream", do_stream },               { "session", do_session },
 };
 
 /* One request line (modified in place) -> one answer. */

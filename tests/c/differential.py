@@ -1,9 +1,12 @@
-"""The C stream decoder against the Python reference binding on large damaged captures (make test-c).
+"""The C stream decoder and state machine against the Python reference binding (make test-c).
 
 Each round takes a capture written by the C library (bench/c/capture.c, a given seed), damages
 it with random byte changes, cuts it into random chunks, and decodes it with the Python
 `ilahrs.StreamDecoder` and with the C runner (`stream` request, conformance/README.md). Both
-must hand out the same messages, byte for byte, and discard the same number of bytes. Seeded.
+must hand out the same messages, byte for byte, and discard the same number of bytes. Then random
+sessions (`session` request: command codes, data messages of every block size and its neighbours,
+timer events, on every firmware version the table names and around it) are stepped by the C runner
+and by `ilahrs.statemachine`; every step must agree. Seeded.
 
     python tests/c/differential.py CAPTURE-TOOL RUNNER [ROUNDS]
 """
@@ -17,6 +20,7 @@ import tempfile
 from pathlib import Path
 
 import ilahrs
+from ilahrs import statemachine
 
 
 def python_events(chunks: list[bytes]) -> tuple[list[str], int]:
@@ -56,6 +60,61 @@ def _unpercent(token: str) -> bytes:
     return bytes(out)
 
 
+def python_session(firmware: str | None, tokens: list[str]) -> str:
+    state = statemachine.INITIAL
+    steps = []
+    for token in tokens:
+        kind, _, value = token.partition(":")
+        if kind == "C":
+            event = statemachine.command_event(int(value, 16), state) or statemachine.UNKNOWN
+        elif kind == "D":
+            expects = statemachine.STATES[state].expects
+            fits = expects is not None and int(value) == ilahrs.PAYLOADS[expects].SIZE
+            event = statemachine.PARAMETER_BLOCK if fits else statemachine.OTHER_MESSAGE
+        else:
+            event = value
+        transition = statemachine.lookup(state, event, firmware)
+        sends: tuple[str, ...] = ()
+        if transition is not None:
+            state, sends = transition.to, transition.send
+        steps.append(f"{event}>{state}>{'+'.join(sends) or '-'}")
+    return "ok steps=" + ",".join(steps)
+
+
+def sessions(runner: str, count: int) -> int:
+    """Random sessions through the C runner and the Python table; the number that differ."""
+    rng = random.Random(0x5E55)
+    codes = sorted({c.code for c in ilahrs.COMMANDS.values()})
+    sizes = sorted({cls.SIZE + d for cls in ilahrs.PAYLOADS.values() for d in (-1, 0, 1)} - {0})
+    timers = [statemachine.BLOCK_TIMEOUT, *sorted(set(statemachine.TIMER_EVENTS.values()))]
+    versions: list[str | None] = [None]
+    for before, _ in statemachine.LEGACY_TRANSITIONS.values():
+        parts = [int(p) for p in before.split(".")]
+        versions += [before, ".".join(map(str, [*parts[:-1], parts[-1] + 1])), ".".join(map(str, parts[:-1])),
+                     ".".join(map(str, [parts[0] - 1, *parts[1:]]))]
+    lines = []
+    expected = []
+    for _ in range(count):
+        firmware = rng.choice(versions)
+        tokens = []
+        for _ in range(rng.randrange(1, 120)):
+            roll = rng.random()
+            if roll < 0.6:
+                tokens.append(f"C:{rng.choice(codes) if rng.random() < 0.9 else rng.randrange(256):02X}")
+            elif roll < 0.8:
+                tokens.append(f"D:{rng.choice(sizes)}")
+            else:
+                tokens.append(f"E:{rng.choice(timers)}")
+        lines.append(f"session {firmware or '-'} {','.join(tokens)}\n")
+        expected.append(python_session(firmware, tokens))
+    answers = subprocess.run([runner], input="".join(lines), capture_output=True, text=True, check=True).stdout
+    got = answers.splitlines()
+    differ = sum(1 for a, b in zip(expected, got, strict=False) if a != b) + abs(len(expected) - len(got))
+    print(f"sessions: {count} random sessions, {sum(len(x.split(',')) for x in lines)} events: "
+          f"{'same' if differ == 0 else f'{differ} DIFFERENT'}")
+    return differ
+
+
 def main(argv: list[str]) -> int:
     if len(argv) not in (3, 4):
         print(__doc__, file=sys.stderr)
@@ -86,6 +145,7 @@ def main(argv: list[str]) -> int:
             verdict = "same" if same else "DIFFERENT"
             print(f"seed {seed}: {size} bytes, {len(chunks)} chunks: python {len(want[0])} messages, "
                   f"{want[1]} discarded; c {len(got[0])} messages, {got[1]} discarded: {verdict}")
+    failures += sessions(runner, 400) != 0
     return 1 if failures else 0
 
 

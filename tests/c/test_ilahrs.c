@@ -818,6 +818,174 @@ static void test_stream(void)
     CHECK(sizeof(ilahrs_stream_t) <= 128);
 }
 
+/* ---- Device state machine --------------------------------------------------------------- */
+
+#ifdef ILAHRS_STATE_COUNT
+static int same_step(const ilahrs_step_t *a, const ilahrs_step_t *b)
+{
+    uint8_t i;
+    if (a->to != b->to || a->send_count != b->send_count) {
+        return 0;
+    }
+    for (i = 0; i < a->send_count; i++) {
+        if (a->send[i] != b->send[i]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static ilahrs_firmware_t version(const char *text)
+{
+    ilahrs_firmware_t fw;
+    ilahrs_error_t err;
+    CHECK(ilahrs_firmware_parse(text, strlen(text), &fw, &err));
+    return fw;
+}
+
+static void test_firmware(void)
+{
+    static const struct {
+        const char *text;
+        size_t offset;
+    } bad[] = { { "", 0 }, { ".", 0 }, { "4..1", 2 }, { "a", 0 }, { "4.9x", 2 }, { "4.", 2 },
+                { "4294967296", 0 }, { "1.99999999999", 2 }, { "-1", 0 }, { "1.2.3.4.5.6.7.8.9", 16 } };
+    ilahrs_firmware_t a;
+    ilahrs_firmware_t b;
+    ilahrs_error_t err;
+    size_t i;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        memset(&err, 0, sizeof err);
+        CHECK(!ilahrs_firmware_parse(bad[i].text, strlen(bad[i].text), &a, &err));
+        CHECK(is_error(&err, ILAHRS_ERR_MALFORMED, bad[i].offset));
+    }
+    a = version("4294967295.0");
+    CHECK(a.count == 2 && a.parts[0] == 4294967295u && a.parts[1] == 0);
+    a = version("1.2.3.4.5.6.7.8");
+    CHECK(a.count == ILAHRS_FIRMWARE_PARTS_MAX || ILAHRS_FIRMWARE_PARTS_MAX > 8);
+    a = version("4.10.0.0");
+    b = version("4.9.9.0");
+    CHECK(ilahrs_firmware_compare(&a, &b) > 0 && ilahrs_firmware_compare(&b, &a) < 0);
+    a = version("4.9");
+    b = version("4.9.0");
+    CHECK(ilahrs_firmware_compare(&a, &b) < 0 && ilahrs_firmware_compare(&b, &a) > 0);
+    a = version("004.9.09");
+    b = version("4.9.9");
+    CHECK(ilahrs_firmware_compare(&a, &b) == 0);
+}
+
+static void test_machine(void)
+{
+    unsigned s;
+    unsigned e;
+    unsigned code;
+    ilahrs_step_t t;
+    ilahrs_step_t u;
+    ilahrs_firmware_t oldest = version("0");
+    CHECK(ILAHRS_STATE_INITIAL == 0);
+    for (s = 0; s < ILAHRS_STATE_COUNT; s++) {
+        ilahrs_state_t state = (ilahrs_state_t)s;
+        ilahrs_state_t found;
+        const char *name = ilahrs_state_name(state);
+        ilahrs_payload_t expects = ilahrs_state_expects(state);
+        ilahrs_event_t timer;
+        CHECK(name != NULL && ilahrs_state_by_name(name, strlen(name), &found) && found == state);
+        CHECK((unsigned)ilahrs_state_mode(state) < ILAHRS_MODE_COUNT);
+        /* A state that waits for a block takes it; a timer state handles its timer. */
+        if (expects != ILAHRS_PAYLOAD_NONE) {
+            size_t size = ilahrs_payload_size(expects);
+            CHECK(ilahrs_event_for_data(state, size) == ILAHRS_EVENT_PARAMETER_BLOCK);
+            CHECK(ilahrs_event_for_data(state, size + 1) == ILAHRS_EVENT_OTHER_MESSAGE);
+            CHECK(ilahrs_event_for_data(state, size - 1) == ILAHRS_EVENT_OTHER_MESSAGE);
+            CHECK(ilahrs_transition(state, ILAHRS_EVENT_PARAMETER_BLOCK, false, &t));
+        } else {
+            for (e = 0; e < ILAHRS_PAYLOAD_COUNT; e++) {
+                CHECK(ilahrs_event_for_data(state, ilahrs_payload_size((ilahrs_payload_t)e)) == ILAHRS_EVENT_OTHER_MESSAGE);
+            }
+        }
+        if (ilahrs_state_timer(state, &timer)) {
+            CHECK((unsigned)timer >= ILAHRS_COMMAND_COUNT && (unsigned)timer < ILAHRS_EVENT_COUNT);
+            CHECK(ilahrs_transition(state, timer, false, &t));
+        }
+        /* Codes: the event is a command with that code (valid in the mode if any name is), or unknown. */
+        for (code = 0; code < 256; code++) {
+            ilahrs_event_t ev = ilahrs_event_for_code(state, (uint8_t)code);
+            uint8_t frame[ILAHRS_FRAME_MAX_SIZE];
+            uint8_t payload = (uint8_t)code;
+            ilahrs_frame_t f;
+            ilahrs_command_match_t match;
+            bool known;
+            unsigned k;
+            bool any_valid = false;
+            memset(&f, 0, sizeof f);
+            f.message_type = ILAHRS_MESSAGE_TYPE_COMMAND;
+            f.payload = &payload;
+            f.payload_size = 1;
+            CHECK(ilahrs_frame_build(&f, frame, sizeof frame, NULL) == ILAHRS_FRAME_MIN_SIZE);
+            known = ilahrs_command_decode(frame, ILAHRS_FRAME_MIN_SIZE, &match, NULL);
+            CHECK(ilahrs_event_for_frame(state, &f) == ev);
+            if (!known) {
+                CHECK(ev == ILAHRS_EVENT_UNKNOWN);
+                continue;
+            }
+            CHECK((unsigned)ev < ILAHRS_COMMAND_COUNT && ilahrs_command_code((ilahrs_command_t)ev) == code);
+            for (k = 0; k < match.count; k++) {
+                any_valid = any_valid || (ilahrs_command_valid_in(match.commands[k]) & ILAHRS_MODE_BIT(ilahrs_state_mode(state))) != 0;
+            }
+            if (any_valid) {
+                CHECK((ilahrs_command_valid_in((ilahrs_command_t)ev) & ILAHRS_MODE_BIT(ilahrs_state_mode(state))) != 0);
+            }
+        }
+        /* Every cell: a sane outcome, or (state, nothing) when ignored; firmware rows only where
+         * the firmware is older. */
+        for (e = 0; e < ILAHRS_EVENT_COUNT; e++) {
+            ilahrs_event_t event = (ilahrs_event_t)e;
+            bool taken = ilahrs_transition(state, event, false, &t);
+            uint8_t i;
+            CHECK((unsigned)t.to < ILAHRS_STATE_COUNT && t.send_count <= ILAHRS_STEP_SEND_MAX);
+            if (!taken) {
+                CHECK(t.to == state && t.send_count == 0);
+            }
+            for (i = 0; i < t.send_count; i++) {
+                CHECK((unsigned)t.send[i] < ILAHRS_ANSWER_COUNT);
+            }
+            CHECK(ilahrs_transition_on(state, event, NULL, &u) == taken && same_step(&t, &u));
+            CHECK(ilahrs_transition(state, event, true, &t) == ilahrs_transition_on(state, event, &oldest, &u));
+            CHECK(same_step(&t, &u));
+        }
+    }
+    for (e = 0; e < ILAHRS_EVENT_COUNT; e++) {
+        const char *name = ilahrs_event_name((ilahrs_event_t)e);
+        ilahrs_event_t found;
+        CHECK(name != NULL && ilahrs_event_by_name(name, strlen(name), &found) && found == (ilahrs_event_t)e);
+        if (e < ILAHRS_COMMAND_COUNT) {
+            CHECK(strcmp(name, ilahrs_command_name((ilahrs_command_t)e)) == 0);
+        }
+    }
+    for (e = 0; e < ILAHRS_ANSWER_COUNT; e++) {
+        ilahrs_payload_t payload = ilahrs_answer_payload((ilahrs_answer_t)e);
+        const char *name = ilahrs_answer_name((ilahrs_answer_t)e);
+        CHECK(name != NULL);
+        if (payload != ILAHRS_PAYLOAD_NONE) {
+            CHECK(name != NULL && strcmp(name, ilahrs_payload_name(payload)) == 0);
+        }
+    }
+    /* Values outside the enums: no crash, nothing taken. */
+    CHECK(ilahrs_state_name((ilahrs_state_t)ILAHRS_STATE_COUNT) == NULL);
+    CHECK(ilahrs_event_name((ilahrs_event_t)ILAHRS_EVENT_COUNT) == NULL);
+    CHECK(ilahrs_answer_name((ilahrs_answer_t)ILAHRS_ANSWER_COUNT) == NULL);
+    CHECK(ilahrs_state_mode((ilahrs_state_t)ILAHRS_STATE_COUNT) == ILAHRS_MODE_COUNT);
+    CHECK(!ilahrs_transition((ilahrs_state_t)ILAHRS_STATE_COUNT, (ilahrs_event_t)0, false, &t));
+    CHECK(!ilahrs_transition((ilahrs_state_t)0, (ilahrs_event_t)ILAHRS_EVENT_COUNT, true, &t));
+    CHECK(ilahrs_event_for_code((ilahrs_state_t)ILAHRS_STATE_COUNT, 0) < (ilahrs_event_t)ILAHRS_EVENT_COUNT);
+    test_firmware();
+}
+#else
+static void test_machine(void)
+{
+}
+#endif
+
 int main(int argc, char **argv)
 {
     rng_state = argc > 1 ? strtoull(argv[1], NULL, 0) : 0x1A4E5C0FFEEULL;
@@ -832,6 +1000,7 @@ int main(int argc, char **argv)
     test_date();
     test_pahr();
     test_stream();
+    test_machine();
     printf("test_ilahrs: %lu checks, %lu failed\n", checks, failures);
     return failures == 0 ? 0 : 1;
 }

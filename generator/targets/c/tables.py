@@ -144,7 +144,8 @@ def _index(table: list[Bounds], b: Bounds) -> int:
 
 
 def build_tables(spec: Spec) -> Tables:
-    kinds = ("error", "frame", "field", "sentence", "date", "command", "payload", "variant", "mode", "flag")
+    kinds = ("error", "frame", "field", "sentence", "date", "command", "payload", "variant", "mode", "flag",
+             "state", "event", "answer")
     pools = {name: StringPool(name) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
@@ -169,6 +170,13 @@ def build_tables(spec: Spec) -> Tables:
     if spec.status_word is not None:
         for flag in spec.status_word.flags:
             pools["flag"].add(flag.name)
+    if spec.state_machine is not None:
+        for st in spec.state_machine.states:
+            pools["state"].add(st.name)
+        for ev in spec.state_machine.events:
+            pools["event"].add(ev.name)
+        for answer in spec.state_machine.sends:
+            pools["answer"].add(answer)
 
     int_bounds: list[Bounds] = [Bounds(0.0, 0.0)]  # row 0: no check
     float_bounds: list[Bounds] = [Bounds(0.0, 0.0)]

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from generator.model import Spec
+from generator.model import TIMER_EVENTS, Spec
 from generator.render import Output
 
-from . import filters, tables
+from . import filters, machine, tables
 
 __all__ = ["FILTERS", "GLOBALS", "outputs"]
 
@@ -36,6 +36,8 @@ def outputs(spec: Spec) -> list[Output]:
         "response_kinds": tables.response_kinds(spec),
         "canon": tables.canonical_layout(spec),
         "max_response_payloads": max(1, *(len(c.response_payloads) for c in spec.commands)),
+        "m": machine.build_machine(spec),
+        "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
         Output("c/ilahrs.h", "ilahrs.h.j2", context),

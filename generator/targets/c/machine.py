@@ -1,0 +1,160 @@
+"""The device state machine as compact C tables, derived from `spec.state_machine`.
+
+The C library looks a (state, event) pair up in one dense `uint8_t` matrix whose cells index a
+short list of distinct outcomes (next state, answer sequence); sequences index one flat list of
+answers. Rows marked `firmware_before` go to a separate list checked first. Events are the
+commands in `ilahrs_command_t` order (so a command's event has the command's value), then the
+spec's other events. Nothing here is written by hand: states, events, answers and every cell come
+from the model, in the model's order.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from generator.model import TIMER_EVENTS, Spec
+
+IGNORED = 0
+"""Cell value of a (state, event) pair without a transition (E33)."""
+
+# Answers that are not payload tables (generator/validate.py names the same three).
+ACK = "ack"
+OUTPUT = "output"
+OUTPUT_PREFIX = "output_"
+ACK_DOC = "The acknowledgement of the message just received (ilahrs_ack_build(), E12)."
+OUTPUT_DOC = "One block of the output format the start command chose (a frame, or a $PAHR sentence)."
+
+
+@dataclass(frozen=True)
+class Outcome:
+    to: int  # state index
+    sequence: int  # index into Machine.sequences
+
+
+@dataclass(frozen=True)
+class LegacyRow:
+    state: int
+    event: int
+    outcome: int  # index into Machine.outcomes
+    version: tuple[int, ...]
+    erratum: str | None
+
+
+@dataclass(frozen=True)
+class Answer:
+    name: str
+    payload: str | None  # the payload table it sends, if it is one
+    usw_mode: str | None  # output_<mode>: the USW mode the output block reports
+    doc: str
+
+
+@dataclass
+class Machine:
+    states: list[str]
+    events: list[str]  # commands (ICD names) first, then the other events
+    extra_events: list[str]
+    answers: list[Answer]
+    sequences: list[tuple[int, ...]]  # answer indices
+    sequence_start: list[int]  # offset of each sequence in flat_answers
+    flat_answers: list[int]
+    outcomes: list[Outcome]
+    cells: list[list[int]]  # [state][event] -> outcome index + 1, or IGNORED
+    legacy: list[LegacyRow]
+    send_max: int
+    versions: list[tuple[int, ...]]
+    version_parts_max: int
+    timer_events: list[int | None]  # per state: the event its timer fires
+    expects: list[str | None]  # per state: the payload table it waits for
+    wildcard_note: dict[tuple[int, int], bool]
+
+
+def parse_version(text: str) -> tuple[int, ...]:
+    parts = text.split(".")
+    if not all(p.isdigit() for p in parts):
+        raise ValueError(f"firmware version {text!r} is not numeric parts separated by '.'")
+    return tuple(int(p) for p in parts)
+
+
+def build_machine(spec: Spec) -> Machine | None:
+    sm = spec.state_machine
+    if sm is None:
+        return None
+    states = [s.name for s in sm.states]
+    if states[0] != sm.initial:
+        # The C enum gives the initial state the value 0 so that a zeroed device is at power-up.
+        states.remove(sm.initial)
+        states.insert(0, sm.initial)
+    extra = [e.name for e in sm.events]
+    events = [c.name for c in spec.commands] + extra
+    payload_names = {p.name for p in spec.payloads}
+    usw_modes = {m.name for m in spec.status_word.modes} if spec.status_word is not None else set()
+    answers: list[Answer] = []
+    for name in sm.sends:
+        if name in payload_names:
+            p = spec.payload(name)
+            answers.append(Answer(name, name, None, f"One {p.name} data block ({p.title}, {p.icd})."))
+        elif name == ACK:
+            answers.append(Answer(name, None, None, ACK_DOC))
+        elif name == OUTPUT:
+            answers.append(Answer(name, None, None, OUTPUT_DOC))
+        elif name.startswith(OUTPUT_PREFIX) and name[len(OUTPUT_PREFIX):] in usw_modes:
+            mode = name[len(OUTPUT_PREFIX):]
+            answers.append(Answer(name, None, mode, f"One output block whose USW reports mode {mode} (E35)."))
+        else:
+            raise ValueError(f"state machine answer {name!r} has no C meaning")
+    answer_index = {a.name: k for k, a in enumerate(answers)}
+    sequences: list[tuple[int, ...]] = []
+    outcomes: list[Outcome] = []
+
+    def outcome_of(to: str, send: tuple[str, ...]) -> int:
+        seq = tuple(answer_index[a] for a in send)
+        if seq not in sequences:
+            sequences.append(seq)
+        o = Outcome(states.index(to), sequences.index(seq))
+        if o not in outcomes:
+            outcomes.append(o)
+        return outcomes.index(o)
+
+    cells = [[IGNORED] * len(events) for _ in states]
+    legacy: list[LegacyRow] = []
+    wildcard: dict[tuple[int, int], bool] = {}
+    for t in sm.transitions:
+        s, e = states.index(t.state), events.index(t.event)
+        k = outcome_of(t.to, t.send)
+        if t.firmware_before is not None:
+            legacy.append(LegacyRow(s, e, k, parse_version(t.firmware_before), t.erratum))
+        elif cells[s][e] == IGNORED:
+            cells[s][e] = k + 1
+            wildcard[(s, e)] = t.wildcard
+    starts: list[int] = []
+    flat: list[int] = []
+    for seq in sequences:
+        starts.append(len(flat))
+        flat.extend(seq)
+    versions: list[tuple[int, ...]] = []
+    for row in legacy:
+        if row.version not in versions:
+            versions.append(row.version)
+    by_name = {s.name: s for s in sm.states}
+    return Machine(
+        states=states,
+        events=events,
+        extra_events=extra,
+        answers=answers,
+        sequences=sequences,
+        sequence_start=starts,
+        flat_answers=flat,
+        outcomes=outcomes,
+        cells=cells,
+        legacy=legacy,
+        send_max=max([1, *(len(s) for s in sequences)]),
+        versions=versions,
+        version_parts_max=max([4, *(len(v) for v in versions)]),
+        timer_events=[_timer_event(by_name[s].timer, events) for s in states],
+        expects=[by_name[s].expects for s in states],
+        wildcard_note=wildcard,
+    )
+
+
+def _timer_event(timer: str | None, events: list[str]) -> int | None:
+    return None if timer is None else events.index(TIMER_EVENTS[timer])
