@@ -34,6 +34,8 @@ lint-rust: setup-rust
 	$(CARGO) clippy --quiet --manifest-path $(RUST_RUNNER_CRATE) -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path tests/rust/Cargo.toml --all-targets -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path bench/rust/Cargo.toml -- -D warnings
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --manifest-path $(RUST_LIB)
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --all-features --manifest-path $(RUST_LIB)
 
 # The differential test runs the Rust and Python runners on the same seeded, mutated inputs
 # (tests/rust/differential.py) and checks sessions against the spec model. A spec with one more

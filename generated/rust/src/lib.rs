@@ -6,8 +6,8 @@
 //! `spec/ilahrs.yaml` (spec version 1.0.0).
 //!
 //! `no_std`, no allocation, no dependencies, no `unsafe`, and no panic reachable from any
-//! input. The `std` feature adds [`std::error::Error`] for [`Error`] and
-//! [`io::Messages`], an iterator over the messages of a [`std::io::Read`].
+//! input. The `std` feature adds `std::error::Error` for [`Error`] and
+//! `io::Messages`, an iterator over the messages of a `std::io::Read`.
 //!
 //! | module | what |
 //! |---|---|

@@ -17,7 +17,7 @@ pub const SIZE: usize = 2;
 pub mod field {
     use crate::wire::Field;
 
-    /// Check sum, u16.
+    /// Check sum, `u16`.
     pub const CHECKSUM: Field = 0..2;
 }
 
@@ -26,7 +26,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Check sum, u16.
+    /// Check sum, `u16`.
     pub const CHECKSUM: FieldInfo = FieldInfo {
         name: "checksum",
         icd_name: "Check sum",
@@ -78,7 +78,7 @@ impl<T: AsRef<[u8]>> Acknowledgement<T> {
         self.buffer.as_ref()
     }
 
-    /// Check sum, u16: Checksum of the acknowledged message, message type through payload.
+    /// Check sum, `u16`: Checksum of the acknowledged message, message type through payload.
     pub fn checksum(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::CHECKSUM)
     }
@@ -97,7 +97,7 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> Acknowledgement<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct AcknowledgementRepr {
-    /// Check sum, u16: Checksum of the acknowledged message, message type through payload.
+    /// Check sum, `u16`: Checksum of the acknowledged message, message type through payload.
     pub checksum: u16,
 }
 

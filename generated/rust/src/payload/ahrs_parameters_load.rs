@@ -20,37 +20,37 @@ pub const SIZE: usize = 50;
 pub mod field {
     use crate::wire::Field;
 
-    /// Update rate, u16, hertz.
+    /// Update rate, `u16`, hertz.
     pub const UPDATE_RATE: Field = 0..2;
 
-    /// Initial alignment time, u16, seconds.
+    /// Initial alignment time, `u16`, seconds.
     pub const ALIGNMENT_TIME: Field = 2..4;
 
-    /// Magnetic declination, Mdec, f32, degrees.
+    /// Magnetic declination, Mdec, `f32`, degrees.
     pub const DECLINATION: Field = 4..8;
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: Field = 8..12;
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: Field = 12..16;
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: Field = 16..20;
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: Field = 20..24;
 
-    /// Alignment angle A1, f32, degrees.
+    /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: Field = 24..28;
 
-    /// Alignment angle A2, f32, degrees.
+    /// Alignment angle A2, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A2: Field = 28..32;
 
-    /// Alignment angle A3, f32, degrees.
+    /// Alignment angle A3, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A3: Field = 32..36;
 
-    /// Reserved, reserved[14].
+    /// Reserved, `reserved[14]`.
     pub const RESERVED: Field = 36..50;
 }
 
@@ -59,7 +59,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Update rate, u16, hertz.
+    /// Update rate, `u16`, hertz.
     pub const UPDATE_RATE: FieldInfo = FieldInfo {
         name: "update_rate",
         icd_name: "Update rate",
@@ -75,7 +75,7 @@ pub mod info {
         doc: "Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).",
     };
 
-    /// Initial alignment time, u16, seconds.
+    /// Initial alignment time, `u16`, seconds.
     pub const ALIGNMENT_TIME: FieldInfo = FieldInfo {
         name: "alignment_time",
         icd_name: "Initial alignment time",
@@ -92,7 +92,7 @@ pub mod info {
             "Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.",
     };
 
-    /// Magnetic declination, Mdec, f32, degrees.
+    /// Magnetic declination, Mdec, `f32`, degrees.
     pub const DECLINATION: FieldInfo = FieldInfo {
         name: "declination",
         icd_name: "Magnetic declination, Mdec",
@@ -109,7 +109,7 @@ pub mod info {
             "Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.",
     };
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: FieldInfo = FieldInfo {
         name: "latitude",
         icd_name: "Latitude",
@@ -125,7 +125,7 @@ pub mod info {
         doc: "Latitude.",
     };
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: FieldInfo = FieldInfo {
         name: "longitude",
         icd_name: "Longitude",
@@ -141,7 +141,7 @@ pub mod info {
         doc: "Longitude.",
     };
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: FieldInfo = FieldInfo {
         name: "altitude",
         icd_name: "Altitude",
@@ -157,7 +157,7 @@ pub mod info {
         doc: "Altitude.",
     };
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: FieldInfo = FieldInfo {
         name: "date",
         icd_name: "Date (Year, Month, Day)",
@@ -173,7 +173,7 @@ pub mod info {
         doc: "Date as Year + (Month - 1)/12 + Day/365.",
     };
 
-    /// Alignment angle A1, f32, degrees.
+    /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: FieldInfo = FieldInfo {
         name: "alignment_angle_a1",
         icd_name: "Alignment angle A1",
@@ -190,7 +190,7 @@ pub mod info {
             "Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).",
     };
 
-    /// Alignment angle A2, f32, degrees.
+    /// Alignment angle A2, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A2: FieldInfo = FieldInfo {
         name: "alignment_angle_a2",
         icd_name: "Alignment angle A2",
@@ -207,7 +207,7 @@ pub mod info {
             "Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).",
     };
 
-    /// Alignment angle A3, f32, degrees.
+    /// Alignment angle A3, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A3: FieldInfo = FieldInfo {
         name: "alignment_angle_a3",
         icd_name: "Alignment angle A3",
@@ -224,7 +224,7 @@ pub mod info {
             "Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).",
     };
 
-    /// Reserved, reserved[14].
+    /// Reserved, `reserved[14]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -288,17 +288,17 @@ impl<T: AsRef<[u8]>> AhrsParametersLoad<T> {
         self.buffer.as_ref()
     }
 
-    /// Update rate, u16, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).
+    /// Update rate, `u16`, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).
     pub fn update_rate(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::UPDATE_RATE)
     }
 
-    /// Initial alignment time, u16, seconds: Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
+    /// Initial alignment time, `u16`, seconds: Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
     pub fn alignment_time(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::ALIGNMENT_TIME)
     }
 
-    /// Magnetic declination, Mdec, f32, degrees: Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.
+    /// Magnetic declination, Mdec, `f32`, degrees: Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.
     pub fn declination(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::DECLINATION)
     }
@@ -308,22 +308,22 @@ impl<T: AsRef<[u8]>> AhrsParametersLoad<T> {
         Declination::decode(self.declination())
     }
 
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub fn latitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LATITUDE)
     }
 
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub fn longitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LONGITUDE)
     }
 
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub fn altitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALTITUDE)
     }
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub fn date(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::DATE)
     }
@@ -333,22 +333,22 @@ impl<T: AsRef<[u8]>> AhrsParametersLoad<T> {
         Date::decode(self.date())
     }
 
-    /// Alignment angle A1, f32, degrees: Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
+    /// Alignment angle A1, `f32`, degrees: Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
     pub fn alignment_angle_a1(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A1)
     }
 
-    /// Alignment angle A2, f32, degrees: Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).
+    /// Alignment angle A2, `f32`, degrees: Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).
     pub fn alignment_angle_a2(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A2)
     }
 
-    /// Alignment angle A3, f32, degrees: Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).
+    /// Alignment angle A3, `f32`, degrees: Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).
     pub fn alignment_angle_a3(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A3)
     }
 
-    /// Reserved, reserved\[14\]: Should be all zeros.
+    /// Reserved, `reserved\[14\]`: Should be all zeros.
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
@@ -417,27 +417,27 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> AhrsParametersLoad<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AhrsParametersLoadRepr {
-    /// Update rate, u16, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).
+    /// Update rate, `u16`, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).
     pub update_rate: u16,
-    /// Initial alignment time, u16, seconds: Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
+    /// Initial alignment time, `u16`, seconds: Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
     pub alignment_time: u16,
-    /// Magnetic declination, Mdec, f32, degrees: Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.
+    /// Magnetic declination, Mdec, `f32`, degrees: Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.
     pub declination: f32,
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub latitude: f32,
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub longitude: f32,
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub altitude: f32,
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub date: f32,
-    /// Alignment angle A1, f32, degrees: Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
+    /// Alignment angle A1, `f32`, degrees: Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
     pub alignment_angle_a1: f32,
-    /// Alignment angle A2, f32, degrees: Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).
+    /// Alignment angle A2, `f32`, degrees: Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).
     pub alignment_angle_a2: f32,
-    /// Alignment angle A3, f32, degrees: Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).
+    /// Alignment angle A3, `f32`, degrees: Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).
     pub alignment_angle_a3: f32,
-    /// Reserved, reserved\[14\]: Should be all zeros.
+    /// Reserved, `reserved\[14\]`: Should be all zeros.
     pub reserved: [u8; 14],
 }
 

@@ -19,40 +19,40 @@ pub const SIZE: usize = 50;
 pub mod field {
     use crate::wire::Field;
 
-    /// Measurement rate, u16, hertz.
+    /// Measurement rate, `u16`, hertz.
     pub const UPDATE_RATE: Field = 0..2;
 
-    /// Initial alignment time, u16, seconds.
+    /// Initial alignment time, `u16`, seconds.
     pub const ALIGNMENT_TIME: Field = 2..4;
 
-    /// Magnetic declination, f32, degrees.
+    /// Magnetic declination, `f32`, degrees.
     pub const DECLINATION: Field = 4..8;
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: Field = 8..12;
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: Field = 12..16;
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: Field = 16..20;
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: Field = 20..24;
 
-    /// Alignment angle A1, f32, degrees.
+    /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: Field = 24..28;
 
-    /// Alignment angle A2, f32, degrees.
+    /// Alignment angle A2, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A2: Field = 28..32;
 
-    /// Alignment angle A3, f32, degrees.
+    /// Alignment angle A3, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A3: Field = 32..36;
 
-    /// Device ID, char[8].
+    /// Device ID, `char[8]`.
     pub const DEVICE_ID: Field = 36..44;
 
-    /// Reserved, reserved[6].
+    /// Reserved, `reserved[6]`.
     pub const RESERVED: Field = 44..50;
 }
 
@@ -61,7 +61,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Measurement rate, u16, hertz.
+    /// Measurement rate, `u16`, hertz.
     pub const UPDATE_RATE: FieldInfo = FieldInfo {
         name: "update_rate",
         icd_name: "Measurement rate",
@@ -77,7 +77,7 @@ pub mod info {
         doc: "Output data rate.",
     };
 
-    /// Initial alignment time, u16, seconds.
+    /// Initial alignment time, `u16`, seconds.
     pub const ALIGNMENT_TIME: FieldInfo = FieldInfo {
         name: "alignment_time",
         icd_name: "Initial alignment time",
@@ -93,7 +93,7 @@ pub mod info {
         doc: "Initial alignment duration.",
     };
 
-    /// Magnetic declination, f32, degrees.
+    /// Magnetic declination, `f32`, degrees.
     pub const DECLINATION: FieldInfo = FieldInfo {
         name: "declination",
         icd_name: "Magnetic declination",
@@ -109,7 +109,7 @@ pub mod info {
         doc: "Magnetic declination; a value above 360 means the AHRS computes it.",
     };
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: FieldInfo = FieldInfo {
         name: "latitude",
         icd_name: "Latitude",
@@ -125,7 +125,7 @@ pub mod info {
         doc: "Latitude.",
     };
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: FieldInfo = FieldInfo {
         name: "longitude",
         icd_name: "Longitude",
@@ -141,7 +141,7 @@ pub mod info {
         doc: "Longitude.",
     };
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: FieldInfo = FieldInfo {
         name: "altitude",
         icd_name: "Altitude",
@@ -157,7 +157,7 @@ pub mod info {
         doc: "Altitude.",
     };
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: FieldInfo = FieldInfo {
         name: "date",
         icd_name: "Date (Year, Month, Day)",
@@ -173,7 +173,7 @@ pub mod info {
         doc: "Date as Year + (Month - 1)/12 + Day/365.",
     };
 
-    /// Alignment angle A1, f32, degrees.
+    /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: FieldInfo = FieldInfo {
         name: "alignment_angle_a1",
         icd_name: "Alignment angle A1",
@@ -189,7 +189,7 @@ pub mod info {
         doc: "Mounting angle 1 (Appendix B).",
     };
 
-    /// Alignment angle A2, f32, degrees.
+    /// Alignment angle A2, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A2: FieldInfo = FieldInfo {
         name: "alignment_angle_a2",
         icd_name: "Alignment angle A2",
@@ -205,7 +205,7 @@ pub mod info {
         doc: "Mounting angle 2 (Appendix B).",
     };
 
-    /// Alignment angle A3, f32, degrees.
+    /// Alignment angle A3, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A3: FieldInfo = FieldInfo {
         name: "alignment_angle_a3",
         icd_name: "Alignment angle A3",
@@ -221,7 +221,7 @@ pub mod info {
         doc: "Mounting angle 3 (Appendix B).",
     };
 
-    /// Device ID, char[8].
+    /// Device ID, `char[8]`.
     pub const DEVICE_ID: FieldInfo = FieldInfo {
         name: "device_id",
         icd_name: "Device ID",
@@ -237,7 +237,7 @@ pub mod info {
         doc: "Device identifier (read only).",
     };
 
-    /// Reserved, reserved[6].
+    /// Reserved, `reserved[6]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -302,17 +302,17 @@ impl<T: AsRef<[u8]>> AhrsParametersRead<T> {
         self.buffer.as_ref()
     }
 
-    /// Measurement rate, u16, hertz: Output data rate.
+    /// Measurement rate, `u16`, hertz: Output data rate.
     pub fn update_rate(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::UPDATE_RATE)
     }
 
-    /// Initial alignment time, u16, seconds: Initial alignment duration.
+    /// Initial alignment time, `u16`, seconds: Initial alignment duration.
     pub fn alignment_time(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::ALIGNMENT_TIME)
     }
 
-    /// Magnetic declination, f32, degrees: Magnetic declination; a value above 360 means the AHRS computes it.
+    /// Magnetic declination, `f32`, degrees: Magnetic declination; a value above 360 means the AHRS computes it.
     pub fn declination(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::DECLINATION)
     }
@@ -322,22 +322,22 @@ impl<T: AsRef<[u8]>> AhrsParametersRead<T> {
         Declination::decode(self.declination())
     }
 
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub fn latitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LATITUDE)
     }
 
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub fn longitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LONGITUDE)
     }
 
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub fn altitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALTITUDE)
     }
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub fn date(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::DATE)
     }
@@ -347,28 +347,28 @@ impl<T: AsRef<[u8]>> AhrsParametersRead<T> {
         Date::decode(self.date())
     }
 
-    /// Alignment angle A1, f32, degrees: Mounting angle 1 (Appendix B).
+    /// Alignment angle A1, `f32`, degrees: Mounting angle 1 (Appendix B).
     pub fn alignment_angle_a1(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A1)
     }
 
-    /// Alignment angle A2, f32, degrees: Mounting angle 2 (Appendix B).
+    /// Alignment angle A2, `f32`, degrees: Mounting angle 2 (Appendix B).
     pub fn alignment_angle_a2(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A2)
     }
 
-    /// Alignment angle A3, f32, degrees: Mounting angle 3 (Appendix B).
+    /// Alignment angle A3, `f32`, degrees: Mounting angle 3 (Appendix B).
     pub fn alignment_angle_a3(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALIGNMENT_ANGLE_A3)
     }
 
-    /// Device ID, char\[8\]: Device identifier (read only).
+    /// Device ID, `char\[8\]`: Device identifier (read only).
     /// The bytes up to the trailing NULs (Latin-1).
     pub fn device_id(&self) -> &[u8] {
         wire::trim_nul(wire::bytes(self.buffer.as_ref(), field::DEVICE_ID))
     }
 
-    /// Reserved, reserved\[6\]:
+    /// Reserved, `reserved\[6\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
@@ -445,29 +445,29 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> AhrsParametersRead<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AhrsParametersReadRepr {
-    /// Measurement rate, u16, hertz: Output data rate.
+    /// Measurement rate, `u16`, hertz: Output data rate.
     pub update_rate: u16,
-    /// Initial alignment time, u16, seconds: Initial alignment duration.
+    /// Initial alignment time, `u16`, seconds: Initial alignment duration.
     pub alignment_time: u16,
-    /// Magnetic declination, f32, degrees: Magnetic declination; a value above 360 means the AHRS computes it.
+    /// Magnetic declination, `f32`, degrees: Magnetic declination; a value above 360 means the AHRS computes it.
     pub declination: f32,
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub latitude: f32,
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub longitude: f32,
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub altitude: f32,
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub date: f32,
-    /// Alignment angle A1, f32, degrees: Mounting angle 1 (Appendix B).
+    /// Alignment angle A1, `f32`, degrees: Mounting angle 1 (Appendix B).
     pub alignment_angle_a1: f32,
-    /// Alignment angle A2, f32, degrees: Mounting angle 2 (Appendix B).
+    /// Alignment angle A2, `f32`, degrees: Mounting angle 2 (Appendix B).
     pub alignment_angle_a2: f32,
-    /// Alignment angle A3, f32, degrees: Mounting angle 3 (Appendix B).
+    /// Alignment angle A3, `f32`, degrees: Mounting angle 3 (Appendix B).
     pub alignment_angle_a3: f32,
-    /// Device ID, char\[8\]: Device identifier (read only).
+    /// Device ID, `char\[8\]`: Device identifier (read only).
     pub device_id: [u8; 8],
-    /// Reserved, reserved\[6\]:
+    /// Reserved, `reserved\[6\]`:
     pub reserved: [u8; 6],
 }
 

@@ -18,10 +18,10 @@ pub const SIZE: usize = 4;
 pub mod field {
     use crate::wire::Field;
 
-    /// Utermo100, s16, raw x 1 / 100 = degrees Celsius.
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius.
     pub const UTERMO100: Field = 0..2;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 2..4;
 }
 
@@ -30,7 +30,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Utermo100, s16, raw x 1 / 100 = degrees Celsius.
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius.
     pub const UTERMO100: FieldInfo = FieldInfo {
         name: "utermo100",
         icd_name: "Utermo100",
@@ -49,7 +49,7 @@ pub mod info {
         doc: "AHRS temperature in 1/100 degC.",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -101,7 +101,7 @@ impl<T: AsRef<[u8]>> BitResult<T> {
         self.buffer.as_ref()
     }
 
-    /// Utermo100, s16, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
     pub fn utermo100(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UTERMO100)
     }
@@ -111,7 +111,7 @@ impl<T: AsRef<[u8]>> BitResult<T> {
         f64::from(self.utermo100()) / 100.0
     }
 
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -140,9 +140,9 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> BitResult<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BitResultRepr {
-    /// Utermo100, s16, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
     pub utermo100: i16,
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub usw: u16,
 }
 

@@ -19,22 +19,22 @@ pub const SIZE: usize = 22;
 pub mod field {
     use crate::wire::Field;
 
-    /// Reserved, f32, degrees.
+    /// Reserved, `f32`, degrees.
     pub const REFERENCE_AZIMUTH: Field = 0..4;
 
-    /// Time of data accumulation in one run, u16, seconds.
+    /// Time of data accumulation in one run, `u16`, seconds.
     pub const ACCUMULATION_TIME: Field = 4..6;
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: Field = 6..10;
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: Field = 10..14;
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: Field = 14..18;
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: Field = 18..22;
 }
 
@@ -43,7 +43,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Reserved, f32, degrees.
+    /// Reserved, `f32`, degrees.
     pub const REFERENCE_AZIMUTH: FieldInfo = FieldInfo {
         name: "reference_azimuth",
         icd_name: "Reserved",
@@ -59,7 +59,7 @@ pub mod info {
         doc: "Reference azimuth (6.4.8); no influence on 2D calibration.",
     };
 
-    /// Time of data accumulation in one run, u16, seconds.
+    /// Time of data accumulation in one run, `u16`, seconds.
     pub const ACCUMULATION_TIME: FieldInfo = FieldInfo {
         name: "accumulation_time",
         icd_name: "Time of data accumulation in one run",
@@ -75,7 +75,7 @@ pub mod info {
         doc: "Data accumulation time of one run.",
     };
 
-    /// Latitude, f32, degrees.
+    /// Latitude, `f32`, degrees.
     pub const LATITUDE: FieldInfo = FieldInfo {
         name: "latitude",
         icd_name: "Latitude",
@@ -91,7 +91,7 @@ pub mod info {
         doc: "Latitude.",
     };
 
-    /// Longitude, f32, degrees.
+    /// Longitude, `f32`, degrees.
     pub const LONGITUDE: FieldInfo = FieldInfo {
         name: "longitude",
         icd_name: "Longitude",
@@ -107,7 +107,7 @@ pub mod info {
         doc: "Longitude.",
     };
 
-    /// Altitude, f32, metres.
+    /// Altitude, `f32`, metres.
     pub const ALTITUDE: FieldInfo = FieldInfo {
         name: "altitude",
         icd_name: "Altitude",
@@ -123,7 +123,7 @@ pub mod info {
         doc: "Altitude.",
     };
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: FieldInfo = FieldInfo {
         name: "date",
         icd_name: "Date (Year, Month, Day)",
@@ -182,32 +182,32 @@ impl<T: AsRef<[u8]>> CalibrationParameters<T> {
         self.buffer.as_ref()
     }
 
-    /// Reserved, f32, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
+    /// Reserved, `f32`, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
     pub fn reference_azimuth(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::REFERENCE_AZIMUTH)
     }
 
-    /// Time of data accumulation in one run, u16, seconds: Data accumulation time of one run.
+    /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one run.
     pub fn accumulation_time(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::ACCUMULATION_TIME)
     }
 
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub fn latitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LATITUDE)
     }
 
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub fn longitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::LONGITUDE)
     }
 
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub fn altitude(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::ALTITUDE)
     }
 
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub fn date(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::DATE)
     }
@@ -256,17 +256,17 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationParameters<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CalibrationParametersRepr {
-    /// Reserved, f32, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
+    /// Reserved, `f32`, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
     pub reference_azimuth: f32,
-    /// Time of data accumulation in one run, u16, seconds: Data accumulation time of one run.
+    /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one run.
     pub accumulation_time: u16,
-    /// Latitude, f32, degrees: Latitude.
+    /// Latitude, `f32`, degrees: Latitude.
     pub latitude: f32,
-    /// Longitude, f32, degrees: Longitude.
+    /// Longitude, `f32`, degrees: Longitude.
     pub longitude: f32,
-    /// Altitude, f32, metres: Altitude.
+    /// Altitude, `f32`, metres: Altitude.
     pub altitude: f32,
-    /// Date (Year, Month, Day), f32, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
     pub date: f32,
 }
 

@@ -19,52 +19,52 @@ pub const SIZE: usize = 52;
 pub mod field {
     use crate::wire::Field;
 
-    /// Type of calibration, u8.
+    /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: Field = 0..1;
 
-    /// Number of used calibration runs, u8.
+    /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: Field = 1..2;
 
-    /// Percent of used data points, u8, percent.
+    /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: Field = 2..3;
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: Field = 3..4;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_11: Field = 4..8;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_12: Field = 8..12;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_13: Field = 12..16;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_21: Field = 16..20;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_22: Field = 20..24;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_23: Field = 24..28;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_31: Field = 28..32;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_32: Field = 32..36;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_33: Field = 36..40;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_X: Field = 40..44;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Y: Field = 44..48;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Z: Field = 48..52;
 }
 
@@ -73,7 +73,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Type of calibration, u8.
+    /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: FieldInfo = FieldInfo {
         name: "calibration_type",
         icd_name: "Type of calibration",
@@ -89,7 +89,7 @@ pub mod info {
         doc: "1 for 2D, 2 for 2D-2T, 3 for 3D calibration.",
     };
 
-    /// Number of used calibration runs, u8.
+    /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: FieldInfo = FieldInfo {
         name: "runs_used",
         icd_name: "Number of used calibration runs",
@@ -105,7 +105,7 @@ pub mod info {
         doc: "Number of calibration runs used.",
     };
 
-    /// Percent of used data points, u8, percent.
+    /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: FieldInfo = FieldInfo {
         name: "data_used",
         icd_name: "Percent of used data points",
@@ -121,7 +121,7 @@ pub mod info {
         doc: "Percent of data points used (2D and 3D calibrations only).",
     };
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: FieldInfo = FieldInfo {
         name: "success",
         icd_name: "Calibration success",
@@ -138,7 +138,7 @@ pub mod info {
             "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_11: FieldInfo = FieldInfo {
         name: "tm_c_11",
         icd_name: "Matrix for soft iron correction",
@@ -154,7 +154,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_12: FieldInfo = FieldInfo {
         name: "tm_c_12",
         icd_name: "Matrix for soft iron correction",
@@ -170,7 +170,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_13: FieldInfo = FieldInfo {
         name: "tm_c_13",
         icd_name: "Matrix for soft iron correction",
@@ -186,7 +186,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 3.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_21: FieldInfo = FieldInfo {
         name: "tm_c_21",
         icd_name: "Matrix for soft iron correction",
@@ -202,7 +202,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_22: FieldInfo = FieldInfo {
         name: "tm_c_22",
         icd_name: "Matrix for soft iron correction",
@@ -218,7 +218,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_23: FieldInfo = FieldInfo {
         name: "tm_c_23",
         icd_name: "Matrix for soft iron correction",
@@ -234,7 +234,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 3.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_31: FieldInfo = FieldInfo {
         name: "tm_c_31",
         icd_name: "Matrix for soft iron correction",
@@ -250,7 +250,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_32: FieldInfo = FieldInfo {
         name: "tm_c_32",
         icd_name: "Matrix for soft iron correction",
@@ -266,7 +266,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_33: FieldInfo = FieldInfo {
         name: "tm_c_33",
         icd_name: "Matrix for soft iron correction",
@@ -282,7 +282,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 3.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_X: FieldInfo = FieldInfo {
         name: "hm_0_x",
         icd_name: "Matrix for hard iron correction",
@@ -298,7 +298,7 @@ pub mod info {
         doc: "Hard-iron vector Hm_0 component 1.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Y: FieldInfo = FieldInfo {
         name: "hm_0_y",
         icd_name: "Matrix for hard iron correction",
@@ -314,7 +314,7 @@ pub mod info {
         doc: "Hard-iron vector Hm_0 component 2.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Z: FieldInfo = FieldInfo {
         name: "hm_0_z",
         icd_name: "Matrix for hard iron correction",
@@ -383,7 +383,7 @@ impl<T: AsRef<[u8]>> CalibrationResult<T> {
         self.buffer.as_ref()
     }
 
-    /// Type of calibration, u8: 1 for 2D, 2 for 2D-2T, 3 for 3D calibration.
+    /// Type of calibration, `u8`: 1 for 2D, 2 for 2D-2T, 3 for 3D calibration.
     pub fn calibration_type(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::CALIBRATION_TYPE)
     }
@@ -393,17 +393,17 @@ impl<T: AsRef<[u8]>> CalibrationResult<T> {
         CalibrationType::from_raw(self.calibration_type())
     }
 
-    /// Number of used calibration runs, u8: Number of calibration runs used.
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
     pub fn runs_used(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::RUNS_USED)
     }
 
-    /// Percent of used data points, u8, percent: Percent of data points used (2D and 3D calibrations only).
+    /// Percent of used data points, `u8`, percent: Percent of data points used (2D and 3D calibrations only).
     pub fn data_used(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::DATA_USED)
     }
 
-    /// Calibration success, u8: 0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.
     pub fn success(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::SUCCESS)
     }
@@ -413,62 +413,62 @@ impl<T: AsRef<[u8]>> CalibrationResult<T> {
         CalibrationSuccess::decode(self.success())
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
     pub fn tm_c_11(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_11)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
     pub fn tm_c_12(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_12)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
     pub fn tm_c_13(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_13)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
     pub fn tm_c_21(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_21)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
     pub fn tm_c_22(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_22)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
     pub fn tm_c_23(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_23)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
     pub fn tm_c_31(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_31)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
     pub fn tm_c_32(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_32)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
     pub fn tm_c_33(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_33)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
     pub fn hm_0_x(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_X)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
     pub fn hm_0_y(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_Y)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
     pub fn hm_0_z(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_Z)
     }
@@ -562,37 +562,37 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationResult<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CalibrationResultRepr {
-    /// Type of calibration, u8: 1 for 2D, 2 for 2D-2T, 3 for 3D calibration.
+    /// Type of calibration, `u8`: 1 for 2D, 2 for 2D-2T, 3 for 3D calibration.
     pub calibration_type: u8,
-    /// Number of used calibration runs, u8: Number of calibration runs used.
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
     pub runs_used: u8,
-    /// Percent of used data points, u8, percent: Percent of data points used (2D and 3D calibrations only).
+    /// Percent of used data points, `u8`, percent: Percent of data points used (2D and 3D calibrations only).
     pub data_used: u8,
-    /// Calibration success, u8: 0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.
     pub success: u8,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
     pub tm_c_11: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
     pub tm_c_12: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
     pub tm_c_13: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
     pub tm_c_21: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
     pub tm_c_22: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
     pub tm_c_23: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
     pub tm_c_31: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
     pub tm_c_32: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
     pub tm_c_33: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
     pub hm_0_x: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
     pub hm_0_y: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
     pub hm_0_z: f32,
 }
 

@@ -18,7 +18,7 @@ pub const SIZE: usize = 6;
 pub mod field {
     use crate::wire::Field;
 
-    /// Reserved, reserved[6].
+    /// Reserved, `reserved[6]`.
     pub const RESERVED: Field = 0..6;
 }
 
@@ -27,7 +27,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Reserved, reserved[6].
+    /// Reserved, `reserved[6]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -79,7 +79,7 @@ impl<T: AsRef<[u8]>> CalibrationRunParameters<T> {
         self.buffer.as_ref()
     }
 
-    /// Reserved, reserved\[6\]:
+    /// Reserved, `reserved\[6\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
@@ -98,7 +98,7 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationRunParameters<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CalibrationRunParametersRepr {
-    /// Reserved, reserved\[6\]:
+    /// Reserved, `reserved\[6\]`:
     pub reserved: [u8; 6],
 }
 

@@ -20,31 +20,31 @@ pub const SIZE: usize = 30;
 pub mod field {
     use crate::wire::Field;
 
-    /// Type of calibration, u8.
+    /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: Field = 0..1;
 
-    /// Calibration run, u8.
+    /// Calibration run, `u8`.
     pub const RUN: Field = 1..2;
 
-    /// Percent of used data points, u8, percent.
+    /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: Field = 2..3;
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: Field = 3..4;
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED_1: Field = 4..8;
 
-    /// Average pitch, deg, f32, degrees.
+    /// Average pitch, deg, `f32`, degrees.
     pub const AVERAGE_PITCH: Field = 8..12;
 
-    /// Average roll, deg, f32, degrees.
+    /// Average roll, deg, `f32`, degrees.
     pub const AVERAGE_ROLL: Field = 12..16;
 
-    /// Reserved, reserved[12].
+    /// Reserved, `reserved[12]`.
     pub const RESERVED_2: Field = 16..28;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 28..30;
 }
 
@@ -53,7 +53,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Type of calibration, u8.
+    /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: FieldInfo = FieldInfo {
         name: "calibration_type",
         icd_name: "Type of calibration",
@@ -69,7 +69,7 @@ pub mod info {
         doc: "2 for 2D-2T calibration.",
     };
 
-    /// Calibration run, u8.
+    /// Calibration run, `u8`.
     pub const RUN: FieldInfo = FieldInfo {
         name: "run",
         icd_name: "Calibration run",
@@ -85,7 +85,7 @@ pub mod info {
         doc: "Number of this run (1, 2, ...).",
     };
 
-    /// Percent of used data points, u8, percent.
+    /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: FieldInfo = FieldInfo {
         name: "data_used",
         icd_name: "Percent of used data points",
@@ -101,7 +101,7 @@ pub mod info {
         doc: "Percent of data points used.",
     };
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: FieldInfo = FieldInfo {
         name: "success",
         icd_name: "Calibration success",
@@ -118,7 +118,7 @@ pub mod info {
             "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
     };
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED_1: FieldInfo = FieldInfo {
         name: "reserved_1",
         icd_name: "Reserved",
@@ -134,7 +134,7 @@ pub mod info {
         doc: "",
     };
 
-    /// Average pitch, deg, f32, degrees.
+    /// Average pitch, deg, `f32`, degrees.
     pub const AVERAGE_PITCH: FieldInfo = FieldInfo {
         name: "average_pitch",
         icd_name: "Average pitch, deg",
@@ -150,7 +150,7 @@ pub mod info {
         doc: "Average pitch during the run.",
     };
 
-    /// Average roll, deg, f32, degrees.
+    /// Average roll, deg, `f32`, degrees.
     pub const AVERAGE_ROLL: FieldInfo = FieldInfo {
         name: "average_roll",
         icd_name: "Average roll, deg",
@@ -166,7 +166,7 @@ pub mod info {
         doc: "Average roll during the run.",
     };
 
-    /// Reserved, reserved[12].
+    /// Reserved, `reserved[12]`.
     pub const RESERVED_2: FieldInfo = FieldInfo {
         name: "reserved_2",
         icd_name: "Reserved",
@@ -182,7 +182,7 @@ pub mod info {
         doc: "",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -244,7 +244,7 @@ impl<T: AsRef<[u8]>> CalibrationRunResult<T> {
         self.buffer.as_ref()
     }
 
-    /// Type of calibration, u8: 2 for 2D-2T calibration.
+    /// Type of calibration, `u8`: 2 for 2D-2T calibration.
     pub fn calibration_type(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::CALIBRATION_TYPE)
     }
@@ -254,17 +254,17 @@ impl<T: AsRef<[u8]>> CalibrationRunResult<T> {
         CalibrationType::from_raw(self.calibration_type())
     }
 
-    /// Calibration run, u8: Number of this run (1, 2, ...).
+    /// Calibration run, `u8`: Number of this run (1, 2, ...).
     pub fn run(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::RUN)
     }
 
-    /// Percent of used data points, u8, percent: Percent of data points used.
+    /// Percent of used data points, `u8`, percent: Percent of data points used.
     pub fn data_used(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::DATA_USED)
     }
 
-    /// Calibration success, u8: 0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.
     pub fn success(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::SUCCESS)
     }
@@ -274,27 +274,27 @@ impl<T: AsRef<[u8]>> CalibrationRunResult<T> {
         CalibrationSuccess::decode(self.success())
     }
 
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub fn reserved_1(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED_1)
     }
 
-    /// Average pitch, deg, f32, degrees: Average pitch during the run.
+    /// Average pitch, deg, `f32`, degrees: Average pitch during the run.
     pub fn average_pitch(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_PITCH)
     }
 
-    /// Average roll, deg, f32, degrees: Average roll during the run.
+    /// Average roll, deg, `f32`, degrees: Average roll during the run.
     pub fn average_roll(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_ROLL)
     }
 
-    /// Reserved, reserved\[12\]:
+    /// Reserved, `reserved\[12\]`:
     pub fn reserved_2(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED_2)
     }
 
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -358,23 +358,23 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationRunResult<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CalibrationRunResultRepr {
-    /// Type of calibration, u8: 2 for 2D-2T calibration.
+    /// Type of calibration, `u8`: 2 for 2D-2T calibration.
     pub calibration_type: u8,
-    /// Calibration run, u8: Number of this run (1, 2, ...).
+    /// Calibration run, `u8`: Number of this run (1, 2, ...).
     pub run: u8,
-    /// Percent of used data points, u8, percent: Percent of data points used.
+    /// Percent of used data points, `u8`, percent: Percent of data points used.
     pub data_used: u8,
-    /// Calibration success, u8: 0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.
     pub success: u8,
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub reserved_1: [u8; 4],
-    /// Average pitch, deg, f32, degrees: Average pitch during the run.
+    /// Average pitch, deg, `f32`, degrees: Average pitch during the run.
     pub average_pitch: f32,
-    /// Average roll, deg, f32, degrees: Average roll during the run.
+    /// Average roll, deg, `f32`, degrees: Average roll during the run.
     pub average_roll: f32,
-    /// Reserved, reserved\[12\]:
+    /// Reserved, `reserved\[12\]`:
     pub reserved_2: [u8; 12],
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub usw: u16,
 }
 

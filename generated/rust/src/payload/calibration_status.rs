@@ -19,52 +19,52 @@ pub const SIZE: usize = 52;
 pub mod field {
     use crate::wire::Field;
 
-    /// Type of calibration performed, u8.
+    /// Type of calibration performed, `u8`.
     pub const CALIBRATION_TYPE: Field = 0..1;
 
-    /// Number of used calibration runs, u8.
+    /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: Field = 1..2;
 
-    /// Reserved, reserved[1].
+    /// Reserved, `reserved[1]`.
     pub const RESERVED: Field = 2..3;
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: Field = 3..4;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_11: Field = 4..8;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_12: Field = 8..12;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_13: Field = 12..16;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_21: Field = 16..20;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_22: Field = 20..24;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_23: Field = 24..28;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_31: Field = 28..32;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_32: Field = 32..36;
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_33: Field = 36..40;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_X: Field = 40..44;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Y: Field = 44..48;
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Z: Field = 48..52;
 }
 
@@ -73,7 +73,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Type of calibration performed, u8.
+    /// Type of calibration performed, `u8`.
     pub const CALIBRATION_TYPE: FieldInfo = FieldInfo {
         name: "calibration_type",
         icd_name: "Type of calibration performed",
@@ -90,7 +90,7 @@ pub mod info {
             "0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.",
     };
 
-    /// Number of used calibration runs, u8.
+    /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: FieldInfo = FieldInfo {
         name: "runs_used",
         icd_name: "Number of used calibration runs",
@@ -106,7 +106,7 @@ pub mod info {
         doc: "Number of calibration runs used.",
     };
 
-    /// Reserved, reserved[1].
+    /// Reserved, `reserved[1]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -122,7 +122,7 @@ pub mod info {
         doc: "",
     };
 
-    /// Calibration success, u8.
+    /// Calibration success, `u8`.
     pub const SUCCESS: FieldInfo = FieldInfo {
         name: "success",
         icd_name: "Calibration success",
@@ -139,7 +139,7 @@ pub mod info {
             "0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_11: FieldInfo = FieldInfo {
         name: "tm_c_11",
         icd_name: "Matrix for soft iron correction",
@@ -155,7 +155,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_12: FieldInfo = FieldInfo {
         name: "tm_c_12",
         icd_name: "Matrix for soft iron correction",
@@ -171,7 +171,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_13: FieldInfo = FieldInfo {
         name: "tm_c_13",
         icd_name: "Matrix for soft iron correction",
@@ -187,7 +187,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 1 column 3.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_21: FieldInfo = FieldInfo {
         name: "tm_c_21",
         icd_name: "Matrix for soft iron correction",
@@ -203,7 +203,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_22: FieldInfo = FieldInfo {
         name: "tm_c_22",
         icd_name: "Matrix for soft iron correction",
@@ -219,7 +219,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_23: FieldInfo = FieldInfo {
         name: "tm_c_23",
         icd_name: "Matrix for soft iron correction",
@@ -235,7 +235,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 2 column 3.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_31: FieldInfo = FieldInfo {
         name: "tm_c_31",
         icd_name: "Matrix for soft iron correction",
@@ -251,7 +251,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 1.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_32: FieldInfo = FieldInfo {
         name: "tm_c_32",
         icd_name: "Matrix for soft iron correction",
@@ -267,7 +267,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 2.",
     };
 
-    /// Matrix for soft iron correction, f32, dimensionless.
+    /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_33: FieldInfo = FieldInfo {
         name: "tm_c_33",
         icd_name: "Matrix for soft iron correction",
@@ -283,7 +283,7 @@ pub mod info {
         doc: "Soft-iron matrix Tm_c row 3 column 3.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_X: FieldInfo = FieldInfo {
         name: "hm_0_x",
         icd_name: "Matrix for hard iron correction",
@@ -299,7 +299,7 @@ pub mod info {
         doc: "Hard-iron vector Hm_0 component 1.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Y: FieldInfo = FieldInfo {
         name: "hm_0_y",
         icd_name: "Matrix for hard iron correction",
@@ -315,7 +315,7 @@ pub mod info {
         doc: "Hard-iron vector Hm_0 component 2.",
     };
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD).
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Z: FieldInfo = FieldInfo {
         name: "hm_0_z",
         icd_name: "Matrix for hard iron correction",
@@ -384,7 +384,7 @@ impl<T: AsRef<[u8]>> CalibrationStatus<T> {
         self.buffer.as_ref()
     }
 
-    /// Type of calibration performed, u8: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.
+    /// Type of calibration performed, `u8`: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.
     pub fn calibration_type(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::CALIBRATION_TYPE)
     }
@@ -394,17 +394,17 @@ impl<T: AsRef<[u8]>> CalibrationStatus<T> {
         CalibrationStatusType::from_raw(self.calibration_type())
     }
 
-    /// Number of used calibration runs, u8: Number of calibration runs used.
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
     pub fn runs_used(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::RUNS_USED)
     }
 
-    /// Reserved, reserved\[1\]:
+    /// Reserved, `reserved\[1\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
 
-    /// Calibration success, u8: 0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.
     pub fn success(&self) -> u8 {
         wire::get_u8(self.buffer.as_ref(), field::SUCCESS)
     }
@@ -414,62 +414,62 @@ impl<T: AsRef<[u8]>> CalibrationStatus<T> {
         CalibrationSuccess::decode(self.success())
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
     pub fn tm_c_11(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_11)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
     pub fn tm_c_12(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_12)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
     pub fn tm_c_13(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_13)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
     pub fn tm_c_21(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_21)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
     pub fn tm_c_22(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_22)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
     pub fn tm_c_23(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_23)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
     pub fn tm_c_31(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_31)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
     pub fn tm_c_32(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_32)
     }
 
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
     pub fn tm_c_33(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::TM_C_33)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
     pub fn hm_0_x(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_X)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
     pub fn hm_0_y(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_Y)
     }
 
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
     pub fn hm_0_z(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::HM_0_Z)
     }
@@ -563,37 +563,37 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationStatus<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CalibrationStatusRepr {
-    /// Type of calibration performed, u8: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.
+    /// Type of calibration performed, `u8`: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software.
     pub calibration_type: u8,
-    /// Number of used calibration runs, u8: Number of calibration runs used.
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
     pub runs_used: u8,
-    /// Reserved, reserved\[1\]:
+    /// Reserved, `reserved\[1\]`:
     pub reserved: [u8; 1],
-    /// Calibration success, u8: 0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate.
     pub success: u8,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
     pub tm_c_11: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
     pub tm_c_12: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
     pub tm_c_13: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
     pub tm_c_21: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
     pub tm_c_22: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
     pub tm_c_23: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
     pub tm_c_31: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
     pub tm_c_32: f32,
-    /// Matrix for soft iron correction, f32, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
     pub tm_c_33: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
     pub hm_0_x: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
     pub hm_0_y: f32,
-    /// Matrix for hard iron correction, f32, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
     pub hm_0_z: f32,
 }
 

@@ -17,7 +17,7 @@ pub const SIZE: usize = 50;
 pub mod field {
     use crate::wire::Field;
 
-    /// Firmware version, char[50].
+    /// Firmware version, `char[50]`.
     pub const VERSION: Field = 0..50;
 }
 
@@ -26,7 +26,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Firmware version, char[50].
+    /// Firmware version, `char[50]`.
     pub const VERSION: FieldInfo = FieldInfo {
         name: "version",
         icd_name: "Firmware version",
@@ -78,7 +78,7 @@ impl<T: AsRef<[u8]>> FirmwareVersion<T> {
         self.buffer.as_ref()
     }
 
-    /// Firmware version, char\[50\]: Firmware version text, NUL-padded.
+    /// Firmware version, `char\[50\]`: Firmware version text, NUL-padded.
     /// The bytes up to the trailing NULs (Latin-1).
     pub fn version(&self) -> &[u8] {
         wire::trim_nul(wire::bytes(self.buffer.as_ref(), field::VERSION))
@@ -101,7 +101,7 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> FirmwareVersion<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FirmwareVersionRepr {
-    /// Firmware version, char\[50\]: Firmware version text, NUL-padded.
+    /// Firmware version, `char\[50\]`: Firmware version text, NUL-padded.
     pub version: [u8; 50],
 }
 

@@ -18,52 +18,52 @@ pub const SIZE: usize = 34;
 pub mod field {
     use crate::wire::Field;
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_X: Field = 6..8;
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Y: Field = 8..10;
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Z: Field = 10..12;
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_X: Field = 12..14;
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Y: Field = 14..16;
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Z: Field = 16..18;
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_X: Field = 18..20;
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Y: Field = 20..22;
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Z: Field = 22..24;
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED: Field = 24..28;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 28..30;
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
 
-    /// Utermo, s16, ADC codes (no physical scale given by the ICD).
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UTERMO: Field = 32..34;
 }
 
@@ -72,7 +72,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: FieldInfo = FieldInfo {
         name: "heading",
         icd_name: "Heading",
@@ -91,7 +91,7 @@ pub mod info {
         doc: "Heading angle.",
     };
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: FieldInfo = FieldInfo {
         name: "pitch",
         icd_name: "Pitch",
@@ -110,7 +110,7 @@ pub mod info {
         doc: "Pitch angle.",
     };
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: FieldInfo = FieldInfo {
         name: "roll",
         icd_name: "Roll",
@@ -129,7 +129,7 @@ pub mod info {
         doc: "Roll angle.",
     };
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_X: FieldInfo = FieldInfo {
         name: "ugyro_x",
         icd_name: "Ugyro",
@@ -145,7 +145,7 @@ pub mod info {
         doc: "Raw gyro X sensor data.",
     };
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Y: FieldInfo = FieldInfo {
         name: "ugyro_y",
         icd_name: "Ugyro",
@@ -161,7 +161,7 @@ pub mod info {
         doc: "Raw gyro Y sensor data.",
     };
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD).
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Z: FieldInfo = FieldInfo {
         name: "ugyro_z",
         icd_name: "Ugyro",
@@ -177,7 +177,7 @@ pub mod info {
         doc: "Raw gyro Z sensor data.",
     };
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_X: FieldInfo = FieldInfo {
         name: "uacc_x",
         icd_name: "Uacc",
@@ -193,7 +193,7 @@ pub mod info {
         doc: "Raw accelerometer X sensor data.",
     };
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Y: FieldInfo = FieldInfo {
         name: "uacc_y",
         icd_name: "Uacc",
@@ -209,7 +209,7 @@ pub mod info {
         doc: "Raw accelerometer Y sensor data.",
     };
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD).
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Z: FieldInfo = FieldInfo {
         name: "uacc_z",
         icd_name: "Uacc",
@@ -225,7 +225,7 @@ pub mod info {
         doc: "Raw accelerometer Z sensor data.",
     };
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_X: FieldInfo = FieldInfo {
         name: "umag_x",
         icd_name: "Umag",
@@ -241,7 +241,7 @@ pub mod info {
         doc: "Raw magnetometer X sensor data.",
     };
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Y: FieldInfo = FieldInfo {
         name: "umag_y",
         icd_name: "Umag",
@@ -257,7 +257,7 @@ pub mod info {
         doc: "Raw magnetometer Y sensor data.",
     };
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD).
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Z: FieldInfo = FieldInfo {
         name: "umag_z",
         icd_name: "Umag",
@@ -273,7 +273,7 @@ pub mod info {
         doc: "Raw magnetometer Z sensor data.",
     };
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -289,7 +289,7 @@ pub mod info {
         doc: "",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -305,7 +305,7 @@ pub mod info {
         doc: "Unit Status Word (section 6.5).",
     };
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         name: "vdd",
         icd_name: "Vdd",
@@ -325,7 +325,7 @@ pub mod info {
             "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.",
     };
 
-    /// Utermo, s16, ADC codes (no physical scale given by the ICD).
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UTERMO: FieldInfo = FieldInfo {
         name: "utermo",
         icd_name: "Utermo",
@@ -395,7 +395,7 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         self.buffer.as_ref()
     }
 
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub fn heading(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::HEADING)
     }
@@ -405,7 +405,7 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         f64::from(self.heading()) / 100.0
     }
 
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub fn pitch(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::PITCH)
     }
@@ -415,7 +415,7 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         f64::from(self.pitch()) / 100.0
     }
 
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub fn roll(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ROLL)
     }
@@ -425,57 +425,57 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         f64::from(self.roll()) / 100.0
     }
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
     pub fn ugyro_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UGYRO_X)
     }
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
     pub fn ugyro_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UGYRO_Y)
     }
 
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor data.
     pub fn ugyro_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UGYRO_Z)
     }
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer X sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X sensor data.
     pub fn uacc_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UACC_X)
     }
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer Y sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y sensor data.
     pub fn uacc_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UACC_Y)
     }
 
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer Z sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z sensor data.
     pub fn uacc_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UACC_Z)
     }
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer X sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X sensor data.
     pub fn umag_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UMAG_X)
     }
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer Y sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y sensor data.
     pub fn umag_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UMAG_Y)
     }
 
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer Z sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z sensor data.
     pub fn umag_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UMAG_Z)
     }
 
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
 
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -485,7 +485,7 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         StatusWord(self.usw())
     }
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
     pub fn vdd(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::VDD)
     }
@@ -495,7 +495,7 @@ impl<T: AsRef<[u8]>> FullOutput<T> {
         f64::from(self.vdd()) / 1000.0
     }
 
-    /// Utermo, s16, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
     pub fn utermo(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UTERMO)
     }
@@ -589,37 +589,37 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> FullOutput<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FullOutputRepr {
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub heading: u16,
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub pitch: i16,
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub roll: i16,
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
     pub ugyro_x: i16,
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
     pub ugyro_y: i16,
-    /// Ugyro, s16, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor data.
     pub ugyro_z: i16,
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer X sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X sensor data.
     pub uacc_x: i16,
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer Y sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y sensor data.
     pub uacc_y: i16,
-    /// Uacc, s16, ADC codes (no physical scale given by the ICD): Raw accelerometer Z sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z sensor data.
     pub uacc_z: i16,
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer X sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X sensor data.
     pub umag_x: i16,
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer Y sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y sensor data.
     pub umag_y: i16,
-    /// Umag, s16, ADC codes (no physical scale given by the ICD): Raw magnetometer Z sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z sensor data.
     pub umag_z: i16,
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub reserved: [u8; 4],
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub usw: u16,
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
     pub vdd: u16,
-    /// Utermo, s16, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
     pub utermo: i16,
 }
 

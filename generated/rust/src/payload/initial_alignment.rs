@@ -19,43 +19,43 @@ pub const SIZE: usize = 50;
 pub mod field {
     use crate::wire::Field;
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_X: Field = 0..4;
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Y: Field = 4..8;
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Z: Field = 8..12;
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_X: Field = 12..16;
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Y: Field = 16..20;
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Z: Field = 20..24;
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_X: Field = 24..28;
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Y: Field = 28..32;
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Z: Field = 32..36;
 
-    /// Initial Heading, f32, degrees.
+    /// Initial Heading, `f32`, degrees.
     pub const INITIAL_HEADING: Field = 36..40;
 
-    /// Initial Roll, f32, degrees.
+    /// Initial Roll, `f32`, degrees.
     pub const INITIAL_ROLL: Field = 40..44;
 
-    /// Initial Pitch, f32, degrees.
+    /// Initial Pitch, `f32`, degrees.
     pub const INITIAL_PITCH: Field = 44..48;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 48..50;
 }
 
@@ -64,7 +64,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_X: FieldInfo = FieldInfo {
         name: "gyro_bias_x",
         icd_name: "Gyros bias",
@@ -80,7 +80,7 @@ pub mod info {
         doc: "Gyro X bias.",
     };
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Y: FieldInfo = FieldInfo {
         name: "gyro_bias_y",
         icd_name: "Gyros bias",
@@ -96,7 +96,7 @@ pub mod info {
         doc: "Gyro Y bias.",
     };
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD).
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Z: FieldInfo = FieldInfo {
         name: "gyro_bias_z",
         icd_name: "Gyros bias",
@@ -112,7 +112,7 @@ pub mod info {
         doc: "Gyro Z bias.",
     };
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_X: FieldInfo = FieldInfo {
         name: "average_acc_x",
         icd_name: "Average acceleration",
@@ -128,7 +128,7 @@ pub mod info {
         doc: "Average acceleration along X.",
     };
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Y: FieldInfo = FieldInfo {
         name: "average_acc_y",
         icd_name: "Average acceleration",
@@ -144,7 +144,7 @@ pub mod info {
         doc: "Average acceleration along Y.",
     };
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD).
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Z: FieldInfo = FieldInfo {
         name: "average_acc_z",
         icd_name: "Average acceleration",
@@ -160,7 +160,7 @@ pub mod info {
         doc: "Average acceleration along Z.",
     };
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_X: FieldInfo = FieldInfo {
         name: "average_mag_x",
         icd_name: "Average magn. field",
@@ -176,7 +176,7 @@ pub mod info {
         doc: "Average magnetic field along X.",
     };
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Y: FieldInfo = FieldInfo {
         name: "average_mag_y",
         icd_name: "Average magn. field",
@@ -192,7 +192,7 @@ pub mod info {
         doc: "Average magnetic field along Y.",
     };
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD).
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Z: FieldInfo = FieldInfo {
         name: "average_mag_z",
         icd_name: "Average magn. field",
@@ -208,7 +208,7 @@ pub mod info {
         doc: "Average magnetic field along Z.",
     };
 
-    /// Initial Heading, f32, degrees.
+    /// Initial Heading, `f32`, degrees.
     pub const INITIAL_HEADING: FieldInfo = FieldInfo {
         name: "initial_heading",
         icd_name: "Initial Heading",
@@ -224,7 +224,7 @@ pub mod info {
         doc: "Heading at the end of alignment.",
     };
 
-    /// Initial Roll, f32, degrees.
+    /// Initial Roll, `f32`, degrees.
     pub const INITIAL_ROLL: FieldInfo = FieldInfo {
         name: "initial_roll",
         icd_name: "Initial Roll",
@@ -240,7 +240,7 @@ pub mod info {
         doc: "Roll at the end of alignment.",
     };
 
-    /// Initial Pitch, f32, degrees.
+    /// Initial Pitch, `f32`, degrees.
     pub const INITIAL_PITCH: FieldInfo = FieldInfo {
         name: "initial_pitch",
         icd_name: "Initial Pitch",
@@ -256,7 +256,7 @@ pub mod info {
         doc: "Pitch at the end of alignment.",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -322,67 +322,67 @@ impl<T: AsRef<[u8]>> InitialAlignment<T> {
         self.buffer.as_ref()
     }
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro X bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro X bias.
     pub fn gyro_bias_x(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::GYRO_BIAS_X)
     }
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro Y bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro Y bias.
     pub fn gyro_bias_y(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::GYRO_BIAS_Y)
     }
 
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro Z bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro Z bias.
     pub fn gyro_bias_z(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::GYRO_BIAS_Z)
     }
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along X.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along X.
     pub fn average_acc_x(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_ACC_X)
     }
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along Y.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Y.
     pub fn average_acc_y(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_ACC_Y)
     }
 
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along Z.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Z.
     pub fn average_acc_z(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_ACC_Z)
     }
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along X.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along X.
     pub fn average_mag_x(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_MAG_X)
     }
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along Y.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Y.
     pub fn average_mag_y(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_MAG_Y)
     }
 
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along Z.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Z.
     pub fn average_mag_z(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::AVERAGE_MAG_Z)
     }
 
-    /// Initial Heading, f32, degrees: Heading at the end of alignment.
+    /// Initial Heading, `f32`, degrees: Heading at the end of alignment.
     pub fn initial_heading(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::INITIAL_HEADING)
     }
 
-    /// Initial Roll, f32, degrees: Roll at the end of alignment.
+    /// Initial Roll, `f32`, degrees: Roll at the end of alignment.
     pub fn initial_roll(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::INITIAL_ROLL)
     }
 
-    /// Initial Pitch, f32, degrees: Pitch at the end of alignment.
+    /// Initial Pitch, `f32`, degrees: Pitch at the end of alignment.
     pub fn initial_pitch(&self) -> f32 {
         wire::get_f32(self.buffer.as_ref(), field::INITIAL_PITCH)
     }
 
-    /// USW, u16: Unit Status Word: 0 after a successful alignment, non-zero otherwise.
+    /// USW, `u16`: Unit Status Word: 0 after a successful alignment, non-zero otherwise.
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -466,31 +466,31 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> InitialAlignment<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct InitialAlignmentRepr {
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro X bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro X bias.
     pub gyro_bias_x: f32,
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro Y bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro Y bias.
     pub gyro_bias_y: f32,
-    /// Gyros bias, f32, ADC codes (no physical scale given by the ICD): Gyro Z bias.
+    /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro Z bias.
     pub gyro_bias_z: f32,
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along X.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along X.
     pub average_acc_x: f32,
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along Y.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Y.
     pub average_acc_y: f32,
-    /// Average acceleration, f32, ADC codes (no physical scale given by the ICD): Average acceleration along Z.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Z.
     pub average_acc_z: f32,
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along X.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along X.
     pub average_mag_x: f32,
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along Y.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Y.
     pub average_mag_y: f32,
-    /// Average magn. field, f32, ADC codes (no physical scale given by the ICD): Average magnetic field along Z.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Z.
     pub average_mag_z: f32,
-    /// Initial Heading, f32, degrees: Heading at the end of alignment.
+    /// Initial Heading, `f32`, degrees: Heading at the end of alignment.
     pub initial_heading: f32,
-    /// Initial Roll, f32, degrees: Roll at the end of alignment.
+    /// Initial Roll, `f32`, degrees: Roll at the end of alignment.
     pub initial_roll: f32,
-    /// Initial Pitch, f32, degrees: Pitch at the end of alignment.
+    /// Initial Pitch, `f32`, degrees: Pitch at the end of alignment.
     pub initial_pitch: f32,
-    /// USW, u16: Unit Status Word: 0 after a successful alignment, non-zero otherwise.
+    /// USW, `u16`: Unit Status Word: 0 after a successful alignment, non-zero otherwise.
     pub usw: u16,
 }
 

@@ -19,52 +19,52 @@ pub const SIZE: usize = 34;
 pub mod field {
     use crate::wire::Field;
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
 
-    /// GyroX, s16, raw x 1 / KG = degrees per second.
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_X: Field = 6..8;
 
-    /// GyroY, s16, raw x 1 / KG = degrees per second.
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Y: Field = 8..10;
 
-    /// GyroZ, s16, raw x 1 / KG = degrees per second.
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Z: Field = 10..12;
 
-    /// AccX, s16, raw x 1 / KA = standard gravity.
+    /// AccX, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_X: Field = 12..14;
 
-    /// AccY, s16, raw x 1 / KA = standard gravity.
+    /// AccY, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Y: Field = 14..16;
 
-    /// AccZ, s16, raw x 1 / KA = standard gravity.
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Z: Field = 16..18;
 
-    /// MagX, s16, raw x 10 / 1 = nanotesla.
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_X: Field = 18..20;
 
-    /// MagY, s16, raw x 10 / 1 = nanotesla.
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Y: Field = 20..22;
 
-    /// MagZ, s16, raw x 10 / 1 = nanotesla.
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Z: Field = 22..24;
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED: Field = 24..28;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 28..30;
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: Field = 32..34;
 }
 
@@ -73,7 +73,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: FieldInfo = FieldInfo {
         name: "heading",
         icd_name: "Heading",
@@ -92,7 +92,7 @@ pub mod info {
         doc: "Heading angle.",
     };
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: FieldInfo = FieldInfo {
         name: "pitch",
         icd_name: "Pitch",
@@ -111,7 +111,7 @@ pub mod info {
         doc: "Pitch angle.",
     };
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: FieldInfo = FieldInfo {
         name: "roll",
         icd_name: "Roll",
@@ -130,7 +130,7 @@ pub mod info {
         doc: "Roll angle.",
     };
 
-    /// GyroX, s16, raw x 1 / KG = degrees per second.
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_X: FieldInfo = FieldInfo {
         name: "gyro_x",
         icd_name: "GyroX",
@@ -149,7 +149,7 @@ pub mod info {
         doc: "Angular rate about X (lateral axis).",
     };
 
-    /// GyroY, s16, raw x 1 / KG = degrees per second.
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Y: FieldInfo = FieldInfo {
         name: "gyro_y",
         icd_name: "GyroY",
@@ -168,7 +168,7 @@ pub mod info {
         doc: "Angular rate about Y (longitudinal axis).",
     };
 
-    /// GyroZ, s16, raw x 1 / KG = degrees per second.
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Z: FieldInfo = FieldInfo {
         name: "gyro_z",
         icd_name: "GyroZ",
@@ -187,7 +187,7 @@ pub mod info {
         doc: "Angular rate about Z (vertical axis).",
     };
 
-    /// AccX, s16, raw x 1 / KA = standard gravity.
+    /// AccX, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_X: FieldInfo = FieldInfo {
         name: "acc_x",
         icd_name: "AccX",
@@ -206,7 +206,7 @@ pub mod info {
         doc: "Linear acceleration along X.",
     };
 
-    /// AccY, s16, raw x 1 / KA = standard gravity.
+    /// AccY, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Y: FieldInfo = FieldInfo {
         name: "acc_y",
         icd_name: "AccY",
@@ -225,7 +225,7 @@ pub mod info {
         doc: "Linear acceleration along Y.",
     };
 
-    /// AccZ, s16, raw x 1 / KA = standard gravity.
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Z: FieldInfo = FieldInfo {
         name: "acc_z",
         icd_name: "AccZ",
@@ -244,7 +244,7 @@ pub mod info {
         doc: "Linear acceleration along Z.",
     };
 
-    /// MagX, s16, raw x 10 / 1 = nanotesla.
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_X: FieldInfo = FieldInfo {
         name: "mag_x",
         icd_name: "MagX",
@@ -263,7 +263,7 @@ pub mod info {
         doc: "Magnetic field along X.",
     };
 
-    /// MagY, s16, raw x 10 / 1 = nanotesla.
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Y: FieldInfo = FieldInfo {
         name: "mag_y",
         icd_name: "MagY",
@@ -282,7 +282,7 @@ pub mod info {
         doc: "Magnetic field along Y.",
     };
 
-    /// MagZ, s16, raw x 10 / 1 = nanotesla.
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Z: FieldInfo = FieldInfo {
         name: "mag_z",
         icd_name: "MagZ",
@@ -301,7 +301,7 @@ pub mod info {
         doc: "Magnetic field along Z.",
     };
 
-    /// Reserved, reserved[4].
+    /// Reserved, `reserved[4]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -317,7 +317,7 @@ pub mod info {
         doc: "",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -333,7 +333,7 @@ pub mod info {
         doc: "Unit Status Word (section 6.5).",
     };
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         name: "vdd",
         icd_name: "Vdd",
@@ -352,7 +352,7 @@ pub mod info {
         doc: "AHRS input voltage.",
     };
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: FieldInfo = FieldInfo {
         name: "utermo",
         icd_name: "Utermo",
@@ -424,7 +424,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         self.buffer.as_ref()
     }
 
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub fn heading(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::HEADING)
     }
@@ -434,7 +434,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.heading()) / 100.0
     }
 
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub fn pitch(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::PITCH)
     }
@@ -444,7 +444,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.pitch()) / 100.0
     }
 
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub fn roll(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ROLL)
     }
@@ -454,7 +454,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.roll()) / 100.0
     }
 
-    /// GyroX, s16, raw x 1 / KG = degrees per second: Angular rate about X (lateral axis).
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral axis).
     pub fn gyro_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::GYRO_X)
     }
@@ -464,7 +464,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.gyro_x()) / f64::from(variant.kg())
     }
 
-    /// GyroY, s16, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal axis).
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal axis).
     pub fn gyro_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::GYRO_Y)
     }
@@ -474,7 +474,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.gyro_y()) / f64::from(variant.kg())
     }
 
-    /// GyroZ, s16, raw x 1 / KG = degrees per second: Angular rate about Z (vertical axis).
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical axis).
     pub fn gyro_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::GYRO_Z)
     }
@@ -484,7 +484,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.gyro_z()) / f64::from(variant.kg())
     }
 
-    /// AccX, s16, raw x 1 / KA = standard gravity: Linear acceleration along X.
+    /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
     pub fn acc_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ACC_X)
     }
@@ -494,7 +494,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.acc_x()) / f64::from(variant.ka())
     }
 
-    /// AccY, s16, raw x 1 / KA = standard gravity: Linear acceleration along Y.
+    /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
     pub fn acc_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ACC_Y)
     }
@@ -504,7 +504,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.acc_y()) / f64::from(variant.ka())
     }
 
-    /// AccZ, s16, raw x 1 / KA = standard gravity: Linear acceleration along Z.
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
     pub fn acc_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ACC_Z)
     }
@@ -514,7 +514,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.acc_z()) / f64::from(variant.ka())
     }
 
-    /// MagX, s16, raw x 10 / 1 = nanotesla: Magnetic field along X.
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
     pub fn mag_x(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::MAG_X)
     }
@@ -524,7 +524,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.mag_x()) * 10.0
     }
 
-    /// MagY, s16, raw x 10 / 1 = nanotesla: Magnetic field along Y.
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
     pub fn mag_y(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::MAG_Y)
     }
@@ -534,7 +534,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.mag_y()) * 10.0
     }
 
-    /// MagZ, s16, raw x 10 / 1 = nanotesla: Magnetic field along Z.
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
     pub fn mag_z(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::MAG_Z)
     }
@@ -544,12 +544,12 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.mag_z()) * 10.0
     }
 
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
 
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -559,7 +559,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         StatusWord(self.usw())
     }
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     pub fn vdd(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::VDD)
     }
@@ -569,7 +569,7 @@ impl<T: AsRef<[u8]>> OrientationSensors<T> {
         f64::from(self.vdd()) / 1000.0
     }
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
     pub fn utermo(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UTERMO)
     }
@@ -668,37 +668,37 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> OrientationSensors<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct OrientationSensorsRepr {
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub heading: u16,
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub pitch: i16,
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub roll: i16,
-    /// GyroX, s16, raw x 1 / KG = degrees per second: Angular rate about X (lateral axis).
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral axis).
     pub gyro_x: i16,
-    /// GyroY, s16, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal axis).
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal axis).
     pub gyro_y: i16,
-    /// GyroZ, s16, raw x 1 / KG = degrees per second: Angular rate about Z (vertical axis).
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical axis).
     pub gyro_z: i16,
-    /// AccX, s16, raw x 1 / KA = standard gravity: Linear acceleration along X.
+    /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
     pub acc_x: i16,
-    /// AccY, s16, raw x 1 / KA = standard gravity: Linear acceleration along Y.
+    /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
     pub acc_y: i16,
-    /// AccZ, s16, raw x 1 / KA = standard gravity: Linear acceleration along Z.
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
     pub acc_z: i16,
-    /// MagX, s16, raw x 10 / 1 = nanotesla: Magnetic field along X.
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
     pub mag_x: i16,
-    /// MagY, s16, raw x 10 / 1 = nanotesla: Magnetic field along Y.
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
     pub mag_y: i16,
-    /// MagZ, s16, raw x 10 / 1 = nanotesla: Magnetic field along Z.
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
     pub mag_z: i16,
-    /// Reserved, reserved\[4\]:
+    /// Reserved, `reserved\[4\]`:
     pub reserved: [u8; 4],
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub usw: u16,
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     pub vdd: u16,
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
     pub utermo: i16,
 }
 

@@ -18,37 +18,37 @@ pub const SIZE: usize = 34;
 pub mod field {
     use crate::wire::Field;
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
 
-    /// Lk0, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK0: Field = 6..8;
 
-    /// Lk1, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK1: Field = 8..10;
 
-    /// Lk2, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK2: Field = 10..12;
 
-    /// Lk3, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK3: Field = 12..14;
 
-    /// Reserved, reserved[14].
+    /// Reserved, `reserved[14]`.
     pub const RESERVED: Field = 14..28;
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: Field = 28..30;
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: Field = 32..34;
 }
 
@@ -57,7 +57,7 @@ pub mod info {
     use super::field;
     use crate::payload::{FieldInfo, FieldKind, Value};
 
-    /// Heading, u16, raw x 1 / 100 = degrees.
+    /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: FieldInfo = FieldInfo {
         name: "heading",
         icd_name: "Heading",
@@ -76,7 +76,7 @@ pub mod info {
         doc: "Heading angle.",
     };
 
-    /// Pitch, s16, raw x 1 / 100 = degrees.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: FieldInfo = FieldInfo {
         name: "pitch",
         icd_name: "Pitch",
@@ -95,7 +95,7 @@ pub mod info {
         doc: "Pitch angle.",
     };
 
-    /// Roll, s16, raw x 1 / 100 = degrees.
+    /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: FieldInfo = FieldInfo {
         name: "roll",
         icd_name: "Roll",
@@ -114,7 +114,7 @@ pub mod info {
         doc: "Roll angle.",
     };
 
-    /// Lk0, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK0: FieldInfo = FieldInfo {
         name: "lk0",
         icd_name: "Lk0",
@@ -133,7 +133,7 @@ pub mod info {
         doc: "Quaternion of orientation, scalar component.",
     };
 
-    /// Lk1, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK1: FieldInfo = FieldInfo {
         name: "lk1",
         icd_name: "Lk1",
@@ -152,7 +152,7 @@ pub mod info {
         doc: "Quaternion of orientation, first vector component.",
     };
 
-    /// Lk2, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK2: FieldInfo = FieldInfo {
         name: "lk2",
         icd_name: "Lk2",
@@ -171,7 +171,7 @@ pub mod info {
         doc: "Quaternion of orientation, second vector component.",
     };
 
-    /// Lk3, s16, raw x 1 / 10000 = dimensionless.
+    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK3: FieldInfo = FieldInfo {
         name: "lk3",
         icd_name: "Lk3",
@@ -190,7 +190,7 @@ pub mod info {
         doc: "Quaternion of orientation, third vector component.",
     };
 
-    /// Reserved, reserved[14].
+    /// Reserved, `reserved[14]`.
     pub const RESERVED: FieldInfo = FieldInfo {
         name: "reserved",
         icd_name: "Reserved",
@@ -206,7 +206,7 @@ pub mod info {
         doc: "",
     };
 
-    /// USW, u16.
+    /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         name: "usw",
         icd_name: "USW",
@@ -222,7 +222,7 @@ pub mod info {
         doc: "Unit Status Word (section 6.5).",
     };
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         name: "vdd",
         icd_name: "Vdd",
@@ -241,7 +241,7 @@ pub mod info {
         doc: "AHRS input voltage.",
     };
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: FieldInfo = FieldInfo {
         name: "utermo",
         icd_name: "Utermo",
@@ -308,7 +308,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         self.buffer.as_ref()
     }
 
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub fn heading(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::HEADING)
     }
@@ -318,7 +318,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.heading()) / 100.0
     }
 
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub fn pitch(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::PITCH)
     }
@@ -328,7 +328,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.pitch()) / 100.0
     }
 
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub fn roll(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::ROLL)
     }
@@ -338,7 +338,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.roll()) / 100.0
     }
 
-    /// Lk0, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
+    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
     pub fn lk0(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::LK0)
     }
@@ -348,7 +348,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.lk0()) / 10000.0
     }
 
-    /// Lk1, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
+    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
     pub fn lk1(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::LK1)
     }
@@ -358,7 +358,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.lk1()) / 10000.0
     }
 
-    /// Lk2, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
+    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
     pub fn lk2(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::LK2)
     }
@@ -368,7 +368,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.lk2()) / 10000.0
     }
 
-    /// Lk3, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
+    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
     pub fn lk3(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::LK3)
     }
@@ -378,12 +378,12 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.lk3()) / 10000.0
     }
 
-    /// Reserved, reserved\[14\]:
+    /// Reserved, `reserved\[14\]`:
     pub fn reserved(&self) -> &[u8] {
         wire::bytes(self.buffer.as_ref(), field::RESERVED)
     }
 
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub fn usw(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::USW)
     }
@@ -393,7 +393,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         StatusWord(self.usw())
     }
 
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     pub fn vdd(&self) -> u16 {
         wire::get_u16(self.buffer.as_ref(), field::VDD)
     }
@@ -403,7 +403,7 @@ impl<T: AsRef<[u8]>> Quaternion<T> {
         f64::from(self.vdd()) / 1000.0
     }
 
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
     pub fn utermo(&self) -> i16 {
         wire::get_i16(self.buffer.as_ref(), field::UTERMO)
     }
@@ -477,27 +477,27 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> Quaternion<T> {
 /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct QuaternionRepr {
-    /// Heading, u16, raw x 1 / 100 = degrees: Heading angle.
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     pub heading: u16,
-    /// Pitch, s16, raw x 1 / 100 = degrees: Pitch angle.
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     pub pitch: i16,
-    /// Roll, s16, raw x 1 / 100 = degrees: Roll angle.
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     pub roll: i16,
-    /// Lk0, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
+    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
     pub lk0: i16,
-    /// Lk1, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
+    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
     pub lk1: i16,
-    /// Lk2, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
+    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
     pub lk2: i16,
-    /// Lk3, s16, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
+    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
     pub lk3: i16,
-    /// Reserved, reserved\[14\]:
+    /// Reserved, `reserved\[14\]`:
     pub reserved: [u8; 14],
-    /// USW, u16: Unit Status Word (section 6.5).
+    /// USW, `u16`: Unit Status Word (section 6.5).
     pub usw: u16,
-    /// Vdd, u16, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     pub vdd: u16,
-    /// Utermo, s16, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
     pub utermo: i16,
 }
 
