@@ -108,7 +108,7 @@ $(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/fuzz/fuzz_stream_small: fuzz/c/fuzz_stream.c $(C_LIB)
+$(C_OUT)/fuzz/%_small: fuzz/c/%.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_FUZZ) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
 
@@ -134,7 +134,8 @@ $(C_OUT)/extended/test_ilahrs: tests/c/extend_spec.py tests/c/test_ilahrs.c spec
 	$(PY) -m generator --spec $(C_OUT)/extended/ilahrs.yaml --out $(C_OUT)/extended/generated --target c >/dev/null
 	gcc $(C_STD) $(C_SAN) -I$(C_OUT)/extended/generated/c tests/c/test_ilahrs.c $(C_OUT)/extended/generated/c/ilahrs.c -lm -o $@
 
-C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/fuzz_stream_small
+C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/fuzz_stream_small \
+             $(C_OUT)/fuzz/fuzz_parsers_small
 
 test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/test_ilahrs_small \
         $(C_OUT)/san/ilahrs_conformance $(C_OUT)/san/ilahrs_conformance_small \

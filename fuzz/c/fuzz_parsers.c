@@ -87,6 +87,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check(match.count > 0 && ilahrs_command_build(match.commands[0], out, sizeof out, &err) == len);
         check(out[ILAHRS_FRAME_PAYLOAD_OFFSET] == rest[ILAHRS_FRAME_PAYLOAD_OFFSET] && match.code == rest[ILAHRS_FRAME_PAYLOAD_OFFSET]);
     }
+    /* The stream decoder takes the input as one sentence exactly when the sentence parser does
+     * (its own, one-pass validator when optimized for size), with the same values. */
+    {
+        ilahrs_stream_t decoder = { 0 };
+        ilahrs_message_t msg;
+        const uint8_t *p = rest;
+        size_t n = len;
+        bool whole = ilahrs_stream_next(&decoder, &p, &n, &msg) && decoder.discarded == 0
+                  && msg.kind == ILAHRS_MESSAGE_SENTENCE && msg.size == len;
+        bool parsed = ilahrs_pahr_parse((const char *)rest, len, &s, &err);
+        size_t k;
+        check(whole == parsed);
+        for (k = 0; whole && k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+            check(ilahrs_pahr_field_get(&s, k) == ilahrs_pahr_field_get(&msg.sentence, k));
+        }
+    }
     if (ilahrs_pahr_parse((const char *)rest, len, &s, &err)) {
         char text[ILAHRS_PAHR_MAX_LENGTH + 1];
         ilahrs_pahr_t t;

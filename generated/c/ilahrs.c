@@ -766,6 +766,78 @@ typedef char ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MA
 
 /* ---- Helpers --------------------------------------------------------------------------- */
 
+/* Optimized for size, the library copies with plain loops rather than link memcpy, memmove and
+ * memset (several hundred bytes each in a small C library). OPAQUE hides a loop counter from the
+ * optimizer so that it does not turn such a loop back into a call. */
+#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+#define OPAQUE(x) __asm__("" : "+r"(x))
+#else
+#define OPAQUE(x) ((void)0)
+#endif
+
+/* Copy n bytes front to back: right for separate buffers and for moves to a lower address
+ * within one buffer. */
+static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
+{
+#if ILAHRS_OPTIMIZE_SIZE
+    while (n > 0) {
+        *dst++ = *src++;
+        n--;
+        OPAQUE(n);
+    }
+#else
+    memmove(dst, src, n);
+#endif
+}
+
+/* Copy n bytes between buffers that may overlap (memmove). */
+static void move_bytes(uint8_t *dst, const uint8_t *src, size_t n)
+{
+#if ILAHRS_OPTIMIZE_SIZE
+    if ((uintptr_t)dst <= (uintptr_t)src) {
+        copy_forward(dst, src, n);
+        return;
+    }
+    while (n > 0) {
+        n--;
+        OPAQUE(n);
+        dst[n] = src[n];
+    }
+#else
+    memmove(dst, src, n);
+#endif
+}
+
+/* The first byte `c` in p[0..n), or NULL (memchr). */
+static const uint8_t *find_byte(const uint8_t *p, size_t n, uint8_t c)
+{
+#if ILAHRS_OPTIMIZE_SIZE
+    for (; n > 0; n--, p++) {
+        if (*p == c) {
+            return p;
+        }
+    }
+    return NULL;
+#else
+    return (const uint8_t *)memchr(p, c, n);
+#endif
+}
+
+/* Set n bytes to zero (memset). */
+static void zero_bytes(void *dst, size_t n)
+{
+#if ILAHRS_OPTIMIZE_SIZE
+    uint8_t *p = (uint8_t *)dst;
+    while (n > 0) {
+        *p++ = 0;
+        n--;
+        OPAQUE(n);
+    }
+#else
+    memset(dst, 0, n);
+#endif
+}
+
 static bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
 {
     if (err != NULL) {
@@ -848,7 +920,16 @@ static int32_t sign_extend(uint32_t bits, size_t size)
 
 static bool equal_name(const char *name, size_t len, const char *known)
 {
-    return name != NULL && strlen(known) == len && memcmp(known, name, len) == 0;
+    size_t i;
+    if (name == NULL) {
+        return false;
+    }
+    for (i = 0; i < len; i++) {
+        if (known[i] == '\0' || known[i] != name[i]) {
+            return false;
+        }
+    }
+    return known[len] == '\0';
 }
 
 /* ---- Errors ---------------------------------------------------------------------------- */
@@ -987,7 +1068,7 @@ size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap,
     if (out == NULL || cap < frame->payload_size + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
     }
-    memmove(out + ILAHRS_FRAME_PAYLOAD_OFFSET, frame->payload, frame->payload_size);
+    move_bytes(out + ILAHRS_FRAME_PAYLOAD_OFFSET, frame->payload, frame->payload_size);
     return frame_finish(out, frame, frame->payload_size);
 }
 
@@ -1346,7 +1427,7 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT) {
         return;
     }
-    memset(out, 0, ilahrs_payloads[payload].struct_size);
+    zero_bytes(out, ilahrs_payloads[payload].struct_size);
     first = ilahrs_payloads[payload].first_field;
     for (i = 0; i < DEFAULT_COUNT; i++) {
         const ilahrs_field_info_t *f = &ilahrs_fields[ilahrs_defaults[i].field];
@@ -1359,8 +1440,11 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
             (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
         } else if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
-            size_t n = strlen(text);
-            memcpy(ilahrs_field_member(f, out), text, n < f->size ? n : f->size);
+            char *member = (char *)ilahrs_field_member(f, out);
+            size_t n;
+            for (n = 0; n < f->size && text[n] != '\0'; n++) {
+                member[n] = text[n];
+            }
         }
     }
 }
@@ -1380,13 +1464,13 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     if (len > size) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, size, NULL);
     }
-    memset(out, 0, ilahrs_payloads[payload].struct_size);
+    zero_bytes(out, ilahrs_payloads[payload].struct_size);
     f = &ilahrs_fields[ilahrs_payloads[payload].first_field];
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         uint8_t *member = (uint8_t *)out + f->member;
         if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
-            memcpy(member, data + f->offset, f->size);
+            copy_forward(member, data + f->offset, f->size);
         } else {
             store_bits(member, get_le(data + f->offset, f->size), f->size);
         }
@@ -1411,7 +1495,7 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     for (; f < end; f++) {
         const uint8_t *member = (const uint8_t *)in + f->member;
         if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
-            memcpy(out + f->offset, member, f->size);
+            copy_forward(out + f->offset, member, f->size);
         } else {
             uint32_t bits = load_bits(member, f->size);
             {
@@ -1544,26 +1628,38 @@ const char *ilahrs_usw_flag_name(unsigned bit)
 #define PAHR_TAIL 5u /* "*", two checksum digits, CR, LF */
 #define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
 
-/* One field: name, format, template width, fraction digits, struct member, range. */
-static const struct {
+/* One field: name, hex (1) or decimal (0), template width, fraction digits, struct member and its
+ * size, range (scaled). The member is signed when the range is. */
+typedef struct {
     uint8_t name;
     uint8_t hex;
     uint8_t width;
     uint8_t decimals;
     uint8_t member;
     uint8_t size;
-    uint8_t is_signed;
-    uint32_t divisor;
-    int32_t min;
-    int32_t max;
-} ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
-    { 0, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), 1, 100u, (-18000), 18000 },
-    { 5, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), 1, 100u, (-9000), 9000 },
-    { 11, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 100u, 0, 35999u },
-    { 19, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), 1, 10u, (-999), 9999 },
-    { 31, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 100u, 0, 999 },
-    { 35, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 1u, 0, 65535u },
+    int16_t min;
+    uint16_t max;
+} pahr_field_t;
+
+static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
+    { 0, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), (-18000), 18000 },
+    { 5, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), (-9000), 9000 },
+    { 11, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 35999u },
+    { 19, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), (-999), 9999 },
+    { 31, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 999 },
+    { 35, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 65535u },
 };
+
+/* 10^decimals of field k. */
+static uint32_t pahr_divisor(size_t k)
+{
+    uint32_t divisor = 1;
+    unsigned i;
+    for (i = 0; i < ilahrs_pahr_fields[k].decimals; i++) {
+        divisor *= 10u;
+    }
+    return divisor;
+}
 
 const char *ilahrs_pahr_field_name(size_t index)
 {
@@ -1582,7 +1678,7 @@ bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max)
 
 uint32_t ilahrs_pahr_field_divisor(size_t index)
 {
-    return index < ILAHRS_PAHR_FIELD_COUNT && !ilahrs_pahr_fields[index].hex ? ilahrs_pahr_fields[index].divisor : 0;
+    return index < ILAHRS_PAHR_FIELD_COUNT && !ilahrs_pahr_fields[index].hex ? pahr_divisor(index) : 0;
 }
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k);
@@ -1592,18 +1688,17 @@ int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
     return index < ILAHRS_PAHR_FIELD_COUNT ? pahr_get(sentence, index) : 0;
 }
 
-static int hex_value(uint8_t c)
+/* The character classes of the grammar: a hex digit's value (0..15, either case), NOT_DIGIT for
+ * any other character. Decimal fields take the values below 10. */
+#define NOT_DIGIT 0x100u
+
+static unsigned digit_value(uint8_t c)
 {
-    if (c >= '0' && c <= '9') {
-        return c - '0';
+    unsigned letter = (unsigned)(c | 0x20u) - 'a';
+    if ((unsigned)(c - '0') <= 9u) {
+        return (unsigned)(c - '0');
     }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    return -1;
+    return letter <= 5u ? letter + 10u : NOT_DIGIT;
 }
 
 /* XOR of n bytes (eight at a time unless optimizing for size). */
@@ -1629,57 +1724,64 @@ static uint8_t xor_bytes(const uint8_t *p, size_t n)
     return x;
 }
 
-/* m * base + digit, saturating at UINT32_MAX: far above every range. */
-static uint32_t pahr_digit(uint32_t m, uint32_t base, uint32_t digit)
+/* m * base + digit, held at SATURATED: above every range, and m * 16 + 15 cannot overflow from
+ * there. So any number of digits reads without a wider type or a division. */
+#define SATURATED 0x0FFFFFFFu
+
+static uint32_t pahr_accumulate(uint32_t m, unsigned base, unsigned digit)
 {
-    return m > (0xFFFFFFFFu - 15u) / base ? 0xFFFFFFFFu : m * base + digit;
+    m = m * base + digit;
+    return m > SATURATED ? SATURATED : m;
 }
 
 /*
- * Field k starting at p[*at]: its value, or false if it breaks the grammar. Leaves *at on the
- * character after the field (a separator, or the star). p[star] is '*', which ends every field.
+ * Field k at p[*at], in one pass: its grammar, its value scaled to an integer, its range. Returns
+ * ILAHRS_OK with the value stored in *out, ILAHRS_ERR_MALFORMED or ILAHRS_ERR_OUT_OF_RANGE, and
+ * leaves *at on the separator or the star that ends the field (p[star] is '*', which ends every
+ * field).
  */
-static bool pahr_value(const uint8_t *p, size_t *at, size_t star, size_t k, int64_t *value)
+static ilahrs_error_kind_t pahr_field(const uint8_t *p, size_t *at, size_t star, size_t k, ilahrs_pahr_t *out)
 {
+    const pahr_field_t *f = &ilahrs_pahr_fields[k];
     size_t i = *at;
-    size_t first;
-    uint32_t magnitude = 0;
+    unsigned base = f->hex ? 16u : 10u;
+    unsigned digits = 0; /* before the point */
+    unsigned fraction = 0;
+    bool point = false;
+    bool negative = base == 10u && p[i] == '-';
     bool ok;
-    bool negative = false;
-    if (ilahrs_pahr_fields[k].hex) {
-        int h;
-        for (first = i; (h = hex_value(p[i])) >= 0; i++) {
-            magnitude = pahr_digit(magnitude, 16u, (uint32_t)h);
-        }
-        ok = i > first && i - first <= ilahrs_pahr_fields[k].width;
-    } else {
-        size_t fraction = 0;
-        negative = p[i] == '-';
-        i += negative;
-        for (first = i; (unsigned)(p[i] - '0') <= 9u; i++) {
-            magnitude = pahr_digit(magnitude, 10u, (uint32_t)(p[i] - '0'));
-        }
-        ok = i > first;
-        if (p[i] == '.') {
-            for (first = ++i; (unsigned)(p[i] - '0') <= 9u; i++) {
-                magnitude = pahr_digit(magnitude, 10u, (uint32_t)(p[i] - '0'));
-            }
-            fraction = i - first;
-            ok = ok && fraction >= 1 && fraction <= ilahrs_pahr_fields[k].decimals;
-        }
-        for (; fraction < ilahrs_pahr_fields[k].decimals; fraction++) {
-            magnitude = pahr_digit(magnitude, 10u, 0);
+    uint32_t m = 0;
+    int32_t value;
+    for (i += negative;; i++) {
+        unsigned d = digit_value(p[i]);
+        if (d < base) {
+            m = pahr_accumulate(m, base, d);
+            fraction += point;
+            digits += !point;
+        } else if (p[i] == '.' && base == 10u && !point) {
+            point = true;
+        } else {
+            break;
         }
     }
-    if (i < star && p[i] != PAHR_SEPARATOR) {
+    ok = digits > 0 && (base == 16u ? digits <= f->width
+                                    : !point || (fraction >= 1 && fraction <= f->decimals));
+    for (; i < star && p[i] != PAHR_SEPARATOR; i++) {
         ok = false;
-        while (i < star && p[i] != PAHR_SEPARATOR) {
-            i++;
-        }
     }
     *at = i;
-    *value = negative ? -(int64_t)magnitude : (int64_t)magnitude;
-    return ok;
+    if (!ok) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    for (; fraction < f->decimals; fraction++) {
+        m = pahr_accumulate(m, 10u, 0);
+    }
+    value = negative ? -(int32_t)m : (int32_t)m;
+    if (value < f->min || value > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, (uint32_t)value, f->size);
+    return ILAHRS_OK;
 }
 
 #if !ILAHRS_OPTIMIZE_SIZE
@@ -1699,7 +1801,7 @@ static inline int64_t canonical_decimal(const uint8_t *p, size_t width, size_t d
     size_t j;
     for (j = 0; j < width; j++) {
         uint32_t digit = (uint32_t)p[j] - '0';
-        unsigned sign = j == 0 ? negative : 0u;
+        unsigned sign = j == 0 && width > 1 ? negative : 0u; /* a sign needs a digit after it */
         good &= (unsigned)(digit <= 9u) | sign;
         value = value * 10u + (sign ? 0u : digit);
     }
@@ -1778,21 +1880,19 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
     size_t error_at = 0;
     size_t error_field = 0;
     ilahrs_error_kind_t field_error = ILAHRS_OK;
-    int high;
-    int low;
+    unsigned checksum;
     *field = ILAHRS_PAHR_FIELD_COUNT;
     *at = star;
     if (star < PAHR_PREFIX_LENGTH || p[star] != PAHR_STAR) {
         return ILAHRS_ERR_MALFORMED;
     }
     *at = star + 1;
-    high = hex_value(p[star + 1]);
-    low = hex_value(p[star + 2]);
-    if (high < 0 || low < 0) {
+    checksum = digit_value(p[star + 1]) * 16u + digit_value(p[star + 2]);
+    if (checksum > 0xFFu) {
         return ILAHRS_ERR_MALFORMED;
     }
 #if !ILAHRS_OPTIMIZE_SIZE
-    if (end == PAHR_CANONICAL_LENGTH && pahr_canonical(p, (uint8_t)(high * 16 + low), out)) {
+    if (end == PAHR_CANONICAL_LENGTH && pahr_canonical(p, (uint8_t)checksum, out)) {
         return ILAHRS_OK;
     }
 #endif
@@ -1800,14 +1900,7 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
     for (;;) {
         size_t start = i;
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
-            int64_t value = 0;
-            if (!pahr_value(p, &i, star, k, &value)) {
-                field_error = ILAHRS_ERR_MALFORMED;
-            } else if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
-                field_error = ILAHRS_ERR_OUT_OF_RANGE;
-            } else {
-                store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)value, ilahrs_pahr_fields[k].size);
-            }
+            field_error = pahr_field(p, &i, star, k, out);
             error_at = start;
             error_field = k;
         } else {
@@ -1821,7 +1914,7 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         }
         i++; /* the separator */
     }
-    if (xor_bytes(p + 1, star - 1) != (uint8_t)(high * 16 + low)) {
+    if (xor_bytes(p + 1, star - 1) != checksum) {
         return ILAHRS_ERR_BAD_CHECKSUM;
     }
     *at = PAHR_PREFIX_LENGTH;
@@ -1855,7 +1948,7 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     }
     /* The first CR LF. */
     for (i = PAHR_PREFIX_LENGTH; i + 1 < len; i = (size_t)(cr - p) + 1) {
-        cr = (const uint8_t *)memchr(p + i, PAHR_CR, len - 1 - i);
+        cr = find_byte(p + i, len - 1 - i, PAHR_CR);
         if (cr == NULL || cr[1] == PAHR_LF) {
             break;
         }
@@ -1885,7 +1978,7 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
 {
     uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].is_signed ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
 }
 
 /* Write `value` in `base` with at least `width` digits at out[*at], within `cap`. */
@@ -1947,13 +2040,13 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
             }
             width = width > 0 ? width - 1 : 0;
         }
-        fits = fits && put_digits(buf, sizeof buf, &at, magnitude / ilahrs_pahr_fields[k].divisor, 10, width);
+        fits = fits && put_digits(buf, sizeof buf, &at, magnitude / pahr_divisor(k), 10, width);
         if (ilahrs_pahr_fields[k].decimals > 0) {
             fits = fits && at < sizeof buf;
             if (fits) {
                 buf[at++] = '.';
             }
-            fits = fits && put_digits(buf, sizeof buf, &at, magnitude % ilahrs_pahr_fields[k].divisor, 10,
+            fits = fits && put_digits(buf, sizeof buf, &at, magnitude % pahr_divisor(k), 10,
                                       ilahrs_pahr_fields[k].decimals);
         }
     }
@@ -1970,7 +2063,7 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     if (text == NULL || cap < at) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
     }
-    memcpy(text, buf, at);
+    copy_forward((uint8_t *)text, buf, at);
     if (cap > at) {
         text[at] = '\0';
     }
@@ -1997,7 +2090,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
             if (!(value - value == 0.0)) { /* NaN or infinite */
                 return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
             }
-            value *= (double)ilahrs_pahr_fields[k].divisor;
+            value *= (double)pahr_divisor(k);
         }
         scaled[k] = pahr_round(value);
         if (ilahrs_pahr_fields[k].hex && (double)scaled[k] != value) {
@@ -2029,18 +2122,6 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
 
 /* ---- Stream decoder ------------------------------------------------------------------- */
 
-/* Copy n bytes front to back: right for separate buffers and for moves to a lower address
- * within one buffer. memmove, or a plain loop when optimizing for size. */
-static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
-{
-#if ILAHRS_OPTIMIZE_SIZE
-    while (n-- > 0) {
-        *dst++ = *src++;
-    }
-#else
-    memmove(dst, src, n);
-#endif
-}
 
 #define NEED_MORE (-1)
 #define INVALID 0
@@ -2106,6 +2187,55 @@ static bool pahr_prefix(const uint8_t *p, size_t n)
     return true;
 }
 
+#if ILAHRS_OPTIMIZE_SIZE
+/*
+ * The sentence p[0..n), n its length through CR LF (p[n - 1] is the first LF), with its fields in
+ * *out: exactly what ilahrs_pahr_parse() accepts, decided in one pass without naming the error.
+ */
+static bool pahr_valid(const uint8_t *p, size_t n, ilahrs_pahr_t *out)
+{
+    size_t star = n - PAHR_TAIL;
+    size_t i = PAHR_PREFIX_LENGTH;
+    size_t k = 0;
+    if (n < PAHR_PREFIX_LENGTH + PAHR_TAIL || p[n - 2] != PAHR_CR || p[star] != PAHR_STAR
+        || xor_bytes(p + 1, star - 1) != digit_value(p[star + 1]) * 16u + digit_value(p[star + 2])) {
+        return false;
+    }
+    for (;; i++) {
+        if (pahr_field(p, &i, star, k, out) != ILAHRS_OK) {
+            return false;
+        }
+        if (++k == ILAHRS_PAHR_FIELD_COUNT) {
+            return i == star;
+        }
+        if (i == star) {
+            return false;
+        }
+    }
+}
+
+/* The sentence at p[0..n): as frame_candidate(). It runs to the first LF within the longest
+ * sentence. */
+static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
+    size_t i;
+    if (!pahr_prefix(p, n < PAHR_PREFIX_LENGTH ? n : PAHR_PREFIX_LENGTH)) {
+        return INVALID;
+    }
+    for (i = 0; i < n && i < ILAHRS_PAHR_MAX_LENGTH; i++) {
+        if (p[i] == PAHR_LF) {
+            if (!pahr_valid(p, i + 1, &msg->sentence)) {
+                return INVALID;
+            }
+            msg->kind = ILAHRS_MESSAGE_SENTENCE;
+            msg->data = p;
+            msg->size = i + 1;
+            return (int)(i + 1);
+        }
+    }
+    return n >= ILAHRS_PAHR_MAX_LENGTH ? INVALID : NEED_MORE;
+}
+#else
 /* The sentence at p[0..n) (p[0] is "$"): as frame_candidate(). */
 static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
@@ -2157,6 +2287,7 @@ static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
         return (int)i;
     }
 }
+#endif
 
 /* The message at p[0..n): its size if valid, INVALID, or NEED_MORE bytes to decide. */
 static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
@@ -2171,6 +2302,97 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
     stream->count = 0;
 }
 
+/*
+ * With start 0 and bytes held, the candidate at held[0] was examined and waits for more bytes
+ * (after a message, start is its end until the next call). True if `byte` cannot decide it: a
+ * frame still short of its length, or a sentence still without LF within the longest sentence.
+ */
+static bool still_waiting(const ilahrs_stream_t *s, uint8_t byte)
+{
+    size_t n = s->count;
+    const uint8_t *h = s->held;
+    if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        return n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+            && n + 1 < ILAHRS_FRAME_HEADER_SIZE + get_le(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    }
+    return n >= PAHR_PREFIX_LENGTH && n + 1 < ILAHRS_PAHR_MAX_LENGTH && byte != PAHR_LF;
+}
+
+#if ILAHRS_OPTIMIZE_SIZE
+/*
+ * The smallest decoder: every byte goes into the held buffer (ilahrs_stream_push()), and the
+ * candidate at its front is decided again when a byte can change the answer. A message is handed
+ * out from the buffer; `start` marks its end until the next call.
+ */
+static bool decide(ilahrs_stream_t *s, bool final, ilahrs_message_t *msg)
+{
+    uint8_t *h = s->held;
+    copy_forward(h, h + s->start, s->count);
+    s->start = 0;
+    while (s->count != 0) {
+        int r = candidate(h, s->count, msg);
+        if (r > 0) {
+            s->start = (uint8_t)r;
+            s->count = (uint8_t)(s->count - r);
+            return true;
+        }
+        if (r == NEED_MORE && !final) {
+            return false;
+        }
+        s->discarded++;
+        s->count--;
+        copy_forward(h, h + 1, s->count);
+    }
+    return false;
+}
+
+bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+{
+    if (s->count == 0) {
+        s->start = 0;
+        if (!may_start(byte)) {
+            s->discarded++;
+            return false;
+        }
+    } else if (s->start == 0 && still_waiting(s, byte)) {
+        s->held[s->count++] = byte;
+        return false;
+    }
+    s->held[s->start + s->count] = byte; /* in bounds: a held byte is never the longest message's last */
+    s->count++;
+    return decide(s, false, msg);
+}
+
+bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    return s->count != 0 && decide(s, false, msg);
+}
+
+bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
+{
+    if (ilahrs_stream_poll(s, msg)) {
+        return true;
+    }
+    while (*len != 0) {
+        uint8_t byte = **data;
+        (*data)++;
+        (*len)--;
+        if (ilahrs_stream_push(s, byte, msg)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    if (decide(s, true, msg)) {
+        return true;
+    }
+    s->count = 0;
+    return false;
+}
+#else
 /*
  * Decide on the held bytes, topping them up from the input. True with a message; false when
  * the held bytes are gone (input may remain) or wait for more input (all input taken).
@@ -2243,22 +2465,6 @@ static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool fi
     }
 }
 
-#if ILAHRS_OPTIMIZE_SIZE
-bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
-{
-    /* Everything goes through the held buffer. drain() returns false with input left only when
-     * the held bytes are gone, so this loop ends. */
-    while (s->count != 0 || *len != 0) {
-        if (drain(s, data, len, false, msg)) {
-            return true;
-        }
-        if (*len == 0) {
-            break;
-        }
-    }
-    return false;
-}
-#else
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
 {
     const uint8_t *p;
@@ -2302,25 +2508,6 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
     *len = 0;
     return false;
 }
-#endif
-
-/*
- * With start 0 and bytes held, the candidate at held[0] was examined and waits for more bytes
- * (drain() and the chunk path leave nothing else there). True if `byte` cannot decide it:
- * a frame still short of its length, or a sentence still without LF, within the longest
- * sentence, the byte printable and not following a CR.
- */
-static bool still_waiting(const ilahrs_stream_t *s, uint8_t byte)
-{
-    size_t n = s->count;
-    const uint8_t *h = s->held;
-    if (h[0] == ILAHRS_FRAME_HEADER_0) {
-        return n >= ILAHRS_FRAME_PAYLOAD_OFFSET
-            && n + 1 < ILAHRS_FRAME_HEADER_SIZE + get_le(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-    }
-    return n >= PAHR_PREFIX_LENGTH && n + 1 < ILAHRS_PAHR_MAX_LENGTH && byte >= 0x20 && byte <= 0x7E && h[n - 1] != PAHR_CR;
-}
-
 bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
 {
     size_t none = 0;
@@ -2363,6 +2550,8 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
     s->count = 0;
     return false;
 }
+#endif
+
 
 /* ---- Device state machine (6.1, 6.3, 6.4) --------------------------------------- */
 

@@ -22,8 +22,19 @@ GLOBALS = {
 }
 
 
+# The $PAHR field reader saturates magnitudes here (ilahrs.c, SATURATED): every range must lie below.
+PAHR_SATURATED = 0x0FFFFFFF
+
+
 def outputs(spec: Spec) -> list[Output]:
     t = tables.build_tables(spec)
+    pahr_types = ("int32_t", "int32_t")
+    if spec.nmea is not None:
+        lows = [f.min for f in spec.nmea.fields]
+        highs = [f.max for f in spec.nmea.fields]
+        if max(abs(v) for v in lows + highs) >= PAHR_SATURATED:
+            raise ValueError("a $PAHR range reaches the C reader's saturation value")
+        pahr_types = (filters.c_int_type(min(lows), max(lows)), filters.c_int_type(min(highs), max(highs)))
     usw_flags = 0
     if spec.status_word is not None:
         for flag in spec.status_word.flags:
@@ -37,6 +48,8 @@ def outputs(spec: Spec) -> list[Output]:
         "canon": tables.canonical_layout(spec),
         "max_response_payloads": max(1, *(len(c.response_payloads) for c in spec.commands)),
         "m": machine.build_machine(spec),
+        "pahr_min_type": pahr_types[0],
+        "pahr_max_type": pahr_types[1],
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
