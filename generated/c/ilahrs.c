@@ -507,15 +507,17 @@ static const int32_t ilahrs_int_bounds[11][2] = {
     { 1, 255 },
 };
 
-static const float ilahrs_float_bounds[8][2] = {
-    { 0.0f, 0.0f },
-    { (-3.4028234663852886e+38f), 3.4028234663852886e+38f },
-    { 0.0f, 360.0f },
-    { (-180.0f), 180.0f },
-    { (-90.0f), 90.0f },
-    { (-20000.0f), 100000.0f },
-    { 1900.002685546875f, 2200.001708984375f },
-    { (-360.0f), 360.0f },
+/* Float bounds as the keys of their float32 roundings (float_key()), so that a builder checks a
+ * float with integer compares: exact, and no floating-point code linked. */
+static const int32_t ilahrs_float_bounds[8][2] = {
+    { 0, 0 }, /* 0.0f .. 0.0f */
+    { (-2139095039), 2139095039 }, /* (-3.4028234663852886e+38f) .. 3.4028234663852886e+38f */
+    { 0, 1135869952 }, /* 0.0f .. 360.0f */
+    { (-1127481344), 1127481344 }, /* (-180.0f) .. 180.0f */
+    { (-1119092736), 1119092736 }, /* (-90.0f) .. 90.0f */
+    { (-1184645120), 1203982336 }, /* (-20000.0f) .. 100000.0f */
+    { 1156415510, 1158250503 }, /* 1900.002685546875f .. 2200.001708984375f */
+    { (-1135869952), 1135869952 }, /* (-360.0f) .. 360.0f */
 };
 
 static const double ilahrs_exact_bounds[8][2] = {
@@ -1348,18 +1350,30 @@ bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, flo
     return true;
 }
 
-/* The builder check of a stored value: integers against integer bounds, floats (NaN fails
- * every comparison) against the float32 roundings of their bounds, then the encoding's rule. */
+/* A float32, as its bits, as an integer that orders like the float: -0 and +0 are both 0, and
+ * NaNs lie beyond the infinities, so outside every finite range. */
+static int32_t float_key(uint32_t bits)
+{
+    int32_t magnitude = (int32_t)(bits & 0x7FFFFFFFu);
+    return (bits & 0x80000000u) != 0 ? -magnitude : magnitude;
+}
+
+/* The declination rule on float keys: ILAHRS_DECLINATION_MIN..MAX, or above COMPUTE_ABOVE. */
+#define DECLINATION_MIN_KEY (-1127481344)
+#define DECLINATION_MAX_KEY 1127481344
+#define DECLINATION_COMPUTE_ABOVE_KEY 1135869952
+
+/* The builder check of a stored value: integers against integer bounds, floats (by key) against
+ * the float32 roundings of their bounds, then the encoding's rule. */
 static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 {
     if (TYPE_KIND(f->type) == ILAHRS_KIND_FLOAT) {
-        float value = float_of_bits(bits);
-        if (!(value >= ilahrs_float_bounds[f->bounds][0] && value <= ilahrs_float_bounds[f->bounds][1])) {
+        int32_t key = float_key(bits);
+        if (key < ilahrs_float_bounds[f->bounds][0] || key > ilahrs_float_bounds[f->bounds][1]) {
             return false;
         }
         if (TYPE_ENCODING(f->type) == ENCODING_DECLINATION) {
-            return (value >= ILAHRS_DECLINATION_MIN && value <= ILAHRS_DECLINATION_MAX)
-                || value > ILAHRS_DECLINATION_COMPUTE_ABOVE;
+            return (key >= DECLINATION_MIN_KEY && key <= DECLINATION_MAX_KEY) || key > DECLINATION_COMPUTE_ABOVE_KEY;
         }
         return true;
     }
@@ -1537,14 +1551,14 @@ static int days_in_month(int year, int month)
     return month == 2 && leap ? 29 : days[month - 1];
 }
 
-/* Year + (Month - 1)/12 + Day/365, as a float. */
-static double date_value(int year, int month, int day)
+/*
+ * Year + (Month - 1)/12 + Day/365, as a float. Scaled by DATE_SCALE, the least common multiple of the divisors, a date is an
+ * integer below 2^24: exact in a float32, and decoding compares integers (E15).
+ */
+#define DATE_SCALE 4380
+static int32_t date_scaled(int year, int month, int day)
 {
-    double value = 0.0;
-    value += (double)(year + 0) / 1.0;
-    value += (double)(month + -1) / 12.0;
-    value += (double)(day + 0) / 365.0;
-    return value;
+    return (year + (0)) * 4380 + (month + (-1)) * 365 + (day + (0)) * 12;
 }
 
 bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error_t *err)
@@ -1553,40 +1567,46 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
         || day > days_in_month(year, month)) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
-    *value = (float)date_value(year, month, day);
+    /* Both operands are exact float32 values, so the quotient is the float32 nearest the date:
+     * the generator checked that it equals the double-precision formula rounded to float32. */
+    *value = (float)date_scaled(year, month, day) / (float)DATE_SCALE;
     return true;
 }
 
+/* Date floats a decoder accepts: the years ILAHRS_DATE_YEAR_MIN - 1 .. ILAHRS_DATE_YEAR_MAX + 2,
+ * as float keys; DATE_EXPONENT is the biased exponent of the smallest. */
+#define DATE_DECODE_MIN_KEY 1156407296
+#define DATE_DECODE_MAX_KEY 1158254592
+#define DATE_EXPONENT 137u
+
 bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
 {
-    double v = (double)value;
-    double best = -1.0;
+    uint32_t bits;
+    uint32_t exponent;
+    uint64_t target;
+    uint64_t best = ~(uint64_t)0;
     int base;
     int year;
-    if (!(v >= (double)(ILAHRS_DATE_YEAR_MIN - 1) && v <= (double)(ILAHRS_DATE_YEAR_MAX + 2))) {
+    memcpy(&bits, &value, sizeof bits);
+    if (float_key(bits) < DATE_DECODE_MIN_KEY || float_key(bits) > DATE_DECODE_MAX_KEY) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
-    base = (int)v; /* floor: v is positive */
+    /* value = mantissa * 2^(exponent - 150): scaled by DATE_SCALE * 2^(150 - DATE_EXPONENT) it is
+     * an integer, and so is every date. */
+    exponent = (bits >> 23) & 0xFFu;
+    target = ((uint64_t)((bits & 0x7FFFFFu) | 0x800000u) * DATE_SCALE) << (exponent - DATE_EXPONENT);
+    base = (int)(((bits & 0x7FFFFFu) | 0x800000u) >> (150u - exponent)); /* floor(value) */
     for (year = base - 1; year <= base; year++) {
         int month;
         if (year < ILAHRS_DATE_YEAR_MIN || year > ILAHRS_DATE_YEAR_MAX) {
             continue;
         }
         for (month = 1; month <= 12; month++) {
-            /* The distance is linear in the day: only the days around the nearest can win. */
-            int last = days_in_month(year, month);
-            double at_zero = date_value(year, month, 0);
-            double per_day = date_value(year, month, 1) - at_zero;
-            double guess = (v - at_zero) / per_day;
-            int day = guess < 1.0 ? 1 : guess > (double)last ? last : (int)guess;
-            int first = day > 1 ? day - 1 : 1;
-            int stop = day < last ? day + 1 : last;
-            for (day = first; day <= stop; day++) {
-                double distance = date_value(year, month, day) - v;
-                if (distance < 0) {
-                    distance = -distance;
-                }
-                if (best < 0 || distance < best) {
+            int day;
+            for (day = 1; day <= days_in_month(year, month); day++) {
+                uint64_t at = (uint64_t)date_scaled(year, month, day) << (150u - DATE_EXPONENT);
+                uint64_t distance = at > target ? at - target : target - at;
+                if (distance < best) {
                     best = distance;
                     date->year = (int16_t)year;
                     date->month = (uint8_t)month;
@@ -1595,7 +1615,7 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
             }
         }
     }
-    if (best < 0) {
+    if (best == ~(uint64_t)0) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     return true;

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import struct
 from collections.abc import Callable
 from typing import Any
 
@@ -82,6 +83,15 @@ def c_int(value: float) -> str:
     if number == -0x80000000:
         return "(-2147483647 - 1)"
     return f"({number})"
+
+
+def c_signed(value: int) -> str:
+    """A C literal of a signed value (no unsigned suffix), for int32_t tables and macros."""
+    if not -(2**31) <= value < 2**31:
+        raise ValueError(f"{value} is not an int32")
+    if value == -(2**31):
+        return "(-2147483647 - 1)"
+    return f"({value})" if value < 0 else str(value)
 
 
 def c_string(text: str) -> str:
@@ -184,6 +194,22 @@ def c_chars(text: str) -> str:
     return ", ".join(str(b) for b in text.encode("latin-1"))
 
 
+def float32(value: float) -> float:
+    """The float32 nearest to `value` (as C's double-to-float conversion)."""
+    result: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    return result
+
+
+def float_key(value: float) -> int:
+    """The integer that orders float32 values like the floats (ilahrs.c, float_key()): the bits of a
+    non-negative float, minus the magnitude bits of a negative one; -0.0 and 0.0 are both 0."""
+    bits: int = struct.unpack("<I", struct.pack("<f", value))[0]
+    if bits != struct.unpack("<I", struct.pack("<f", float32(value)))[0] or not math.isfinite(value):
+        raise ValueError(f"{value!r} is not a finite float32")
+    magnitude = bits & 0x7FFFFFFF
+    return -magnitude if bits & 0x80000000 else magnitude
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
     "c_int_type": c_int_type,
     "c_index_type": c_index_type,
@@ -201,4 +227,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "unit_suffix": unit_suffix,
     "shift_of": shift_of,
     "c_chars": c_chars,
+    "float32": float32,
+    "float_key": float_key,
+    "c_signed": c_signed,
 }

@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import calendar
+import math
+import struct
+from dataclasses import dataclass
+
 from generator.model import TIMER_EVENTS, Spec
 from generator.render import Output
 
@@ -26,7 +31,48 @@ GLOBALS = {
 PAHR_SATURATED = 0x0FFFFFFF
 
 
+@dataclass(frozen=True)
+class DateTables:
+    scale: int  # least common multiple of the term divisors
+    min_key: int  # float_key of the smallest date float a decoder accepts
+    max_key: int
+    exponent: int  # biased float32 exponent of the smallest
+
+
+def date_tables(spec: Spec) -> DateTables | None:
+    """What the C date code needs, after checking the assumptions it rests on: the decode rule it
+    implements, dates as integers below 2^24 once scaled, and float32(scaled / scale) equal to the
+    double-precision formula rounded to float32 for every date in range."""
+    d = spec.date
+    if d is None:
+        return None
+    if d.decode != "nearest_calendar_date":
+        raise ValueError(f"the C target does not implement date decode rule {d.decode!r}")
+    scale = math.lcm(*(term.divisor for term in d.terms))
+    parts = {"year": 0, "month": 1, "day": 2}
+    for year in range(d.year_min, d.year_max + 1):
+        for month in range(1, 13):
+            for day in range(1, calendar.monthrange(year, month)[1] + 1):
+                ymd = (year, month, day)
+                scaled = sum((ymd[parts[t.part]] + t.offset) * (scale // t.divisor) for t in d.terms)
+                formula = 0.0
+                for t in d.terms:
+                    formula += (ymd[parts[t.part]] + t.offset) / t.divisor
+                if not 0 < scaled < 2**24 or filters.float32(scaled / scale) != filters.float32(formula):
+                    raise ValueError(f"date {ymd}: the C encoder's exact float32 division does not apply")
+    low, high = float(d.year_min - 1), float(d.year_max + 2)
+    exponent = (struct.unpack("<I", struct.pack("<f", low))[0] >> 23) & 0xFF
+    top = (struct.unpack("<I", struct.pack("<f", high))[0] >> 23) & 0xFF
+    if not 127 <= exponent <= 150 or (2**24 * scale) << (top - exponent) >= 2**63 or top > 150:
+        raise ValueError("date floats outside what the C decoder's 64-bit integers hold")
+    return DateTables(scale, filters.float_key(low), filters.float_key(high), exponent)
+
+
 def outputs(spec: Spec) -> list[Output]:
+    if spec.byte_order != "little":
+        raise ValueError(f"the C target implements little-endian wire values, not {spec.byte_order!r}")
+    if spec.frame.checksum_algorithm != "sum16":
+        raise ValueError(f"the C target implements the sum16 checksum, not {spec.frame.checksum_algorithm!r}")
     t = tables.build_tables(spec)
     pahr_types = ("int32_t", "int32_t")
     if spec.nmea is not None:
@@ -48,6 +94,7 @@ def outputs(spec: Spec) -> list[Output]:
         "canon": tables.canonical_layout(spec),
         "max_response_payloads": max(1, *(len(c.response_payloads) for c in spec.commands)),
         "m": machine.build_machine(spec),
+        "date": date_tables(spec),
         "pahr_min_type": pahr_types[0],
         "pahr_max_type": pahr_types[1],
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
