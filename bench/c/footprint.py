@@ -9,9 +9,12 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
 - the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
   ilahrs_ack_build),
 - the parameter-block (payload) builder, ilahrs_payload_build_frame, with the field table,
-- a firmware core: the two above plus frame, command, payload and sentence decoding and
-  encoding (what a flight computer talking to the AHRS links),
-- the whole library (every public function, the host conveniences in double precision too).
+- the device state machine (ilahrs_transition_on, ilahrs_event_for_frame, ilahrs_state_timer),
+- what a firmware links: the stream decoder, the frame and command builders and payload parse and
+  build,
+- a firmware core: that plus frame, command and sentence decoding and sentence encoding,
+- the whole library without the host conveniences that take doubles (ilahrs_field_check,
+  ilahrs_pahr_from_array/from_values), and the whole library (every public function).
 
 Prints the code size (text: code and const tables) of each next to the targets, split into the
 library's own code and what newlib-nano/libgcc add, the decoder state size, and whether anything
@@ -31,10 +34,15 @@ STREAM = ["ilahrs_stream_init", "ilahrs_stream_next", "ilahrs_stream_push", "ila
           "ilahrs_stream_finish"]
 BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_ack_build"]
 BLOCKS = ["ilahrs_payload_build_frame"]
-CORE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_payload_parse",
-        "ilahrs_payload_build", "ilahrs_pahr_parse", "ilahrs_pahr_build", "ilahrs_error_kind_name"]
+FIRMWARE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_payload_parse", "ilahrs_payload_build"]
+CORE = [*FIRMWARE, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_pahr_parse", "ilahrs_pahr_build",
+        "ilahrs_error_kind_name"]
+MACHINE = ["ilahrs_transition_on", "ilahrs_event_for_frame", "ilahrs_state_timer"]
+# Host conveniences that take engineering values as doubles (soft-double on a Cortex-M4).
+DOUBLE_HELPERS = {"ilahrs_field_check", "ilahrs_pahr_from_array", "ilahrs_pahr_from_values"}
 TARGETS = {"stream decoder": 512, "sentence parser": None, "frame and command builders": None,
-           "payload builder": None, "firmware core": None, "whole library": 8 * 1024}
+           "payload builder": None, "state machine": None, "firmware": None, "firmware core": None,
+           "whole library without the double helpers": 8 * 1024, "whole library": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
 
@@ -117,7 +125,9 @@ def main() -> int:
     linked: dict[str, set[tuple[str, int]]] = {}
     own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
     groups = {"stream decoder": STREAM, "sentence parser": ["ilahrs_pahr_parse"],
-              "frame and command builders": BUILDERS, "payload builder": BLOCKS, "firmware core": CORE,
+              "frame and command builders": BUILDERS, "payload builder": BLOCKS, "state machine": MACHINE,
+              "firmware": FIRMWARE, "firmware core": CORE,
+              "whole library without the double helpers": [p for p in public if p not in DOUBLE_HELPERS],
               "whole library": public}
     for name, entries in groups.items():
         elf = out / (name.replace(" ", "_") + ".elf")

@@ -1555,10 +1555,36 @@ static int days_in_month(int year, int month)
  * Year + (Month - 1)/12 + Day/365, as a float. Scaled by DATE_SCALE, the least common multiple of the divisors, a date is an
  * integer below 2^24: exact in a float32, and decoding compares integers (E15).
  */
-#define DATE_SCALE 4380
+#define DATE_SCALE 4380u
 static int32_t date_scaled(int year, int month, int day)
 {
     return (year + (0)) * 4380 + (month + (-1)) * 365 + (day + (0)) * 12;
+}
+
+/* The float32 nearest n / DATE_SCALE (ties to even), in integers: the quotient's bits one at a
+ * time until it has 24, then rounded by the remainder. */
+static float date_float(uint32_t n)
+{
+    uint32_t m = n / DATE_SCALE;
+    uint32_t r = n % DATE_SCALE;
+    uint32_t exponent = 150u;
+    uint32_t bits;
+    float value;
+    while (m < 0x800000u) {
+        r <<= 1;
+        m <<= 1;
+        if (r >= DATE_SCALE) {
+            r -= DATE_SCALE;
+            m |= 1u;
+        }
+        exponent--;
+    }
+    if (2u * r > DATE_SCALE || (2u * r == DATE_SCALE && (m & 1u) != 0)) {
+        m++; /* 2^24 carries into the exponent, as it should */
+    }
+    bits = (exponent << 23) + m - 0x800000u;
+    memcpy(&value, &bits, sizeof value);
+    return value;
 }
 
 bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error_t *err)
@@ -1567,9 +1593,8 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
         || day > days_in_month(year, month)) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
-    /* Both operands are exact float32 values, so the quotient is the float32 nearest the date:
-     * the generator checked that it equals the double-precision formula rounded to float32. */
-    *value = (float)date_scaled(year, month, day) / (float)DATE_SCALE;
+    /* The generator checked that this equals the double-precision formula rounded to float32. */
+    *value = date_float((uint32_t)date_scaled(year, month, day));
     return true;
 }
 

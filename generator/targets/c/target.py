@@ -39,6 +39,21 @@ class DateTables:
     exponent: int  # biased float32 exponent of the smallest
 
 
+def nearest_float32(n: int, scale: int) -> float:
+    """The float32 nearest n / scale, ties to even, as ilahrs.c (date_float()) computes it."""
+    m, r = divmod(n, scale)
+    exponent = 150
+    while m < 0x800000:
+        r, m, exponent = 2 * r, 2 * m, exponent - 1
+        if r >= scale:
+            r, m = r - scale, m | 1
+    if 2 * r > scale or (2 * r == scale and m & 1):
+        m += 1
+    bits = (exponent << 23) + m - 0x800000
+    value: float = struct.unpack("<f", struct.pack("<I", bits))[0]
+    return value
+
+
 def date_tables(spec: Spec) -> DateTables | None:
     """What the C date code needs, after checking the assumptions it rests on: the decode rule it
     implements, dates as integers below 2^24 once scaled, and float32(scaled / scale) equal to the
@@ -58,7 +73,7 @@ def date_tables(spec: Spec) -> DateTables | None:
                 formula = 0.0
                 for t in d.terms:
                     formula += (ymd[parts[t.part]] + t.offset) / t.divisor
-                if not 0 < scaled < 2**24 or filters.float32(scaled / scale) != filters.float32(formula):
+                if not 0 < scaled < 2**24 or nearest_float32(scaled, scale) != filters.float32(formula):
                     raise ValueError(f"date {ymd}: the C encoder's exact float32 division does not apply")
     low, high = float(d.year_min - 1), float(d.year_max + 2)
     exponent = (struct.unpack("<I", struct.pack("<f", low))[0] >> 23) & 0xFF
