@@ -2903,7 +2903,7 @@ bool ilahrs_transition_on(ilahrs_state_t state, ilahrs_event_t event, const ilah
 bool ilahrs_firmware_parse(const char *text, size_t len, ilahrs_firmware_t *firmware, ilahrs_error_t *err)
 {
     size_t i = 0;
-    memset(firmware, 0, sizeof *firmware);
+    zero_bytes(firmware, sizeof *firmware);
     for (;;) {
         size_t start = i;
         uint32_t part = 0;
