@@ -28,6 +28,8 @@ CHECK_TARGETS :=
 BUILD_TARGETS :=
 LINT_TARGETS :=
 TEST_TARGETS :=
+# Runs after every other test: the repository's pytest suite, whose summary closes the log.
+FINAL_TEST_TARGETS :=
 BENCH_TARGETS :=
 FOOTPRINT_TARGETS :=
 FUZZ_TARGETS :=
@@ -60,7 +62,7 @@ check: setup
 	$(PY) -m generator --check
 	$(MAKE) --no-print-directory lint $(CHECK_TARGETS)
 
-test: setup build check conformance $(TEST_TARGETS)
+test: setup build check conformance $(TEST_TARGETS) $(FINAL_TEST_TARGETS)
 
 bench: setup build $(BENCH_TARGETS)
 

@@ -25,4 +25,4 @@ test-python: setup
 	$(PY) -m pytest tests
 
 LINT_TARGETS += lint-python
-TEST_TARGETS += test-python
+FINAL_TEST_TARGETS += test-python
