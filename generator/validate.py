@@ -149,10 +149,7 @@ def validate(spec: LoadedSpec) -> None:
     _unique(
         spec,
         variants["list"],
-        (
-            "variants",
-            "list",
-        ),
+        ("variants", "list"),
         "name",
         "variant",
     )
@@ -165,28 +162,8 @@ def validate(spec: LoadedSpec) -> None:
 
     enums = d.get("enums", {})
     for name, e in enums.items():
-        _unique(
-            spec,
-            e["values"],
-            (
-                "enums",
-                name,
-                "values",
-            ),
-            "name",
-            "enum value name",
-        )
-        _unique(
-            spec,
-            e["values"],
-            (
-                "enums",
-                name,
-                "values",
-            ),
-            "value",
-            "enum value",
-        )
+        for key, what in (("name", "enum value name"), ("value", "enum value")):
+            _unique(spec, e["values"], ("enums", name, "values"), key, what)
 
     ctx: dict[str, Any] = {
         "units": set(d.get("units", {})),
@@ -204,10 +181,7 @@ def validate(spec: LoadedSpec) -> None:
     _unique(
         spec,
         frame["fields"],
-        (
-            "frame",
-            "fields",
-        ),
+        ("frame", "fields"),
         "name",
         "frame field",
     )
@@ -220,20 +194,14 @@ def validate(spec: LoadedSpec) -> None:
     _unique(
         spec,
         frame["message_types"],
-        (
-            "frame",
-            "message_types",
-        ),
+        ("frame", "message_types"),
         "value",
         "message type value",
     )
     _unique(
         spec,
         frame["message_types"],
-        (
-            "frame",
-            "message_types",
-        ),
+        ("frame", "message_types"),
         "name",
         "message type name",
     )
@@ -252,11 +220,7 @@ def validate(spec: LoadedSpec) -> None:
         _unique(
             spec,
             p["fields"],
-            (
-                "payloads",
-                i,
-                "fields",
-            ),
+            ("payloads", i, "fields"),
             "name",
             f"field in payload {p['name']!r}:",
         )
@@ -344,20 +308,14 @@ def validate(spec: LoadedSpec) -> None:
         _unique(
             spec,
             sw["flags"],
-            (
-                "status_word",
-                "flags",
-            ),
+            ("status_word", "flags"),
             "bit",
             "status bit",
         )
         _unique(
             spec,
             sw["flags"],
-            (
-                "status_word",
-                "flags",
-            ),
+            ("status_word", "flags"),
             "name",
             "status flag",
         )
@@ -380,11 +338,7 @@ def validate(spec: LoadedSpec) -> None:
         _unique(
             spec,
             sw["mode"]["values"],
-            (
-                "status_word",
-                "mode",
-                "values",
-            ),
+            ("status_word", "mode", "values"),
             "name",
             "status mode",
         )
@@ -395,10 +349,7 @@ def validate(spec: LoadedSpec) -> None:
         _unique(
             spec,
             nmea["fields"],
-            (
-                "nmea",
-                "fields",
-            ),
+            ("nmea", "fields"),
             "name",
             "sentence field",
         )
