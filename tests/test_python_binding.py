@@ -197,6 +197,19 @@ def test_engineering_values_and_variants() -> None:
     assert bit.utermo100_degc == -40.0
 
 
+def test_parameter_read_modify_write_as_the_readme_shows() -> None:
+    read = ilahrs.AhrsParametersRead(
+        update_rate=100, alignment_time=30, latitude=38.9, date=f32(2014.2), device_id="ID"
+    )
+    params = ilahrs.AhrsParametersRead.parse(read.build())
+    shared = {f.name for f in ilahrs.AhrsParametersLoad.FIELDS} - {"reserved"}
+    block = ilahrs.AhrsParametersLoad.from_raw(
+        {k: v for k, v in params.raw().items() if k in shared} | {"update_rate": 50}
+    )
+    assert (block.update_rate, block.alignment_time, block.date) == (50, 30, params.date)
+    assert block.reserved == bytes(14)
+
+
 def test_unit_status_word() -> None:
     usw = ilahrs.UnitStatusWord(0x8181)
     assert usw.mode == ilahrs.UswMode.SLEEP
