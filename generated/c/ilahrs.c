@@ -520,16 +520,6 @@ static const int32_t ilahrs_float_bounds[8][2] = {
     { (-1135869952), 1135869952 }, /* (-360.0f) .. 360.0f */
 };
 
-static const double ilahrs_exact_bounds[8][2] = {
-    { 0.0, 0.0 },
-    { (-3.4028234663852886e+38), 3.4028234663852886e+38 },
-    { 0.0, 360.0 },
-    { (-180.0), 180.0 },
-    { (-90.0), 90.0 },
-    { (-20000.0), 100000.0 },
-    { 1900.002685546875, 2200.001708984375 },
-    { (-360.0), 360.0 },
-};
 
 /* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
 static const struct {
@@ -1387,35 +1377,6 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
     return true;
 }
 
-bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
-{
-    bool ok;
-    double low = 0.0;
-    double high = 0.0;
-    switch (TYPE_KIND(field->type)) {
-    case ILAHRS_KIND_FLOAT:
-        low = ilahrs_exact_bounds[field->bounds][0];
-        high = ilahrs_exact_bounds[field->bounds][1];
-        break;
-    case ILAHRS_KIND_UNSIGNED:
-    case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED))) - 1u);
-        low = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][0]
-                                 : TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
-        high = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][1] : (double)top;
-        break;
-    }
-    default:
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
-    }
-    ok = value >= low && value <= high;
-    if (ok && TYPE_ENCODING(field->type) == ENCODING_DECLINATION) {
-        ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
-          || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
-    }
-    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
-}
-
 bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier, int32_t *divisor)
 {
     int32_t d;
@@ -2115,6 +2076,49 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     return at;
 }
 
+
+/* ---- Engineering values as doubles ------------------------------------------------------ */
+
+static const double ilahrs_exact_bounds[8][2] = {
+    { 0.0, 0.0 },
+    { (-3.4028234663852886e+38), 3.4028234663852886e+38 },
+    { 0.0, 360.0 },
+    { (-180.0), 180.0 },
+    { (-90.0), 90.0 },
+    { (-20000.0), 100000.0 },
+    { 1900.002685546875, 2200.001708984375 },
+    { (-360.0), 360.0 },
+};
+
+bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
+{
+    bool ok;
+    double low = 0.0;
+    double high = 0.0;
+    switch (TYPE_KIND(field->type)) {
+    case ILAHRS_KIND_FLOAT:
+        low = ilahrs_exact_bounds[field->bounds][0];
+        high = ilahrs_exact_bounds[field->bounds][1];
+        break;
+    case ILAHRS_KIND_UNSIGNED:
+    case ILAHRS_KIND_SIGNED: {
+        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED))) - 1u);
+        low = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][0]
+                                 : TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
+        high = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][1] : (double)top;
+        break;
+    }
+    default:
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+    }
+    ok = value >= low && value <= high;
+    if (ok && TYPE_ENCODING(field->type) == ENCODING_DECLINATION) {
+        ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
+          || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
+    }
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+}
+
 /* value * divisor rounded half away from zero, saturated far beyond every range. */
 static int64_t pahr_round(double scaled)
 {
@@ -2164,7 +2168,6 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
     values[5] = (double)usw;
     return ilahrs_pahr_from_array(values, out, err);
 }
-
 /* ---- Stream decoder ------------------------------------------------------------------- */
 
 
