@@ -1730,57 +1730,52 @@ static uint8_t xor_bytes(const uint8_t *p, size_t n)
     return x;
 }
 
-/* m * base + digit, held at SATURATED: above every range, and m * 16 + 15 cannot overflow from
- * there. So any number of digits reads without a wider type or a division. */
-#define SATURATED 0x0FFFFFFFu
-
-static uint32_t pahr_accumulate(uint32_t m, unsigned base, unsigned digit)
-{
-    m = m * base + digit;
-    return m > SATURATED ? SATURATED : m;
-}
+/* Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
+ * it, so any number of digits reads without a wider type or a division. */
+#define SATURATED 0x01000000u
 
 /*
- * Field k at p[*at], in one pass: its grammar, its value scaled to an integer, its range. Returns
- * ILAHRS_OK with the value stored in *out, ILAHRS_ERR_MALFORMED or ILAHRS_ERR_OUT_OF_RANGE, and
- * leaves *at on the separator or the star that ends the field (p[star] is '*', which ends every
- * field).
+ * The field at *at, described by f, in one pass: its grammar, its value scaled to an integer, its
+ * range. Returns ILAHRS_OK with the value stored in *out, ILAHRS_ERR_MALFORMED (also when the
+ * number is not followed by a separator or by the star, star being the sentence's "*") or
+ * ILAHRS_ERR_OUT_OF_RANGE, and leaves *at where the number ends.
  */
-static ilahrs_error_kind_t pahr_field(const uint8_t *p, size_t *at, size_t star, size_t k, ilahrs_pahr_t *out)
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f, ilahrs_pahr_t *out)
 {
-    const pahr_field_t *f = &ilahrs_pahr_fields[k];
-    size_t i = *at;
+    const uint8_t *q = *at;
     unsigned base = f->hex ? 16u : 10u;
     unsigned digits = 0; /* before the point */
     unsigned fraction = 0;
     bool point = false;
-    bool negative = base == 10u && p[i] == '-';
-    bool ok;
+    bool negative = !f->hex && *q == '-';
     uint32_t m = 0;
     int32_t value;
-    for (i += negative;; i++) {
-        unsigned d = digit_value(p[i]);
+    for (q += negative;; q++) {
+        unsigned d = digit_value(*q);
         if (d < base) {
-            m = pahr_accumulate(m, base, d);
-            fraction += point;
-            digits += !point;
-        } else if (p[i] == '.' && base == 10u && !point) {
-            point = true;
+            if (m < SATURATED) {
+                m = m * base + d;
+            }
+            if (point) {
+                fraction++;
+            } else {
+                digits++;
+            }
+        } else if (*q == '.' && !point) {
+            point = true; /* in a hex field, a point is followed by a fraction it cannot have */
         } else {
             break;
         }
     }
-    ok = digits > 0 && (base == 16u ? digits <= f->width
-                                    : !point || (fraction >= 1 && fraction <= f->decimals));
-    for (; i < star && p[i] != PAHR_SEPARATOR; i++) {
-        ok = false;
-    }
-    *at = i;
-    if (!ok) {
+    *at = q;
+    if (digits == 0 || (f->hex && digits > f->width) || (point && (fraction == 0 || fraction > f->decimals))
+        || (q != star && *q != PAHR_SEPARATOR)) {
         return ILAHRS_ERR_MALFORMED;
     }
     for (; fraction < f->decimals; fraction++) {
-        m = pahr_accumulate(m, 10u, 0);
+        if (m < SATURATED) {
+            m *= 10u;
+        }
     }
     value = negative ? -(int32_t)m : (int32_t)m;
     if (value < f->min || value > f->max) {
@@ -1904,15 +1899,13 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
 #endif
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     for (;;) {
-        size_t start = i;
+        const uint8_t *q = p + i;
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
-            field_error = pahr_field(p, &i, star, k, out);
-            error_at = start;
+            field_error = pahr_field(&q, p + star, &ilahrs_pahr_fields[k], out);
+            error_at = i;
             error_field = k;
-        } else {
-            while (i < star && p[i] != PAHR_SEPARATOR) {
-                i++;
-            }
+        }
+        for (i = (size_t)(q - p); i < star && p[i] != PAHR_SEPARATOR; i++) {
         }
         k++;
         if (i >= star) {
@@ -2174,10 +2167,6 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
 #define NEED_MORE (-1)
 #define INVALID 0
 
-static bool may_start(uint8_t byte)
-{
-    return byte == ILAHRS_FRAME_HEADER_0 || byte == PAHR_START;
-}
 
 /* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or
  * NEED_MORE bytes to decide. */
@@ -2223,6 +2212,59 @@ static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *
     }
 }
 
+
+#if ILAHRS_OPTIMIZE_SIZE
+/*
+ * The sentence p[0..n) whose prefix matched, n its length through its first LF (n > the prefix
+ * length), with its fields in *out: exactly what ilahrs_pahr_parse() accepts, decided without
+ * naming the error.
+ */
+static bool pahr_valid(const uint8_t *p, size_t n, ilahrs_pahr_t *out)
+{
+    const uint8_t *star = p + n - PAHR_TAIL; /* within p: n > PAHR_PREFIX_LENGTH >= PAHR_TAIL */
+    const pahr_field_t *f = ilahrs_pahr_fields;
+    const uint8_t *q = p + PAHR_PREFIX_LENGTH;
+    if (star < q || star[PAHR_TAIL - 2] != PAHR_CR || *star != PAHR_STAR
+        || xor_bytes(p + 1, (size_t)(star - p) - 1) != digit_value(star[1]) * 16u + digit_value(star[2])) {
+        return false;
+    }
+    for (;; q++, f++) {
+        if (pahr_field(&q, star, f, out) != ILAHRS_OK) {
+            return false;
+        }
+        if (f == &ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT - 1] || q == star) {
+            return f == &ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT - 1] && q == star;
+        }
+    }
+}
+
+/* The sentence at p[0..n): as frame_candidate(). It runs to the first LF within the longest
+ * sentence. */
+static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
+    size_t i;
+    for (i = 0; i < n && i < ILAHRS_PAHR_MAX_LENGTH; i++) {
+        if (i < PAHR_PREFIX_LENGTH && p[i] != (uint8_t)PAHR_PREFIX[i]) {
+            return INVALID;
+        }
+        if (p[i] == PAHR_LF) {
+            if (!pahr_valid(p, i + 1, &msg->sentence)) {
+                return INVALID;
+            }
+            msg->kind = ILAHRS_MESSAGE_SENTENCE;
+            msg->data = p;
+            msg->size = i + 1;
+            return (int)(i + 1);
+        }
+    }
+    return i == ILAHRS_PAHR_MAX_LENGTH ? INVALID : NEED_MORE;
+}
+#else
+static bool may_start(uint8_t byte)
+{
+    return byte == ILAHRS_FRAME_HEADER_0 || byte == PAHR_START;
+}
+
 /* True if p[0..n) is the start of the sentence prefix. */
 static bool pahr_prefix(const uint8_t *p, size_t n)
 {
@@ -2235,55 +2277,6 @@ static bool pahr_prefix(const uint8_t *p, size_t n)
     return true;
 }
 
-#if ILAHRS_OPTIMIZE_SIZE
-/*
- * The sentence p[0..n), n its length through CR LF (p[n - 1] is the first LF), with its fields in
- * *out: exactly what ilahrs_pahr_parse() accepts, decided in one pass without naming the error.
- */
-static bool pahr_valid(const uint8_t *p, size_t n, ilahrs_pahr_t *out)
-{
-    size_t star = n - PAHR_TAIL;
-    size_t i = PAHR_PREFIX_LENGTH;
-    size_t k = 0;
-    if (n < PAHR_PREFIX_LENGTH + PAHR_TAIL || p[n - 2] != PAHR_CR || p[star] != PAHR_STAR
-        || xor_bytes(p + 1, star - 1) != digit_value(p[star + 1]) * 16u + digit_value(p[star + 2])) {
-        return false;
-    }
-    for (;; i++) {
-        if (pahr_field(p, &i, star, k, out) != ILAHRS_OK) {
-            return false;
-        }
-        if (++k == ILAHRS_PAHR_FIELD_COUNT) {
-            return i == star;
-        }
-        if (i == star) {
-            return false;
-        }
-    }
-}
-
-/* The sentence at p[0..n): as frame_candidate(). It runs to the first LF within the longest
- * sentence. */
-static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
-{
-    size_t i;
-    if (!pahr_prefix(p, n < PAHR_PREFIX_LENGTH ? n : PAHR_PREFIX_LENGTH)) {
-        return INVALID;
-    }
-    for (i = 0; i < n && i < ILAHRS_PAHR_MAX_LENGTH; i++) {
-        if (p[i] == PAHR_LF) {
-            if (!pahr_valid(p, i + 1, &msg->sentence)) {
-                return INVALID;
-            }
-            msg->kind = ILAHRS_MESSAGE_SENTENCE;
-            msg->data = p;
-            msg->size = i + 1;
-            return (int)(i + 1);
-        }
-    }
-    return n >= ILAHRS_PAHR_MAX_LENGTH ? INVALID : NEED_MORE;
-}
-#else
 /* The sentence at p[0..n) (p[0] is "$"): as frame_candidate(). */
 static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
@@ -2350,6 +2343,75 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
     stream->count = 0;
 }
 
+#if ILAHRS_OPTIMIZE_SIZE
+/*
+ * The smallest decoder: every byte goes through the held buffer, and the candidate at its front
+ * is decided again after each byte. A message is handed out from the buffer; `start` marks its
+ * end until the next call. Each round takes one byte of *data / *len, if any, then decides; so
+ * ilahrs_stream_push() always takes its byte. (Taking a byte before deciding on the bytes held
+ * after a message changes no answer: a decided candidate stays decided when bytes follow it.)
+ * `final`: the input has ended, so a candidate that needs more bytes is discarded.
+ */
+static bool step(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool final, ilahrs_message_t *msg)
+{
+    uint8_t *h = s->held;
+    size_t count = s->count;
+    copy_forward(h, h + s->start, count);
+    s->start = 0;
+    for (;;) {
+        bool took = *len != 0;
+        if (took) {
+            /* In bounds: a candidate that waits is shorter than the longest message, and the
+             * bytes held after a message are fewer still. */
+            h[count++] = **data;
+            (*data)++;
+            (*len)--;
+        }
+        while (count != 0) {
+            int r = candidate(h, count, msg);
+            if (r > 0) {
+                s->start = (uint8_t)r;
+                s->count = (uint8_t)(count - (size_t)r);
+                return true;
+            }
+            if (r == NEED_MORE && !final) {
+                break;
+            }
+            s->discarded++;
+            count--;
+            copy_forward(h, h + 1, count);
+        }
+        if (!took) {
+            s->count = (uint8_t)count;
+            return false;
+        }
+    }
+}
+
+bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
+{
+    return step(s, data, len, false, msg);
+}
+
+bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+{
+    const uint8_t *p = &byte;
+    size_t one = 1;
+    return step(s, &p, &one, false, msg);
+}
+
+bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    size_t none = 0;
+    return step(s, NULL, &none, false, msg);
+}
+
+bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    size_t none = 0;
+    return step(s, NULL, &none, true, msg);
+}
+#else
 /*
  * With start 0 and bytes held, the candidate at held[0] was examined and waits for more bytes
  * (after a message, start is its end until the next call). True if `byte` cannot decide it: a
@@ -2366,81 +2428,6 @@ static bool still_waiting(const ilahrs_stream_t *s, uint8_t byte)
     return n >= PAHR_PREFIX_LENGTH && n + 1 < ILAHRS_PAHR_MAX_LENGTH && byte != PAHR_LF;
 }
 
-#if ILAHRS_OPTIMIZE_SIZE
-/*
- * The smallest decoder: every byte goes into the held buffer (ilahrs_stream_push()), and the
- * candidate at its front is decided again when a byte can change the answer. A message is handed
- * out from the buffer; `start` marks its end until the next call.
- */
-static bool decide(ilahrs_stream_t *s, bool final, ilahrs_message_t *msg)
-{
-    uint8_t *h = s->held;
-    copy_forward(h, h + s->start, s->count);
-    s->start = 0;
-    while (s->count != 0) {
-        int r = candidate(h, s->count, msg);
-        if (r > 0) {
-            s->start = (uint8_t)r;
-            s->count = (uint8_t)(s->count - r);
-            return true;
-        }
-        if (r == NEED_MORE && !final) {
-            return false;
-        }
-        s->discarded++;
-        s->count--;
-        copy_forward(h, h + 1, s->count);
-    }
-    return false;
-}
-
-bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
-{
-    if (s->count == 0) {
-        s->start = 0;
-        if (!may_start(byte)) {
-            s->discarded++;
-            return false;
-        }
-    } else if (s->start == 0 && still_waiting(s, byte)) {
-        s->held[s->count++] = byte;
-        return false;
-    }
-    s->held[s->start + s->count] = byte; /* in bounds: a held byte is never the longest message's last */
-    s->count++;
-    return decide(s, false, msg);
-}
-
-bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
-{
-    return s->count != 0 && decide(s, false, msg);
-}
-
-bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
-{
-    if (ilahrs_stream_poll(s, msg)) {
-        return true;
-    }
-    while (*len != 0) {
-        uint8_t byte = **data;
-        (*data)++;
-        (*len)--;
-        if (ilahrs_stream_push(s, byte, msg)) {
-            return true;
-        }
-    }
-    return false;
-}
-
-bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
-{
-    if (decide(s, true, msg)) {
-        return true;
-    }
-    s->count = 0;
-    return false;
-}
-#else
 /*
  * Decide on the held bytes, topping them up from the input. True with a message; false when
  * the held bytes are gone (input may remain) or wait for more input (all input taken).

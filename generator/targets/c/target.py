@@ -28,7 +28,7 @@ GLOBALS = {
 
 
 # The $PAHR field reader saturates magnitudes here (ilahrs.c, SATURATED): every range must lie below.
-PAHR_SATURATED = 0x0FFFFFFF
+PAHR_SATURATED = 0x01000000
 
 
 @dataclass(frozen=True)
@@ -112,6 +112,7 @@ def outputs(spec: Spec) -> list[Output]:
         "date": date_tables(spec),
         "pahr_min_type": pahr_types[0],
         "pahr_max_type": pahr_types[1],
+        "pahr_saturated": PAHR_SATURATED,
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
