@@ -1980,83 +1980,58 @@ static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
     return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
 }
 
-/* Write `value` in `base` with at least `width` digits at out[*at], within `cap`. */
-static bool put_digits(uint8_t *out, size_t cap, size_t *at, uint32_t value, uint32_t base, size_t width)
-{
-    static const char digits[] = "0123456789ABCDEF";
-    uint8_t tmp[10];
-    size_t n = 0;
-    do {
-        tmp[n++] = (uint8_t)digits[value % base];
-        value /= base;
-    } while (value != 0 && n < sizeof tmp);
-    while (n < width && n < sizeof tmp) {
-        tmp[n++] = '0';
-    }
-    if (*at + n > cap) {
-        return false;
-    }
-    while (n > 0) {
-        out[(*at)++] = tmp[--n];
-    }
-    return true;
-}
+static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7', '8', '9', 'A', 'B', 'C', 'D', 'E', 'F' };
 
+/*
+ * Every field is range-checked before it is written, and the longest sentence of in-range values
+ * is 48 characters (the generator checks it is at most ILAHRS_PAHR_MAX_LENGTH), so
+ * the sentence is built without length checks. Each number is written from its last digit: at
+ * least the template width (the sign counting as one character) and all its digits.
+ */
 size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs_error_t *err)
 {
     uint8_t buf[ILAHRS_PAHR_MAX_LENGTH];
-    size_t at;
+    size_t at = PAHR_PREFIX_LENGTH;
     size_t k;
-    size_t i;
     uint8_t sum = 0;
-    bool fits = true;
+    copy_forward(buf, (const uint8_t *)PAHR_PREFIX, PAHR_PREFIX_LENGTH);
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        const pahr_field_t *f = &ilahrs_pahr_fields[k];
         int32_t value = pahr_get(in, k);
-        if (value < ilahrs_pahr_fields[k].min || value > ilahrs_pahr_fields[k].max) {
-            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
-        }
-    }
-    memcpy(buf, PAHR_PREFIX, PAHR_PREFIX_LENGTH);
-    at = PAHR_PREFIX_LENGTH;
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT && fits; k++) {
-        int32_t value = pahr_get(in, k);
-        uint32_t magnitude = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
-        size_t width = ilahrs_pahr_fields[k].width;
-        if (k > 0) {
-            fits = at < sizeof buf;
-            if (fits) {
-                buf[at++] = PAHR_SEPARATOR;
-            }
-        }
-        if (ilahrs_pahr_fields[k].hex) {
-            fits = fits && put_digits(buf, sizeof buf, &at, magnitude, 16, width);
-            continue;
+        uint32_t m = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
+        unsigned base = f->hex ? 16u : 10u;
+        unsigned n = f->width > 1u ? f->width : 1u; /* digits before the point, at least */
+        unsigned i;
+        uint32_t rest;
+        uint8_t *w;
+        if (value < f->min || value > f->max) {
+            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(f->name));
         }
         if (value < 0) {
-            fits = fits && at < sizeof buf;
-            if (fits) {
-                buf[at++] = '-';
-            }
-            width = width > 0 ? width - 1 : 0;
+            buf[at++] = '-';
+            n -= n > 1u;
         }
-        fits = fits && put_digits(buf, sizeof buf, &at, magnitude / pahr_divisor(k), 10, width);
-        if (ilahrs_pahr_fields[k].decimals > 0) {
-            fits = fits && at < sizeof buf;
-            if (fits) {
-                buf[at++] = '.';
-            }
-            fits = fits && put_digits(buf, sizeof buf, &at, magnitude % pahr_divisor(k), 10,
-                                      ilahrs_pahr_fields[k].decimals);
+        n += f->decimals;
+        for (i = 1, rest = m / base; rest != 0; rest /= base) {
+            i++; /* digits of m */
         }
+        n = i > n ? i : n;
+        at += n + (f->decimals != 0);
+        w = buf + at;
+        for (i = 0; i < n; i++) {
+            if (i == f->decimals && i != 0) {
+                *--w = '.';
+            }
+            *--w = (uint8_t)ilahrs_hex_digits[m % base];
+            m /= base;
+        }
+        buf[at++] = k + 1 < ILAHRS_PAHR_FIELD_COUNT ? PAHR_SEPARATOR : PAHR_STAR;
     }
-    for (i = 1; i < at; i++) {
-        sum ^= buf[i];
+    for (k = 1; k + 1 < at; k++) {
+        sum ^= buf[k];
     }
-    if (!fits || at + PAHR_TAIL > sizeof buf) {
-        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NULL);
-    }
-    buf[at++] = PAHR_STAR;
-    (void)put_digits(buf, sizeof buf, &at, sum, 16, 2);
+    buf[at++] = (uint8_t)ilahrs_hex_digits[sum >> 4];
+    buf[at++] = (uint8_t)ilahrs_hex_digits[sum & 0xFu];
     buf[at++] = PAHR_CR;
     buf[at++] = PAHR_LF;
     if (text == NULL || cap < at) {

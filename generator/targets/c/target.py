@@ -7,7 +7,7 @@ import math
 import struct
 from dataclasses import dataclass
 
-from generator.model import TIMER_EVENTS, Spec
+from generator.model import TIMER_EVENTS, Nmea, Spec
 from generator.render import Output
 
 from . import filters, machine, tables
@@ -83,6 +83,24 @@ def date_tables(spec: Spec) -> DateTables | None:
     return DateTables(scale, filters.float_key(low), filters.float_key(high), exponent)
 
 
+def longest_sentence(nmea: Nmea) -> int:
+    """Characters of the longest sentence ilahrs_pahr_build() writes for in-range values: a field
+    is longest at one end of its range (the sign counts within the template width)."""
+    total = len(nmea.identifier) + 2 + len(nmea.fields) - 1 + 5  # "$ID,", separators, "*hh" CR LF
+    for f in nmea.fields:
+        longest = 0
+        for value in (f.min, f.max):
+            sign = 1 if value < 0 else 0
+            if f.format == "hex":
+                chars = max(f.width, len(f"{abs(value):X}"))
+            else:
+                whole = len(str(abs(value) // f.divisor))
+                chars = max(f.width - sign, 1, whole) + f.decimals + (1 if f.decimals else 0)
+            longest = max(longest, sign + chars)
+        total += longest
+    return total
+
+
 def outputs(spec: Spec) -> list[Output]:
     if spec.byte_order != "little":
         raise ValueError(f"the C target implements little-endian wire values, not {spec.byte_order!r}")
@@ -90,12 +108,17 @@ def outputs(spec: Spec) -> list[Output]:
         raise ValueError(f"the C target implements the sum16 checksum, not {spec.frame.checksum_algorithm!r}")
     t = tables.build_tables(spec)
     pahr_types = ("int32_t", "int32_t")
+    pahr_longest = 0
     if spec.nmea is not None:
         lows = [f.min for f in spec.nmea.fields]
         highs = [f.max for f in spec.nmea.fields]
         if max(abs(v) for v in lows + highs) >= PAHR_SATURATED:
             raise ValueError("a $PAHR range reaches the C reader's saturation value")
         pahr_types = (filters.c_int_type(min(lows), max(lows)), filters.c_int_type(min(highs), max(highs)))
+        pahr_longest = longest_sentence(spec.nmea)
+        if pahr_longest > spec.nmea.max_length:
+            raise ValueError(f"an in-range $PAHR sentence can be {pahr_longest} characters, above the maximum "
+                             f"{spec.nmea.max_length}: the C builder writes without length checks")
     usw_flags = 0
     if spec.status_word is not None:
         for flag in spec.status_word.flags:
@@ -113,6 +136,7 @@ def outputs(spec: Spec) -> list[Output]:
         "pahr_min_type": pahr_types[0],
         "pahr_max_type": pahr_types[1],
         "pahr_saturated": PAHR_SATURATED,
+        "pahr_longest": pahr_longest,
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
