@@ -49,10 +49,7 @@ static const char ilahrs_frame_names[61] =
     "message_length\000"
     "checksum";
 
-static const char ilahrs_field_names[738] =
-    "heading\000"
-    "pitch\000"
-    "roll\000"
+static const char ilahrs_field_names[662] =
     "ugyro_x\000"
     "ugyro_y\000"
     "ugyro_z\000"
@@ -70,15 +67,6 @@ static const char ilahrs_field_names[738] =
     "lk1\000"
     "lk2\000"
     "lk3\000"
-    "gyro_x\000"
-    "gyro_y\000"
-    "gyro_z\000"
-    "acc_x\000"
-    "acc_y\000"
-    "acc_z\000"
-    "mag_x\000"
-    "mag_y\000"
-    "mag_z\000"
     "gyro_bias_x\000"
     "gyro_bias_y\000"
     "gyro_bias_z\000"
@@ -217,13 +205,10 @@ static const char ilahrs_flag_names[272] =
     "large_magnetic_field\000"
     "temperature_out_of_range";
 
-static const char ilahrs_state_names[282] =
+static const char ilahrs_state_names[240] =
     "idle\000"
-    "awaiting_parameters\000"
     "aligning_continuous\000"
-    "continuous\000"
     "aligning_on_request\000"
-    "on_request\000"
     "sleep\000"
     "calibration_awaiting_parameters\000"
     "calibration_aligning\000"
@@ -548,150 +533,150 @@ static const struct {
  * member, kind and encoding, bounds, scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { 0, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 8, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 14, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 19, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
-    { 27, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
-    { 35, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
-    { 43, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
-    { 50, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
-    { 57, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
-    { 64, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
-    { 71, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
-    { 78, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
-    { 85, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 94, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 98, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 102, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
+    { 234, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 263, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 250, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 0, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
+    { 8, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
+    { 16, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
+    { 24, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
+    { 31, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
+    { 38, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
+    { 45, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
+    { 52, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
+    { 59, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
+    { 66, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 75, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 79, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 83, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { 0, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 8, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 14, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 109, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
-    { 113, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
-    { 117, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
-    { 121, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
-    { 85, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 94, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 98, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 102, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 234, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 263, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 250, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 90, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
+    { 94, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
+    { 98, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
+    { 102, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
+    { 66, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 75, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 79, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 83, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { 0, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 8, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 14, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 125, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
-    { 132, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
-    { 139, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
-    { 146, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
-    { 152, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
-    { 158, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
-    { 164, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
-    { 170, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
-    { 176, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
-    { 85, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 94, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 98, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 102, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { 234, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
+    { 263, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
+    { 250, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
+    { 1, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
+    { 9, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
+    { 17, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
+    { 25, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
+    { 32, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
+    { 39, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
+    { 46, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
+    { 53, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
+    { 60, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
+    { 66, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 75, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 79, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
+    { 83, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { 182, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
-    { 194, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
-    { 206, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
-    { 218, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
-    { 232, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
-    { 246, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
-    { 260, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
-    { 274, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
-    { 288, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
-    { 302, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
-    { 318, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
-    { 331, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
-    { 94, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 106, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
+    { 118, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
+    { 130, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
+    { 142, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
+    { 156, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
+    { 170, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
+    { 184, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
+    { 198, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
+    { 212, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
+    { 226, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
+    { 242, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
+    { 255, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
+    { 75, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { 345, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 357, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 372, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 384, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 393, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 403, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 412, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 417, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 436, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 455, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 85, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 269, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 281, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 296, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 308, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 317, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 327, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 336, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 341, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 360, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 379, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 66, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { 345, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 357, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 372, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 384, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 393, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 403, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 412, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 417, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 436, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 455, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 474, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
-    { 85, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 269, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
+    { 281, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
+    { 296, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
+    { 308, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 317, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 327, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 336, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 341, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
+    { 360, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
+    { 379, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
+    { 398, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
+    { 66, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { 484, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
+    { 408, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
     /* bit_result (Table 6.12) */
-    { 492, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
-    { 94, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 416, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
+    { 75, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { 502, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
-    { 520, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
-    { 384, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 393, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 403, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 412, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { 426, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
+    { 444, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
+    { 308, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
+    { 317, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
+    { 327, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
+    { 336, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
     /* calibration_result (Table 6.14) */
-    { 538, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
-    { 555, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 565, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 575, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 583, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 591, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 599, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 607, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 615, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 623, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 631, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 639, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 647, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 655, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 662, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 669, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 462, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
+    { 479, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 489, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 499, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 507, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 515, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 523, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 531, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 539, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 547, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 555, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 563, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 571, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 579, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 586, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 593, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { 538, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
-    { 676, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
-    { 565, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 575, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 680, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
-    { 691, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
-    { 705, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
-    { 718, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
-    { 94, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { 462, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
+    { 600, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
+    { 489, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
+    { 499, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 604, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
+    { 615, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
+    { 629, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
+    { 642, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
+    { 75, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { 85, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 66, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { 538, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
-    { 555, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 85, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 575, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 583, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 591, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 599, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 607, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 615, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 623, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 631, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 639, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 647, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 655, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 662, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 669, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { 462, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
+    { 479, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
+    { 66, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { 499, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
+    { 507, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
+    { 515, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
+    { 523, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
+    { 531, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
+    { 539, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
+    { 547, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
+    { 555, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
+    { 563, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
+    { 571, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
+    { 579, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
+    { 586, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
+    { 593, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { 729, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
+    { 653, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
 };
 
 static const struct {
@@ -2568,27 +2553,27 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 /* States: name, mode, the parameter block awaited (payload, -1: none), the event its timer fires
  * (ILAHRS_EVENT_COUNT: none). */
 static const struct {
-    uint16_t name;
+    uint8_t name;
     uint8_t mode;
     int8_t expects;
     uint8_t timer;
 } ilahrs_states[ILAHRS_STATE_COUNT] = {
     { 0, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* idle */
-    { 5, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, ILAHRS_EVENT_COUNT }, /* awaiting_parameters */
-    { 25, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_continuous */
-    { 45, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_OUTPUT_DUE }, /* continuous */
-    { 56, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_on_request */
-    { 76, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* on_request */
-    { 87, ILAHRS_MODE_SLEEP, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* sleep */
-    { 93, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* calibration_awaiting_parameters */
-    { 125, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* calibration_aligning */
-    { 146, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* calibration_accumulating */
-    { 171, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* calibration_deciding */
-    { 192, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* runs_awaiting_parameters */
-    { 217, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* runs_ready */
-    { 228, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, ILAHRS_EVENT_COUNT }, /* run_awaiting_parameters */
-    { 252, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* run_aligning */
-    { 265, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* run_accumulating */
+    { 63, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, ILAHRS_EVENT_COUNT }, /* awaiting_parameters */
+    { 5, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_continuous */
+    { 14, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_OUTPUT_DUE }, /* continuous */
+    { 25, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_on_request */
+    { 34, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* on_request */
+    { 45, ILAHRS_MODE_SLEEP, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* sleep */
+    { 51, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* calibration_awaiting_parameters */
+    { 83, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* calibration_aligning */
+    { 104, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* calibration_accumulating */
+    { 129, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* calibration_deciding */
+    { 150, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* runs_awaiting_parameters */
+    { 175, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* runs_ready */
+    { 186, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, ILAHRS_EVENT_COUNT }, /* run_awaiting_parameters */
+    { 210, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* run_aligning */
+    { 223, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* run_accumulating */
 };
 
 /* Names of the events that are not commands, from ILAHRS_COMMAND_COUNT on. */

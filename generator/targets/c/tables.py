@@ -31,20 +31,41 @@ NO_PARAMETER = 0xFF
 
 @dataclass
 class StringPool:
-    """Names of one kind, once each, as one NUL-separated string; tables hold offsets into it."""
+    """Names of one kind, once each, as one NUL-separated string; tables hold offsets into it.
+
+    Built twice (build_tables()): the first pass learns every name of the pool in first-use order
+    (`known` None); the second lays them out with a name that ends another name stored as that
+    name's tail ("gyro_x" inside "ugyro_x"), so `strings` holds only the names that carry others.
+    """
 
     name: str
+    known: list[str] | None = None
     strings: list[str] = field(default_factory=list)
     offsets: dict[str, int] = field(default_factory=dict)
     size: int = 0
 
-    def add(self, text: str) -> int:
-        if text not in self.offsets:
+    def __post_init__(self) -> None:
+        if self.known is None:
+            return
+        for text in self.known:
             if "\0" in text:
                 raise ValueError(f"name {text!r} cannot go into a C string pool")
+        hosts = [t for t in self.known if not any(o != t and o.endswith(t) for o in self.known)]
+        for text in hosts:
             self.offsets[text] = self.size
             self.strings.append(text)
             self.size += len(text.encode("latin-1")) + 1
+        for text in self.known:
+            if text not in self.offsets:
+                host = next(h for h in hosts if h.endswith(text))
+                self.offsets[text] = self.offsets[host] + len(host.encode("latin-1")) - len(text.encode("latin-1"))
+
+    def add(self, text: str) -> int:
+        if self.known is not None:
+            return self.offsets[text]
+        if text not in self.offsets:
+            self.offsets[text] = len(self.strings)
+            self.strings.append(text)
         return self.offsets[text]
 
     def __getitem__(self, text: str) -> int:
@@ -144,9 +165,15 @@ def _index(table: list[Bounds], b: Bounds) -> int:
 
 
 def build_tables(spec: Spec) -> Tables:
+    """The tables, with each string pool laid out once all its names are known."""
+    names = _build_tables(spec, None).pools
+    return _build_tables(spec, {kind: pool.strings for kind, pool in names.items()})
+
+
+def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     kinds = ("error", "frame", "field", "sentence", "date", "command", "payload", "variant", "mode", "flag",
              "state", "event", "answer")
-    pools = {name: StringPool(name) for name in kinds}
+    pools = {name: StringPool(name, None if known is None else known[name]) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
     pools["frame"].add(FRAME_HEADER_NAME)
