@@ -522,161 +522,169 @@ static const struct {
     { 10, 1, 255 },
 };
 
-/* ilahrs_field_info_t.type: the wire kind, and an encoding a builder checks beyond a range. */
-#define TYPE_KIND(type) ((type) & 15u)
-#define TYPE_ENCODING(type) ((type) >> 4)
+/* ilahrs_field_info_t, unpacked. A field's type is its wire kind and an encoding a builder checks
+ * beyond a range; its checks are its builder bounds and its engineering scale. */
+#define KIND_BITS 3u
+#define TYPE_BITS 4u
+#define BOUNDS_BITS 4u
+#define FIELD_TYPE(f) ((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u))
+#define FIELD_NAME_AT(f) ((unsigned)(f)->name_type >> TYPE_BITS)
+#define FIELD_BOUNDS(f) ((unsigned)(f)->checks & ((1u << BOUNDS_BITS) - 1u))
+#define FIELD_SCALE(f) ((unsigned)(f)->checks >> BOUNDS_BITS)
+#define TYPE_KIND(type) ((type) & ((1u << KIND_BITS) - 1u))
+#define TYPE_ENCODING(type) ((type) >> KIND_BITS)
 #define ENCODING_NONE 0u
 #define ENCODING_DECLINATION 1u
 #define NO_PARAMETER 255
 
-/* Every payload field, table after table, in wire order: name, wire offset and size, struct
- * member, kind and encoding, bounds, scale. */
+/* Every payload field, table after table, in wire order: name, kind and encoding, wire offset and
+ * size, struct member, bounds and scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { 234, 0, 2, offsetof(ilahrs_full_output_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 263, 2, 2, offsetof(ilahrs_full_output_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 250, 4, 2, offsetof(ilahrs_full_output_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 0, 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_x */
-    { 8, 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_y */
-    { 16, 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* ugyro_z */
-    { 24, 12, 2, offsetof(ilahrs_full_output_t, uacc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_x */
-    { 31, 14, 2, offsetof(ilahrs_full_output_t, uacc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_y */
-    { 38, 16, 2, offsetof(ilahrs_full_output_t, uacc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* uacc_z */
-    { 45, 18, 2, offsetof(ilahrs_full_output_t, umag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_x */
-    { 52, 20, 2, offsetof(ilahrs_full_output_t, umag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_y */
-    { 59, 22, 2, offsetof(ilahrs_full_output_t, umag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* umag_z */
-    { 66, 24, 4, offsetof(ilahrs_full_output_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 75, 28, 2, offsetof(ilahrs_full_output_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 79, 30, 2, offsetof(ilahrs_full_output_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 83, 32, 2, offsetof(ilahrs_full_output_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 0 }, /* utermo */
+    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_full_output_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_full_output_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_full_output_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (0u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), 0 }, /* ugyro_x */
+    { (8u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), 0 }, /* ugyro_y */
+    { (16u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), 0 }, /* ugyro_z */
+    { (24u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_full_output_t, uacc_x), 0 }, /* uacc_x */
+    { (31u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 14, 2, offsetof(ilahrs_full_output_t, uacc_y), 0 }, /* uacc_y */
+    { (38u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 16, 2, offsetof(ilahrs_full_output_t, uacc_z), 0 }, /* uacc_z */
+    { (45u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 18, 2, offsetof(ilahrs_full_output_t, umag_x), 0 }, /* umag_x */
+    { (52u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 20, 2, offsetof(ilahrs_full_output_t, umag_y), 0 }, /* umag_y */
+    { (59u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 22, 2, offsetof(ilahrs_full_output_t, umag_z), 0 }, /* umag_z */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_full_output_t, reserved), 0 }, /* reserved */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_full_output_t, usw), 0 }, /* usw */
+    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_full_output_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_full_output_t, utermo), 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { 234, 0, 2, offsetof(ilahrs_quaternion_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 263, 2, 2, offsetof(ilahrs_quaternion_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 250, 4, 2, offsetof(ilahrs_quaternion_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 90, 6, 2, offsetof(ilahrs_quaternion_t, lk0), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk0 */
-    { 94, 8, 2, offsetof(ilahrs_quaternion_t, lk1), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk1 */
-    { 98, 10, 2, offsetof(ilahrs_quaternion_t, lk2), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk2 */
-    { 102, 12, 2, offsetof(ilahrs_quaternion_t, lk3), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 4, 3 }, /* lk3 */
-    { 66, 14, 14, offsetof(ilahrs_quaternion_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 75, 28, 2, offsetof(ilahrs_quaternion_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 79, 30, 2, offsetof(ilahrs_quaternion_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 83, 32, 2, offsetof(ilahrs_quaternion_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_quaternion_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_quaternion_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_quaternion_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (90u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_quaternion_t, lk0), 4 | (3u << BOUNDS_BITS) }, /* lk0 */
+    { (94u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_quaternion_t, lk1), 4 | (3u << BOUNDS_BITS) }, /* lk1 */
+    { (98u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_quaternion_t, lk2), 4 | (3u << BOUNDS_BITS) }, /* lk2 */
+    { (102u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_quaternion_t, lk3), 4 | (3u << BOUNDS_BITS) }, /* lk3 */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 14, 14, offsetof(ilahrs_quaternion_t, reserved), 0 }, /* reserved */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_quaternion_t, usw), 0 }, /* usw */
+    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_quaternion_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_quaternion_t, utermo), 0 | (4u << BOUNDS_BITS) }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { 234, 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 1, 1 }, /* heading */
-    { 263, 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 2, 1 }, /* pitch */
-    { 250, 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 3, 1 }, /* roll */
-    { 1, 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_x */
-    { 9, 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_y */
-    { 17, 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 5 }, /* gyro_z */
-    { 25, 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_x */
-    { 32, 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_y */
-    { 39, 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 6 }, /* acc_z */
-    { 46, 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_x */
-    { 53, 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_y */
-    { 60, 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 7 }, /* mag_z */
-    { 66, 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 75, 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
-    { 79, 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 2 }, /* vdd */
-    { 83, 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 4 }, /* utermo */
+    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (1u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), 0 | (5u << BOUNDS_BITS) }, /* gyro_x */
+    { (9u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), 0 | (5u << BOUNDS_BITS) }, /* gyro_y */
+    { (17u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), 0 | (5u << BOUNDS_BITS) }, /* gyro_z */
+    { (25u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), 0 | (6u << BOUNDS_BITS) }, /* acc_x */
+    { (32u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), 0 | (6u << BOUNDS_BITS) }, /* acc_y */
+    { (39u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), 0 | (6u << BOUNDS_BITS) }, /* acc_z */
+    { (46u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), 0 | (7u << BOUNDS_BITS) }, /* mag_x */
+    { (53u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), 0 | (7u << BOUNDS_BITS) }, /* mag_y */
+    { (60u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), 0 | (7u << BOUNDS_BITS) }, /* mag_z */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), 0 }, /* reserved */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), 0 }, /* usw */
+    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), 0 | (4u << BOUNDS_BITS) }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { 106, 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_x */
-    { 118, 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_y */
-    { 130, 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* gyro_bias_z */
-    { 142, 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_x */
-    { 156, 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_y */
-    { 170, 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_acc_z */
-    { 184, 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_x */
-    { 198, 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_y */
-    { 212, 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* average_mag_z */
-    { 226, 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 2, 0 }, /* initial_heading */
-    { 242, 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* initial_roll */
-    { 255, 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* initial_pitch */
-    { 75, 48, 2, offsetof(ilahrs_initial_alignment_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { (106u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), 1 }, /* gyro_bias_x */
+    { (118u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), 1 }, /* gyro_bias_y */
+    { (130u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), 1 }, /* gyro_bias_z */
+    { (142u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), 1 }, /* average_acc_x */
+    { (156u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), 1 }, /* average_acc_y */
+    { (170u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), 1 }, /* average_acc_z */
+    { (184u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), 1 }, /* average_mag_x */
+    { (198u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), 1 }, /* average_mag_y */
+    { (212u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), 1 }, /* average_mag_z */
+    { (226u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), 2 }, /* initial_heading */
+    { (242u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), 3 }, /* initial_roll */
+    { (255u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), 4 }, /* initial_pitch */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 48, 2, offsetof(ilahrs_initial_alignment_t, usw), 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { 269, 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 281, 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 296, 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 308, 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 317, 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 327, 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 336, 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 341, 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 360, 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 379, 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 66, 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { (269u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), 5 }, /* update_rate */
+    { (281u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), 6 }, /* alignment_time */
+    { (296u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << KIND_BITS), 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), 1 }, /* declination */
+    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), 4 }, /* latitude */
+    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), 3 }, /* longitude */
+    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), 5 }, /* altitude */
+    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), 6 }, /* date */
+    { (341u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), 7 }, /* alignment_angle_a1 */
+    { (360u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), 7 }, /* alignment_angle_a2 */
+    { (379u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), 7 }, /* alignment_angle_a3 */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), 0 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { 269, 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 5, 0 }, /* update_rate */
-    { 281, 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* alignment_time */
-    { 296, 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << 4), 1, 0 }, /* declination */
-    { 308, 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 317, 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 327, 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 336, 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
-    { 341, 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a1 */
-    { 360, 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a2 */
-    { 379, 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* alignment_angle_a3 */
-    { 398, 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* device_id */
-    { 66, 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { (269u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), 5 }, /* update_rate */
+    { (281u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), 6 }, /* alignment_time */
+    { (296u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << KIND_BITS), 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), 1 }, /* declination */
+    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), 4 }, /* latitude */
+    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), 3 }, /* longitude */
+    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), 5 }, /* altitude */
+    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), 6 }, /* date */
+    { (341u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), 7 }, /* alignment_angle_a1 */
+    { (360u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), 7 }, /* alignment_angle_a2 */
+    { (379u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), 7 }, /* alignment_angle_a3 */
+    { (398u << TYPE_BITS) | ILAHRS_KIND_CHAR | (ENCODING_NONE << KIND_BITS), 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), 0 }, /* device_id */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), 0 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { 408, 0, 50, offsetof(ilahrs_firmware_version_t, version), ILAHRS_KIND_CHAR | (ENCODING_NONE << 4), 0, 0 }, /* version */
+    { (408u << TYPE_BITS) | ILAHRS_KIND_CHAR | (ENCODING_NONE << KIND_BITS), 0, 50, offsetof(ilahrs_firmware_version_t, version), 0 }, /* version */
     /* bit_result (Table 6.12) */
-    { 416, 0, 2, offsetof(ilahrs_bit_result_t, utermo100), ILAHRS_KIND_SIGNED | (ENCODING_NONE << 4), 0, 1 }, /* utermo100 */
-    { 75, 2, 2, offsetof(ilahrs_bit_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { (416u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_bit_result_t, utermo100), 0 | (1u << BOUNDS_BITS) }, /* utermo100 */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_bit_result_t, usw), 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { 426, 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 7, 0 }, /* reference_azimuth */
-    { 444, 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 6, 0 }, /* accumulation_time */
-    { 308, 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* latitude */
-    { 317, 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* longitude */
-    { 327, 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 5, 0 }, /* altitude */
-    { 336, 18, 4, offsetof(ilahrs_calibration_parameters_t, date), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 6, 0 }, /* date */
+    { (426u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), 7 }, /* reference_azimuth */
+    { (444u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), 6 }, /* accumulation_time */
+    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), 4 }, /* latitude */
+    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), 3 }, /* longitude */
+    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), 5 }, /* altitude */
+    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 18, 4, offsetof(ilahrs_calibration_parameters_t, date), 6 }, /* date */
     /* calibration_result (Table 6.14) */
-    { 462, 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 7, 0 }, /* calibration_type */
-    { 479, 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 489, 2, 1, offsetof(ilahrs_calibration_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 499, 3, 1, offsetof(ilahrs_calibration_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 507, 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 515, 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 523, 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 531, 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 539, 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 547, 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 555, 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 563, 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 571, 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 579, 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 586, 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 593, 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), 7 }, /* calibration_type */
+    { (479u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), 0 }, /* runs_used */
+    { (489u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_result_t, data_used), 8 }, /* data_used */
+    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_result_t, success), 0 }, /* success */
+    { (507u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), 1 }, /* tm_c_11 */
+    { (515u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), 1 }, /* tm_c_12 */
+    { (523u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), 1 }, /* tm_c_13 */
+    { (531u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), 1 }, /* tm_c_21 */
+    { (539u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), 1 }, /* tm_c_22 */
+    { (547u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), 1 }, /* tm_c_23 */
+    { (555u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), 1 }, /* tm_c_31 */
+    { (563u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), 1 }, /* tm_c_32 */
+    { (571u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), 1 }, /* tm_c_33 */
+    { (579u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), 1 }, /* hm_0_x */
+    { (586u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), 1 }, /* hm_0_y */
+    { (593u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), 1 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { 462, 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 9, 0 }, /* calibration_type */
-    { 600, 1, 1, offsetof(ilahrs_calibration_run_result_t, run), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 10, 0 }, /* run */
-    { 489, 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 8, 0 }, /* data_used */
-    { 499, 3, 1, offsetof(ilahrs_calibration_run_result_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 604, 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_1 */
-    { 615, 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 4, 0 }, /* average_pitch */
-    { 629, 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 3, 0 }, /* average_roll */
-    { 642, 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved_2 */
-    { 75, 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* usw */
+    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), 9 }, /* calibration_type */
+    { (600u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_run_result_t, run), 10 }, /* run */
+    { (489u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), 8 }, /* data_used */
+    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_run_result_t, success), 0 }, /* success */
+    { (604u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), 0 }, /* reserved_1 */
+    { (615u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), 4 }, /* average_pitch */
+    { (629u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), 3 }, /* average_roll */
+    { (642u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), 0 }, /* reserved_2 */
+    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { 66, 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), 0 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { 462, 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* calibration_type */
-    { 479, 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* runs_used */
-    { 66, 2, 1, offsetof(ilahrs_calibration_status_t, reserved), ILAHRS_KIND_RESERVED | (ENCODING_NONE << 4), 0, 0 }, /* reserved */
-    { 499, 3, 1, offsetof(ilahrs_calibration_status_t, success), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* success */
-    { 507, 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_11 */
-    { 515, 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_12 */
-    { 523, 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_13 */
-    { 531, 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_21 */
-    { 539, 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_22 */
-    { 547, 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_23 */
-    { 555, 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_31 */
-    { 563, 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_32 */
-    { 571, 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* tm_c_33 */
-    { 579, 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_x */
-    { 586, 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_y */
-    { 593, 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), ILAHRS_KIND_FLOAT | (ENCODING_NONE << 4), 1, 0 }, /* hm_0_z */
+    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), 0 }, /* calibration_type */
+    { (479u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), 0 }, /* runs_used */
+    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_status_t, reserved), 0 }, /* reserved */
+    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_status_t, success), 0 }, /* success */
+    { (507u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), 1 }, /* tm_c_11 */
+    { (515u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), 1 }, /* tm_c_12 */
+    { (523u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), 1 }, /* tm_c_13 */
+    { (531u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), 1 }, /* tm_c_21 */
+    { (539u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), 1 }, /* tm_c_22 */
+    { (547u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), 1 }, /* tm_c_23 */
+    { (555u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), 1 }, /* tm_c_31 */
+    { (563u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), 1 }, /* tm_c_32 */
+    { (571u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), 1 }, /* tm_c_33 */
+    { (579u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), 1 }, /* hm_0_x */
+    { (586u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), 1 }, /* hm_0_y */
+    { (593u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), 1 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { 653, 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << 4), 0, 0 }, /* checksum */
+    { (653u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), 0 }, /* checksum */
 };
 
 static const struct {
@@ -1243,7 +1251,7 @@ bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payl
 
 const char *ilahrs_field_name(const ilahrs_field_info_t *field)
 {
-    return FIELD_NAME(field->name);
+    return FIELD_NAME(FIELD_NAME_AT(field));
 }
 
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field)
@@ -1258,7 +1266,7 @@ size_t ilahrs_field_size(const ilahrs_field_info_t *field)
 
 ilahrs_kind_t ilahrs_field_kind(const ilahrs_field_info_t *field)
 {
-    return (ilahrs_kind_t)TYPE_KIND(field->type);
+    return (ilahrs_kind_t)TYPE_KIND(FIELD_TYPE(field));
 }
 
 void *ilahrs_field_member(const ilahrs_field_info_t *field, void *payload)
@@ -1273,7 +1281,7 @@ const void *ilahrs_field_member_const(const ilahrs_field_info_t *field, const vo
 
 static bool is_integer(const ilahrs_field_info_t *field)
 {
-    return TYPE_KIND(field->type) == ILAHRS_KIND_UNSIGNED || TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED;
+    return TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_UNSIGNED || TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED;
 }
 
 static float float_of_bits(uint32_t bits)
@@ -1290,12 +1298,12 @@ int64_t ilahrs_field_get_int(const ilahrs_field_info_t *field, const void *paylo
         return 0;
     }
     bits = load_bits(ilahrs_field_member_const(field, payload), field->size);
-    return TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
+    return TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
 }
 
 float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *payload)
 {
-    if (TYPE_KIND(field->type) != ILAHRS_KIND_FLOAT) {
+    if (TYPE_KIND(FIELD_TYPE(field)) != ILAHRS_KIND_FLOAT) {
         return 0.0f;
     }
     return float_of_bits(load_bits(ilahrs_field_member_const(field, payload), 4));
@@ -1305,12 +1313,12 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 {
     int64_t low = 0;
     int64_t high = (int64_t)((((uint64_t)1) << (8 * field->size)) - 1u);
-    if (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED) {
+    if (TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED) {
         high = (int64_t)((((uint64_t)1) << (8 * field->size - 1)) - 1u);
         low = -high - 1;
     }
     if (!is_integer(field) || value < low || value > high) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
     }
     store_bits(ilahrs_field_member(field, payload), (uint32_t)(uint64_t)value, field->size);
     return true;
@@ -1318,8 +1326,8 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
 {
-    if (TYPE_KIND(field->type) != ILAHRS_KIND_FLOAT) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+    if (TYPE_KIND(FIELD_TYPE(field)) != ILAHRS_KIND_FLOAT) {
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
     }
     memcpy(ilahrs_field_member(field, payload), &value, sizeof value);
     return true;
@@ -1342,22 +1350,22 @@ static int32_t float_key(uint32_t bits)
  * the float32 roundings of their bounds, then the encoding's rule. */
 static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 {
-    if (TYPE_KIND(f->type) == ILAHRS_KIND_FLOAT) {
+    if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
         int32_t key = float_key(bits);
-        if (key < ilahrs_float_bounds[f->bounds][0] || key > ilahrs_float_bounds[f->bounds][1]) {
+        if (key < ilahrs_float_bounds[FIELD_BOUNDS(f)][0] || key > ilahrs_float_bounds[FIELD_BOUNDS(f)][1]) {
             return false;
         }
-        if (TYPE_ENCODING(f->type) == ENCODING_DECLINATION) {
+        if (TYPE_ENCODING(FIELD_TYPE(f)) == ENCODING_DECLINATION) {
             return (key >= DECLINATION_MIN_KEY && key <= DECLINATION_MAX_KEY) || key > DECLINATION_COMPUTE_ABOVE_KEY;
         }
         return true;
     }
-    if (f->bounds != 0) {
-        int32_t value = TYPE_KIND(f->type) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
-        if (TYPE_KIND(f->type) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
+    if (FIELD_BOUNDS(f) != 0) {
+        int32_t value = TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
+        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
             return false; /* above every int32 bound */
         }
-        return value >= ilahrs_int_bounds[f->bounds][0] && value <= ilahrs_int_bounds[f->bounds][1];
+        return value >= ilahrs_int_bounds[FIELD_BOUNDS(f)][0] && value <= ilahrs_int_bounds[FIELD_BOUNDS(f)][1];
     }
     return true;
 }
@@ -1365,17 +1373,17 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier, int32_t *divisor)
 {
     int32_t d;
-    if (field->scale == 0) {
+    if (FIELD_SCALE(field) == 0) {
         return false;
     }
-    d = ilahrs_scales[field->scale].divisor;
-    if (ilahrs_scales[field->scale].parameter != NO_PARAMETER) {
-        d = ilahrs_variant_parameter(variant, (ilahrs_variant_parameter_t)ilahrs_scales[field->scale].parameter);
+    d = ilahrs_scales[FIELD_SCALE(field)].divisor;
+    if (ilahrs_scales[FIELD_SCALE(field)].parameter != NO_PARAMETER) {
+        d = ilahrs_variant_parameter(variant, (ilahrs_variant_parameter_t)ilahrs_scales[FIELD_SCALE(field)].parameter);
     }
     if (d == 0) {
         return false;
     }
-    *multiplier = ilahrs_scales[field->scale].multiplier;
+    *multiplier = ilahrs_scales[FIELD_SCALE(field)].multiplier;
     *divisor = d;
     return true;
 }
@@ -1394,11 +1402,11 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
         if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
-        if (TYPE_KIND(f->type) == ILAHRS_KIND_FLOAT) {
+        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
             (void)ilahrs_field_set_float(f, out, ilahrs_defaults[i].number, NULL);
         } else if (is_integer(f)) {
             (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
-        } else if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
+        } else if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
@@ -1429,7 +1437,7 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         uint8_t *member = (uint8_t *)out + f->member;
-        if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
+        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR || TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_RESERVED) {
             copy_forward(member, data + f->offset, f->size);
         } else {
             store_bits(member, get_le(data + f->offset, f->size), f->size);
@@ -1454,13 +1462,13 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         const uint8_t *member = (const uint8_t *)in + f->member;
-        if (TYPE_KIND(f->type) == ILAHRS_KIND_CHAR || TYPE_KIND(f->type) == ILAHRS_KIND_RESERVED) {
+        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR || TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_RESERVED) {
             copy_forward(out + f->offset, member, f->size);
         } else {
             uint32_t bits = load_bits(member, f->size);
             {
                 if (!stored_ok(f, bits)) {
-                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, f->offset, FIELD_NAME(f->name));
+                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, f->offset, FIELD_NAME(FIELD_NAME_AT(f)));
                 }
             }
             put_le(out + f->offset, bits, f->size);
@@ -2048,28 +2056,28 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
     bool ok;
     double low = 0.0;
     double high = 0.0;
-    switch (TYPE_KIND(field->type)) {
+    switch (TYPE_KIND(FIELD_TYPE(field))) {
     case ILAHRS_KIND_FLOAT:
-        low = ilahrs_exact_bounds[field->bounds][0];
-        high = ilahrs_exact_bounds[field->bounds][1];
+        low = ilahrs_exact_bounds[FIELD_BOUNDS(field)][0];
+        high = ilahrs_exact_bounds[FIELD_BOUNDS(field)][1];
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED))) - 1u);
-        low = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][0]
-                                 : TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
-        high = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][1] : (double)top;
+        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED))) - 1u);
+        low = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][0]
+                                 : TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
+        high = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (double)top;
         break;
     }
     default:
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
     }
     ok = value >= low && value <= high;
-    if (ok && TYPE_ENCODING(field->type) == ENCODING_DECLINATION) {
+    if (ok && TYPE_ENCODING(FIELD_TYPE(field)) == ENCODING_DECLINATION) {
         ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
           || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
     }
-    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 /* value * divisor rounded half away from zero, saturated far beyond every range. */

@@ -684,13 +684,11 @@ typedef enum ilahrs_kind {
  * layout of this struct is not part of the interface.
  */
 typedef struct ilahrs_field_info {
-    uint16_t name;  /* offset in the field-name pool */
+    uint16_t name_type;  /* offset in the field-name pool << 4 | ilahrs_kind_t | encoding << 3 */
     uint8_t offset;  /* wire offset */
     uint8_t size;    /* wire size */
     uint8_t member;  /* offsetof() in the payload struct */
-    uint8_t type;    /* ilahrs_kind_t | encoding << 4 */
-    uint8_t bounds;  /* builder check (by kind), 0: none */
-    uint8_t scale;   /* engineering scale, 0: none */
+    uint8_t checks;   /* scale << 4 | bounds: engineering scale and builder check (by kind), 0: none */
 } ilahrs_field_info_t;
 
 /** Spec name of a payload table ("full_output"); NULL if unknown. */

@@ -83,6 +83,40 @@ def date_tables(spec: Spec) -> DateTables | None:
     return DateTables(scale, filters.float_key(low), filters.float_key(high), exponent)
 
 
+@dataclass(frozen=True)
+class FieldPacking:
+    """How ilahrs_field_info_t packs its small numbers: the type (kind, then encoding) below the
+    name's pool offset in one word, the bounds index below the scale index in another."""
+
+    kind_bits: int
+    type_bits: int
+    name_type: str  # C type of name << type_bits | type
+    bounds_bits: int
+    checks: str  # C type of scale << bounds_bits | bounds
+
+
+def bits_for(count: int) -> int:
+    """Bits that hold the values 0 .. count - 1 (at least one)."""
+    return max(1, (count - 1).bit_length())
+
+
+def packed_type(bits: int) -> str:
+    return "uint8_t" if bits <= 8 else "uint16_t" if bits <= 16 else "uint32_t"
+
+
+def field_packing(t: tables.Tables) -> FieldPacking:
+    kind_bits = bits_for(len(t.kinds))
+    type_bits = kind_bits + bits_for(len(t.encodings))
+    bounds_bits = bits_for(max(len(t.int_bounds), len(t.float_bounds)))
+    return FieldPacking(
+        kind_bits=kind_bits,
+        type_bits=type_bits,
+        name_type=packed_type(max(16, bits_for(t.pools["field"].size) + type_bits)),
+        bounds_bits=bounds_bits,
+        checks=packed_type(bounds_bits + bits_for(len(t.scales))),
+    )
+
+
 def longest_sentence(nmea: Nmea) -> int:
     """Characters of the longest sentence ilahrs_pahr_build() writes for in-range values: a field
     is longest at one end of its range (the sign counts within the template width)."""
@@ -137,6 +171,7 @@ def outputs(spec: Spec) -> list[Output]:
         "pahr_max_type": pahr_types[1],
         "pahr_saturated": PAHR_SATURATED,
         "pahr_longest": pahr_longest,
+        "fp": field_packing(t),
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
