@@ -2645,25 +2645,71 @@ static const struct {
     { ILAHRS_STATE_RUNS_READY, 10 }, /* 27: runs_ready, 9 */
 };
 
-/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Events are the
- * commands in ilahrs_command_t order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
-static const uint8_t ilahrs_cells[ILAHRS_STATE_COUNT][ILAHRS_EVENT_COUNT] = {
-    { 1, 1, 1, 2, 2, 2, 1, 2, 0, 13, 3, 4, 8, 0, 5, 6, 9, 10, 9, 0, 0, 0, 0, 0, 11, 12, 0, 0, 0, 0, 0, 0, 0 }, /* idle */
-    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 13, 0, 0, 0 }, /* awaiting_parameters */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 15, 0, 0 }, /* aligning_continuous */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 19, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 17 }, /* continuous */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 0 }, /* aligning_on_request */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 18, 13, 0, 0, 8, 0, 0, 7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* on_request */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 13, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* sleep */
-    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 20, 13, 13, 13, 0, 0, 0 }, /* calibration_awaiting_parameters */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 0, 0, 0, 0, 0, 0, 21, 0, 0 }, /* calibration_aligning */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 22, 0, 0, 11, 0, 0, 0, 0, 0, 0, 0, 22, 0 }, /* calibration_accumulating */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 11, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* calibration_deciding */
-    { 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 13, 11, 13, 13, 23, 13, 13, 13, 0, 0, 0 }, /* runs_awaiting_parameters */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 24, 0, 22, 0, 11, 0, 0, 0, 0, 0, 0, 0, 0, 0 }, /* runs_ready */
-    { 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 14, 11, 14, 14, 25, 14, 14, 14, 0, 0, 0 }, /* run_awaiting_parameters */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 11, 0, 0, 0, 0, 0, 0, 26, 0, 0 }, /* run_aligning */
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 27, 0, 0, 11, 0, 0, 0, 0, 0, 0, 0, 27, 0 }, /* run_accumulating */
+/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Events that lead to the
+ * same outcomes in every state share a column: ilahrs_event_columns gives an event's column, and
+ * ilahrs_cells holds each column's outcome by state. Events are the commands in ilahrs_command_t
+ * order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
+static const uint8_t ilahrs_event_columns[ILAHRS_EVENT_COUNT] = {
+    0, /* AHRScont1 */
+    0, /* AHRScont2 */
+    0, /* AHRScont3 */
+    1, /* AHRSreq1 */
+    1, /* AHRSreq2 */
+    1, /* AHRSreq3 */
+    0, /* NMEAcont */
+    1, /* NMEAreq */
+    2, /* GetDataReq */
+    3, /* Stop */
+    4, /* LoadAHRSPar */
+    5, /* ReadAHRSPar */
+    6, /* LowPowerOn */
+    7, /* LowPowerOff */
+    8, /* GetVerFirmware */
+    9, /* GetBIT */
+    10, /* Start2DClb */
+    11, /* Start2D2TClb */
+    10, /* Start3DClb */
+    12, /* StartClbRun */
+    13, /* StopClbRun */
+    14, /* FinishClb */
+    15, /* AcceptClb */
+    16, /* ExitClb */
+    17, /* ClearClb */
+    18, /* GetClbRes */
+    19, /* parameter_block */
+    20, /* other_message */
+    20, /* unknown */
+    20, /* block_timeout */
+    21, /* alignment_done */
+    22, /* accumulation_done */
+    23, /* output_due */
+};
+
+static const uint8_t ilahrs_cells[24][ILAHRS_STATE_COUNT] = {
+    { 1, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 2, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 18, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 13, 13, 13, 13, 13, 13, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 3, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 4, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 8, 13, 0, 19, 0, 8, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 13, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 5, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 6, 13, 0, 0, 0, 7, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 9, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 10, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 24, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 22, 0, 13, 0, 14, 0, 27 },
+    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 22, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 11, 13, 0, 14, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 0, 11, 11, 11, 11, 11, 11, 11, 11, 11 },
+    { 11, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 12, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 0, 11, 0, 0, 0, 0, 0, 20, 0, 0, 0, 23, 0, 25, 0, 0 },
+    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
+    { 0, 0, 15, 0, 16, 0, 0, 0, 21, 0, 0, 0, 0, 0, 26, 0 },
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 22, 0, 0, 0, 0, 0, 27 },
+    { 0, 0, 0, 17, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 },
 };
 
 /* Rows that apply only to firmware before a version, and there take precedence. */
@@ -2843,7 +2889,7 @@ static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, i
     if (legacy >= 0) {
         return outcome(ilahrs_legacy[legacy].outcome, out);
     }
-    cell = ilahrs_cells[state][event];
+    cell = ilahrs_cells[ilahrs_event_columns[event]][state];
     return cell != 0 && outcome(cell - 1u, out);
 }
 

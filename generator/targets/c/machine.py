@@ -59,6 +59,8 @@ class Machine:
     flat_answers: list[int]
     outcomes: list[Outcome]
     cells: list[list[int]]  # [state][event] -> outcome index + 1, or IGNORED
+    columns: list[tuple[int, ...]]  # the distinct event columns of `cells`: [column][state]
+    event_column: list[int]  # per event: its column
     legacy: list[LegacyRow]
     send_max: int
     versions: list[tuple[int, ...]]
@@ -126,6 +128,13 @@ def build_machine(spec: Spec) -> Machine | None:
         elif cells[s][e] == IGNORED:
             cells[s][e] = k + 1
             wildcard[(s, e)] = t.wildcard
+    columns: list[tuple[int, ...]] = []
+    event_column: list[int] = []
+    for e in range(len(events)):
+        column = tuple(row[e] for row in cells)
+        if column not in columns:
+            columns.append(column)
+        event_column.append(columns.index(column))
     starts: list[int] = []
     flat: list[int] = []
     for seq in sequences:
@@ -146,6 +155,8 @@ def build_machine(spec: Spec) -> Machine | None:
         flat_answers=flat,
         outcomes=outcomes,
         cells=cells,
+        columns=columns,
+        event_column=event_column,
         legacy=legacy,
         send_max=max([1, *(len(s) for s in sequences)]),
         versions=versions,
