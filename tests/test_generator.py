@@ -80,3 +80,32 @@ def test_python_filters() -> None:
     assert py_filters.scale_expr(payload.field("mag_x"), "r") == "float(r * 10)"
     assert py_filters.all_sorted(["b", "A_B", "Cls", "a2", "a10"]) == ["A_B", "Cls", "a2", "a10", "b"]
     assert py_filters.tuple_literal(["x"]) == "('x',)"
+
+
+def test_c_tables_fit_their_packing() -> None:
+    """The C target's generation-time facts: the longest in-range $PAHR sentence, string pools that
+    store a name ending another name as its tail, and a field table packed into the widths chosen."""
+    from dataclasses import replace
+
+    from generator.targets.c import tables
+    from generator.targets.c import target as c_target
+
+    spec = build_spec()
+    assert spec.nmea is not None
+    assert c_target.longest_sentence(spec.nmea) == len("$PAHR,-180.00,-90.00,359.99,-99.9,9.99,FFFF*hh\r\n")
+    wide = replace(spec.nmea, fields=(replace(spec.nmea.fields[0], width=80), *spec.nmea.fields[1:]))
+    with pytest.raises(ValueError, match="above the maximum"):
+        c_target.outputs(replace(spec, nmea=wide))
+
+    t = tables.build_tables(spec)
+    for pool in t.pools.values():
+        text = "\0".join(pool.strings) + "\0"
+        assert len(text) == pool.size
+        for name, offset in pool.offsets.items():
+            assert text[offset:].split("\0", 1)[0] == name
+    assert t.pools["field"].offsets["gyro_x"] == t.pools["field"].offsets["ugyro_x"] + 1
+
+    fp = c_target.field_packing(t)
+    assert t.pools["field"].size <= 1 << (16 - fp.type_bits)
+    assert max(r.bounds for r in t.fields) < 1 << fp.bounds_bits
+    assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
