@@ -2079,22 +2079,70 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
 
 /* ---- Engineering values as doubles ------------------------------------------------------ */
 
-static const double ilahrs_exact_bounds[8][2] = {
-    { 0.0, 0.0 },
-    { (-3.4028234663852886e+38), 3.4028234663852886e+38 },
-    { 0.0, 360.0 },
-    { (-180.0), 180.0 },
-    { (-90.0), 90.0 },
-    { (-20000.0), 100000.0 },
-    { 1900.002685546875, 2200.001708984375 },
-    { (-360.0), 360.0 },
+/* These take doubles but compute on their IEEE 754 binary64 bits with integers only (no
+ * floating-point code linked), and give for every double the answers of the double-precision
+ * expressions they replace, quoted below. A double is a sign, an 11-bit exponent e and a 52-bit
+ * fraction: (2^52 + fraction) * 2^(e - 1075), or fraction * 2^-1074 if e is 0. */
+
+#define DOUBLE_SIGN ((uint64_t)1 << 63)
+#define DOUBLE_ONE ((uint64_t)1 << 52) /* the implicit leading bit */
+
+static uint64_t double_bits(double value)
+{
+    uint64_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+/* float_key() for a double: the magnitude bits, negated if the sign is set. Doubles order like
+ * their keys, -0.0 and 0.0 are both 0, and NaNs lie beyond the infinities, outside every range. */
+static int64_t double_key(uint64_t bits)
+{
+    int64_t magnitude = (int64_t)(bits & ~DOUBLE_SIGN);
+    return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+}
+
+/* The bits of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
+static uint64_t int_bits(int64_t n)
+{
+    uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+    uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
+    if (m == 0) {
+        return 0;
+    }
+    while (m < DOUBLE_ONE) {
+        m <<= 1;
+        exponent--;
+    }
+    return (n < 0 ? DOUBLE_SIGN : 0u) | ((exponent << 52) + m);
+}
+
+/* The exact bounds of float fields, as double keys: `value >= low && value <= high` on doubles is
+ * `low_key <= key && key <= high_key` (a NaN's key is beyond every finite bound). */
+static const int64_t ilahrs_exact_bounds[8][2] = {
+    { 0ll, 0ll }, /* 0.0 .. 0.0 */
+    { (-5183643170566569984ll), 5183643170566569984ll }, /* (-3.4028234663852886e+38) .. 3.4028234663852886e+38 */
+    { 0ll, 4645040803167600640ll }, /* 0.0 .. 360.0 */
+    { (-4640537203540230144ll), 4640537203540230144ll }, /* (-180.0) .. 180.0 */
+    { (-4636033603912859648ll), 4636033603912859648ll }, /* (-90.0) .. 90.0 */
+    { (-4671226772094713856ll), 4681608360884174848ll }, /* (-20000.0) .. 100000.0 */
+    { 4656071115628609536ll, 4657056269994033152ll }, /* 1900.002685546875 .. 2200.001708984375 */
+    { (-4645040803167600640ll), 4645040803167600640ll }, /* (-360.0) .. 360.0 */
 };
 
+/* The declination rule as double keys of the header's float constants. */
+#define DECLINATION_MIN_DKEY (-4640537203540230144ll)
+#define DECLINATION_MAX_DKEY 4640537203540230144ll
+#define DECLINATION_COMPUTE_ABOVE_DKEY 4645040803167600640ll
+
+/* value >= low && value <= high with the field's bounds (integer fields: their int bounds or
+ * their C type's range, exact as doubles), then the declination rule, as compares of keys. */
 bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
 {
+    int64_t key = double_key(double_bits(value));
+    int64_t low;
+    int64_t high;
     bool ok;
-    double low = 0.0;
-    double high = 0.0;
     switch (TYPE_KIND(field->type)) {
     case ILAHRS_KIND_FLOAT:
         low = ilahrs_exact_bounds[field->bounds][0];
@@ -2102,19 +2150,20 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED))) - 1u);
-        low = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][0]
-                                 : TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
-        high = field->bounds != 0 ? (double)ilahrs_int_bounds[field->bounds][1] : (double)top;
+        bool is_signed = TYPE_KIND(field->type) == ILAHRS_KIND_SIGNED;
+        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
+        low = field->bounds != 0 ? ilahrs_int_bounds[field->bounds][0] : is_signed ? -(int64_t)top - 1 : 0;
+        high = field->bounds != 0 ? ilahrs_int_bounds[field->bounds][1] : (int64_t)top;
+        low = double_key(int_bits(low));
+        high = double_key(int_bits(high));
         break;
     }
     default:
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
     }
-    ok = value >= low && value <= high;
+    ok = key >= low && key <= high;
     if (ok && TYPE_ENCODING(field->type) == ENCODING_DECLINATION) {
-        ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
-          || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
+        ok = (key >= DECLINATION_MIN_DKEY && key <= DECLINATION_MAX_DKEY) || key > DECLINATION_COMPUTE_ABOVE_DKEY;
     }
     return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
 }

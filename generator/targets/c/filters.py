@@ -210,6 +210,24 @@ def float_key(value: float) -> int:
     return -magnitude if bits & 0x80000000 else magnitude
 
 
+def double_key(value: float) -> int:
+    """The 64-bit float_key(): orders doubles like the values (ilahrs.c, double_key()), the bits of
+    a non-negative double, minus the magnitude bits of a negative one; -0.0 and 0.0 are both 0."""
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{value!r} is not a finite double")
+    bits: int = struct.unpack("<Q", struct.pack("<d", value))[0]
+    magnitude = bits & 0x7FFF_FFFF_FFFF_FFFF
+    return -magnitude if bits >> 63 else magnitude
+
+
+def c_int64(value: int) -> str:
+    """A C literal of an int64_t value (no unsigned suffix)."""
+    if not -(2**63) < value < 2**63:
+        raise ValueError(f"{value} is not an int64 literal")
+    return f"(-{-value}ll)" if value < 0 else f"{value}ll"
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
     "c_int_type": c_int_type,
     "c_index_type": c_index_type,
@@ -230,4 +248,6 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "float32": float32,
     "float_key": float_key,
     "c_signed": c_signed,
+    "double_key": double_key,
+    "c_int64": c_int64,
 }
