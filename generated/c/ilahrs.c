@@ -2168,14 +2168,62 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
     return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(field->name));
 }
 
-/* value * divisor rounded half away from zero, saturated far beyond every range. */
-static int64_t pahr_round(double scaled)
+/* |value| * divisor rounded half away from zero, as the double code computed it: s = |value| *
+ * divisor rounded to a double (to nearest, ties to even), then floor(s + 0.5) with s + 0.5 rounded
+ * to a double too. For a hex field (whole, divisor 1): |value| if it is an integer. PAHR_HUGE,
+ * beyond every range like the 1e15 the double code saturated at, for s >= 2^52 (infinities and
+ * NaNs too) and for a hex field's fraction.
+ *
+ * Why this is exact: |value| is m * 2^e with m < 2^53, and m * divisor < 2^64 (divisors are at
+ * most 100), so the product is exact; shifting it to 53 bits with a round and a sticky bit
+ * rounds it as the double multiplication does (a product below the normal range rounds differently,
+ * but stays far below 1/2). Shifting s to the binary point leaves floor(s), and the round bit adds
+ * the 0.5. Rounding s + 0.5 to a double changes its floor only for s = 0.5 - 2^-54, whose sum rounds
+ * up to 1.0: below 1/2 the sum lies in [1/2, 1), and from 1/2 to 2^52 it is a multiple of s's ulp
+ * (at most 1/2), exact unless it just crossed a power of two, where it rounds to a neighbour with
+ * the same integer part. */
+static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
 {
-    double limit = 1e15;
-    if (scaled >= 0) {
-        return scaled + 0.5 >= limit ? (int64_t)limit : (int64_t)(scaled + 0.5);
+    uint64_t m = bits & (DOUBLE_ONE - 1u);
+    int exponent = (int)((bits >> 52) & 0x7FFu);
+    unsigned round = 0;  /* the last bit shifted out of m */
+    unsigned sticky = 0; /* whether any bit before it was 1 */
+    if (exponent != 0) {
+        m |= DOUBLE_ONE;
+    } else {
+        exponent = 1; /* subnormal */
     }
-    return -scaled + 0.5 >= limit ? -(int64_t)limit : -(int64_t)(-scaled + 0.5);
+    exponent -= 1075;
+    m *= divisor;
+    while (m >= 2 * DOUBLE_ONE) { /* round to 53 bits, to nearest even */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    m += round & (sticky | (unsigned)m) & 1u;
+    if (exponent >= 0) {
+        return PAHR_HUGE; /* m >= 2^52 here: s >= 2^52 */
+    }
+    if (m == 2 * DOUBLE_ONE - 1u && exponent == -54) {
+        m++; /* 0.49999999999999994 + 0.5 rounds to 1.0, as 0.5 + 0.5 */
+    }
+    if (exponent < -60) { /* s <= 2^-8: keep only whether it is 0 */
+        m = m != 0 ? 1u : 0u;
+        exponent = -60;
+    }
+    round = 0;
+    sticky = 0;
+    while (exponent < 0) { /* floor(s + 0.5): the integer part, plus 1 if the first bit after it is */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    if (whole && (round | sticky) != 0) {
+        return PAHR_HUGE; /* a fraction: not an integer */
+    }
+    return m + round;
 }
 
 bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err)
@@ -2183,17 +2231,14 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     int64_t scaled[ILAHRS_PAHR_FIELD_COUNT];
     size_t k;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        double value = values[k];
-        if (!ilahrs_pahr_fields[k].hex) {
-            if (!(value - value == 0.0)) { /* NaN or infinite */
-                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
-            }
-            value *= (double)pahr_divisor(k);
+        uint64_t bits = double_bits(values[k]);
+        bool hex = ilahrs_pahr_fields[k].hex != 0;
+        int64_t magnitude;
+        if (!hex && ((bits >> 52) & 0x7FFu) == 0x7FFu) { /* NaN or infinite */
+            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
         }
-        scaled[k] = pahr_round(value);
-        if (ilahrs_pahr_fields[k].hex && (double)scaled[k] != value) {
-            scaled[k] = (int64_t)PAHR_HUGE; /* not an integer: refused below */
-        }
+        magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        scaled[k] = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
@@ -2206,15 +2251,24 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     return true;
 }
 
+/* (double)n without floating-point code, for |n| < 2^53. */
+static double int_double(int64_t n)
+{
+    uint64_t bits = int_bits(n);
+    double value;
+    memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
 bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double temperature, double vdd, uint16_t usw, ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     double values[ILAHRS_PAHR_FIELD_COUNT];
-    values[0] = (double)roll;
-    values[1] = (double)pitch;
-    values[2] = (double)heading;
-    values[3] = (double)temperature;
-    values[4] = (double)vdd;
-    values[5] = (double)usw;
+    values[0] = roll;
+    values[1] = pitch;
+    values[2] = heading;
+    values[3] = temperature;
+    values[4] = vdd;
+    values[5] = int_double(usw);
     return ilahrs_pahr_from_array(values, out, err);
 }
 /* ---- Stream decoder ------------------------------------------------------------------- */

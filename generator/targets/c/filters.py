@@ -8,7 +8,7 @@ from collections.abc import Callable
 from typing import Any
 
 from generator import naming
-from generator.model import Field, NmeaField, Spec
+from generator.model import Field, Nmea, NmeaField, Spec
 
 _UNSIGNED = ((0xFF, "uint8_t"), (0xFFFF, "uint16_t"), (0xFFFFFFFF, "uint32_t"))
 _SIGNED = ((0x7F, "int8_t"), (0x7FFF, "int16_t"), (0x7FFFFFFF, "int32_t"))
@@ -228,6 +228,18 @@ def c_int64(value: int) -> str:
     return f"(-{-value}ll)" if value < 0 else f"{value}ll"
 
 
+# ilahrs.c multiplies a double's 53-bit significand by a $PAHR divisor in 64 bits (pahr_magnitude()).
+PAHR_DIVISOR_LIMIT = 2**11
+
+
+def pahr_max_divisor(nmea: Nmea) -> int:
+    """The largest $PAHR divisor, refused unless 53-bit significands times it stay below 2^64."""
+    divisor = max((f.divisor for f in nmea.fields if f.format == "decimal"), default=1)
+    if divisor >= PAHR_DIVISOR_LIMIT:
+        raise ValueError(f"$PAHR divisor {divisor}: the C code rounds exactly only below {PAHR_DIVISOR_LIMIT}")
+    return divisor
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
     "c_int_type": c_int_type,
     "c_index_type": c_index_type,
@@ -250,4 +262,5 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "c_signed": c_signed,
     "double_key": double_key,
     "c_int64": c_int64,
+    "pahr_max_divisor": pahr_max_divisor,
 }
