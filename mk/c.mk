@@ -108,6 +108,12 @@ $(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
+# The integer helpers that take doubles against the double code they replace (test_values.c
+# includes ilahrs.c): gcc, and clang on the size-optimized variant.
+$(C_OUT)/san/test_values $(C_OUT)/san/test_values_small: tests/c/test_values.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(if $(findstring _small,$@),$(CLANG) $(C_SMALL),gcc) $(C_STD) $(C_SAN) -I$(C_DIR) $< -lm -o $@
+
 $(C_OUT)/fuzz/%_small: fuzz/c/%.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_FUZZ) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
@@ -138,11 +144,14 @@ C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/
              $(C_OUT)/fuzz/fuzz_parsers_small
 
 test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/test_ilahrs_small \
+        $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small \
         $(C_OUT)/san/ilahrs_conformance $(C_OUT)/san/ilahrs_conformance_small \
         $(C_FUZZERS) $(C_OUT)/corpus/.stamp $(C_OUT)/capture $(C_OUT)/decode_capture $(C_OUT)/extended/test_ilahrs
 	$(C_OUT)/san/test_ilahrs_gcc
 	$(C_OUT)/san/test_ilahrs_clang 0x5EED
 	$(C_OUT)/san/test_ilahrs_small 0xC0DE
+	$(C_OUT)/san/test_values
+	$(C_OUT)/san/test_values_small 0xC0DE
 	$(C_OUT)/extended/test_ilahrs
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance" --name c-asan-ubsan
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance --bytewise" --name c-bytewise

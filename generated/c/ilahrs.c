@@ -2040,22 +2040,70 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
 
 /* ---- Engineering values as doubles ------------------------------------------------------ */
 
-static const double ilahrs_exact_bounds[8][2] = {
-    { 0.0, 0.0 },
-    { (-3.4028234663852886e+38), 3.4028234663852886e+38 },
-    { 0.0, 360.0 },
-    { (-180.0), 180.0 },
-    { (-90.0), 90.0 },
-    { (-20000.0), 100000.0 },
-    { 1900.002685546875, 2200.001708984375 },
-    { (-360.0), 360.0 },
+/* These take doubles but compute on their IEEE 754 binary64 bits with integers only (no
+ * floating-point code linked), and give for every double the answers of the double-precision
+ * expressions they replace, quoted below. A double is a sign, an 11-bit exponent e and a 52-bit
+ * fraction: (2^52 + fraction) * 2^(e - 1075), or fraction * 2^-1074 if e is 0. */
+
+#define DOUBLE_SIGN ((uint64_t)1 << 63)
+#define DOUBLE_ONE ((uint64_t)1 << 52) /* the implicit leading bit */
+
+static uint64_t double_bits(double value)
+{
+    uint64_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+/* float_key() for a double: the magnitude bits, negated if the sign is set. Doubles order like
+ * their keys, -0.0 and 0.0 are both 0, and NaNs lie beyond the infinities, outside every range. */
+static int64_t double_key(uint64_t bits)
+{
+    int64_t magnitude = (int64_t)(bits & ~DOUBLE_SIGN);
+    return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+}
+
+/* The bits of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
+static uint64_t int_bits(int64_t n)
+{
+    uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+    uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
+    if (m == 0) {
+        return 0;
+    }
+    while (m < DOUBLE_ONE) {
+        m <<= 1;
+        exponent--;
+    }
+    return (n < 0 ? DOUBLE_SIGN : 0u) | ((exponent << 52) + m);
+}
+
+/* The exact bounds of float fields, as double keys: `value >= low && value <= high` on doubles is
+ * `low_key <= key && key <= high_key` (a NaN's key is beyond every finite bound). */
+static const int64_t ilahrs_exact_bounds[8][2] = {
+    { 0ll, 0ll }, /* 0.0 .. 0.0 */
+    { (-5183643170566569984ll), 5183643170566569984ll }, /* (-3.4028234663852886e+38) .. 3.4028234663852886e+38 */
+    { 0ll, 4645040803167600640ll }, /* 0.0 .. 360.0 */
+    { (-4640537203540230144ll), 4640537203540230144ll }, /* (-180.0) .. 180.0 */
+    { (-4636033603912859648ll), 4636033603912859648ll }, /* (-90.0) .. 90.0 */
+    { (-4671226772094713856ll), 4681608360884174848ll }, /* (-20000.0) .. 100000.0 */
+    { 4656071115628609536ll, 4657056269994033152ll }, /* 1900.002685546875 .. 2200.001708984375 */
+    { (-4645040803167600640ll), 4645040803167600640ll }, /* (-360.0) .. 360.0 */
 };
 
+/* The declination rule as double keys of the header's float constants. */
+#define DECLINATION_MIN_DKEY (-4640537203540230144ll)
+#define DECLINATION_MAX_DKEY 4640537203540230144ll
+#define DECLINATION_COMPUTE_ABOVE_DKEY 4645040803167600640ll
+
+/* value >= low && value <= high with the field's bounds (integer fields: their int bounds or
+ * their C type's range, exact as doubles), then the declination rule, as compares of keys. */
 bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
 {
+    int64_t key = double_key(double_bits(value));
+    int64_t low;
+    int64_t high;
     bool ok;
-    double low = 0.0;
-    double high = 0.0;
     switch (TYPE_KIND(FIELD_TYPE(field))) {
     case ILAHRS_KIND_FLOAT:
         low = ilahrs_exact_bounds[FIELD_BOUNDS(field)][0];
@@ -2063,31 +2111,80 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED))) - 1u);
-        low = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][0]
-                                 : TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
-        high = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (double)top;
+        bool is_signed = TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED;
+        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
+        low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
+        high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
+        low = double_key(int_bits(low));
+        high = double_key(int_bits(high));
         break;
     }
     default:
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
     }
-    ok = value >= low && value <= high;
+    ok = key >= low && key <= high;
     if (ok && TYPE_ENCODING(FIELD_TYPE(field)) == ENCODING_DECLINATION) {
-        ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
-          || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
+        ok = (key >= DECLINATION_MIN_DKEY && key <= DECLINATION_MAX_DKEY) || key > DECLINATION_COMPUTE_ABOVE_DKEY;
     }
     return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
-/* value * divisor rounded half away from zero, saturated far beyond every range. */
-static int64_t pahr_round(double scaled)
+/* |value| * divisor rounded half away from zero, as the double code computed it: s = |value| *
+ * divisor rounded to a double (to nearest, ties to even), then floor(s + 0.5) with s + 0.5 rounded
+ * to a double too. For a hex field (whole, divisor 1): |value| if it is an integer. PAHR_HUGE,
+ * beyond every range like the 1e15 the double code saturated at, for s >= 2^52 (infinities and
+ * NaNs too) and for a hex field's fraction.
+ *
+ * Why this is exact: |value| is m * 2^e with m < 2^53, and m * divisor < 2^64 (divisors are at
+ * most 100), so the product is exact; shifting it to 53 bits with a round and a sticky bit
+ * rounds it as the double multiplication does (a product below the normal range rounds differently,
+ * but stays far below 1/2). Shifting s to the binary point leaves floor(s), and the round bit adds
+ * the 0.5. Rounding s + 0.5 to a double changes its floor only for s = 0.5 - 2^-54, whose sum rounds
+ * up to 1.0: below 1/2 the sum lies in [1/2, 1), and from 1/2 to 2^52 it is a multiple of s's ulp
+ * (at most 1/2), exact unless it just crossed a power of two, where it rounds to a neighbour with
+ * the same integer part. */
+static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
 {
-    double limit = 1e15;
-    if (scaled >= 0) {
-        return scaled + 0.5 >= limit ? (int64_t)limit : (int64_t)(scaled + 0.5);
+    uint64_t m = bits & (DOUBLE_ONE - 1u);
+    int exponent = (int)((bits >> 52) & 0x7FFu);
+    unsigned round = 0;  /* the last bit shifted out of m */
+    unsigned sticky = 0; /* whether any bit before it was 1 */
+    if (exponent != 0) {
+        m |= DOUBLE_ONE;
+    } else {
+        exponent = 1; /* subnormal */
     }
-    return -scaled + 0.5 >= limit ? -(int64_t)limit : -(int64_t)(-scaled + 0.5);
+    exponent -= 1075;
+    m *= divisor;
+    while (m >= 2 * DOUBLE_ONE) { /* round to 53 bits, to nearest even */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    m += round & (sticky | (unsigned)m) & 1u;
+    if (exponent >= 0) {
+        return PAHR_HUGE; /* m >= 2^52 here: s >= 2^52 */
+    }
+    if (m == 2 * DOUBLE_ONE - 1u && exponent == -54) {
+        m++; /* 0.49999999999999994 + 0.5 rounds to 1.0, as 0.5 + 0.5 */
+    }
+    if (exponent < -60) { /* s <= 2^-8: keep only whether it is 0 */
+        m = m != 0 ? 1u : 0u;
+        exponent = -60;
+    }
+    round = 0;
+    sticky = 0;
+    while (exponent < 0) { /* floor(s + 0.5): the integer part, plus 1 if the first bit after it is */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    if (whole && (round | sticky) != 0) {
+        return PAHR_HUGE; /* a fraction: not an integer */
+    }
+    return m + round;
 }
 
 bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err)
@@ -2095,17 +2192,14 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     int64_t scaled[ILAHRS_PAHR_FIELD_COUNT];
     size_t k;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        double value = values[k];
-        if (!ilahrs_pahr_fields[k].hex) {
-            if (!(value - value == 0.0)) { /* NaN or infinite */
-                return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
-            }
-            value *= (double)pahr_divisor(k);
+        uint64_t bits = double_bits(values[k]);
+        bool hex = ilahrs_pahr_fields[k].hex != 0;
+        int64_t magnitude;
+        if (!hex && ((bits >> 52) & 0x7FFu) == 0x7FFu) { /* NaN or infinite */
+            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
         }
-        scaled[k] = pahr_round(value);
-        if (ilahrs_pahr_fields[k].hex && (double)scaled[k] != value) {
-            scaled[k] = (int64_t)PAHR_HUGE; /* not an integer: refused below */
-        }
+        magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        scaled[k] = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
@@ -2118,15 +2212,24 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     return true;
 }
 
+/* (double)n without floating-point code, for |n| < 2^53. */
+static double int_double(int64_t n)
+{
+    uint64_t bits = int_bits(n);
+    double value;
+    memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
 bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double temperature, double vdd, uint16_t usw, ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     double values[ILAHRS_PAHR_FIELD_COUNT];
-    values[0] = (double)roll;
-    values[1] = (double)pitch;
-    values[2] = (double)heading;
-    values[3] = (double)temperature;
-    values[4] = (double)vdd;
-    values[5] = (double)usw;
+    values[0] = roll;
+    values[1] = pitch;
+    values[2] = heading;
+    values[3] = temperature;
+    values[4] = vdd;
+    values[5] = int_double(usw);
     return ilahrs_pahr_from_array(values, out, err);
 }
 /* ---- Stream decoder ------------------------------------------------------------------- */

@@ -2327,7 +2327,9 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *out, size_t cap, ilahrs_
 /**
  * Fill a sentence from engineering values (roll in deg, pitch in deg, heading in deg, temperature in degc, vdd in v, usw),
  * rounding half away from zero. Refuses (`out_of_range`, naming the field) NaN and infinities
- * first, then values outside their ranges, each pass in field order. Uses double arithmetic.
+ * first, then values outside their ranges, each pass in field order. The double is scaled and
+ * rounded exactly as double arithmetic would (value * 10^decimals, then + 0.5 and floor), in
+ * integers: no floating-point code is linked.
  */
 bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double temperature, double vdd, uint16_t usw, ilahrs_pahr_t *out, ilahrs_error_t *err);
 

@@ -8,7 +8,7 @@ from collections.abc import Callable
 from typing import Any
 
 from generator import naming
-from generator.model import Field, NmeaField, Spec
+from generator.model import Field, Nmea, NmeaField, Spec
 
 _UNSIGNED = ((0xFF, "uint8_t"), (0xFFFF, "uint16_t"), (0xFFFFFFFF, "uint32_t"))
 _SIGNED = ((0x7F, "int8_t"), (0x7FFF, "int16_t"), (0x7FFFFFFF, "int32_t"))
@@ -210,6 +210,36 @@ def float_key(value: float) -> int:
     return -magnitude if bits & 0x80000000 else magnitude
 
 
+def double_key(value: float) -> int:
+    """The 64-bit float_key(): orders doubles like the values (ilahrs.c, double_key()), the bits of
+    a non-negative double, minus the magnitude bits of a negative one; -0.0 and 0.0 are both 0."""
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{value!r} is not a finite double")
+    bits: int = struct.unpack("<Q", struct.pack("<d", value))[0]
+    magnitude = bits & 0x7FFF_FFFF_FFFF_FFFF
+    return -magnitude if bits >> 63 else magnitude
+
+
+def c_int64(value: int) -> str:
+    """A C literal of an int64_t value (no unsigned suffix)."""
+    if not -(2**63) < value < 2**63:
+        raise ValueError(f"{value} is not an int64 literal")
+    return f"(-{-value}ll)" if value < 0 else f"{value}ll"
+
+
+# ilahrs.c multiplies a double's 53-bit significand by a $PAHR divisor in 64 bits (pahr_magnitude()).
+PAHR_DIVISOR_LIMIT = 2**11
+
+
+def pahr_max_divisor(nmea: Nmea) -> int:
+    """The largest $PAHR divisor, refused unless 53-bit significands times it stay below 2^64."""
+    divisor = max((f.divisor for f in nmea.fields if f.format == "decimal"), default=1)
+    if divisor >= PAHR_DIVISOR_LIMIT:
+        raise ValueError(f"$PAHR divisor {divisor}: the C code rounds exactly only below {PAHR_DIVISOR_LIMIT}")
+    return divisor
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
     "c_int_type": c_int_type,
     "c_index_type": c_index_type,
@@ -230,4 +260,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "float32": float32,
     "float_key": float_key,
     "c_signed": c_signed,
+    "double_key": double_key,
+    "c_int64": c_int64,
+    "pahr_max_divisor": pahr_max_divisor,
 }
