@@ -109,3 +109,29 @@ def test_c_tables_fit_their_packing() -> None:
     assert t.pools["field"].size <= 1 << (16 - fp.type_bits)
     assert max(r.bounds for r in t.fields) < 1 << fp.bounds_bits
     assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
+
+
+def test_c_double_keys_order_like_doubles() -> None:
+    """The keys ilahrs.c compares exact float bounds by: strictly increasing with the double, equal
+    for -0.0 and 0.0, and each bound's key decoding back to the bound itself."""
+    import itertools
+    import math
+    import struct
+
+    from generator.targets.c import filters, tables
+
+    def from_key(key: int) -> float:
+        bits = key if key >= 0 else (-key) | (1 << 63)
+        value: float = struct.unpack("<d", struct.pack("<Q", bits))[0]
+        return value
+
+    samples = [-math.inf, -1e300, -360.0, -1.0, -5e-324, -0.0, 0.0, 5e-324, 0.5, 1.0, 359.99, 360.0, 1e300]
+    finite = [v for v in samples if math.isfinite(v)]
+    keys = [filters.double_key(v) for v in finite]
+    assert keys == sorted(keys) and filters.double_key(-0.0) == filters.double_key(0.0) == 0
+    for a, b in itertools.pairwise(finite):
+        assert (filters.double_key(a) < filters.double_key(b)) == (a < b)
+        assert filters.double_key(math.nextafter(a, math.inf)) == filters.double_key(a) + 1
+    for bound in tables.build_tables(build_spec()).float_bounds:
+        for value in (bound.low, bound.high):
+            assert from_key(filters.double_key(value)) == value
