@@ -528,6 +528,7 @@ static const struct {
 #define TYPE_BITS 4u
 #define BOUNDS_BITS 4u
 #define FIELD_TYPE(f) ((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u))
+#define FIELD_KIND(f) TYPE_KIND(FIELD_TYPE(f))
 #define FIELD_NAME_AT(f) ((unsigned)(f)->name_type >> TYPE_BITS)
 #define FIELD_BOUNDS(f) ((unsigned)(f)->checks & ((1u << BOUNDS_BITS) - 1u))
 #define FIELD_SCALE(f) ((unsigned)(f)->checks >> BOUNDS_BITS)
@@ -1266,7 +1267,7 @@ size_t ilahrs_field_size(const ilahrs_field_info_t *field)
 
 ilahrs_kind_t ilahrs_field_kind(const ilahrs_field_info_t *field)
 {
-    return (ilahrs_kind_t)TYPE_KIND(FIELD_TYPE(field));
+    return (ilahrs_kind_t)FIELD_KIND(field);
 }
 
 void *ilahrs_field_member(const ilahrs_field_info_t *field, void *payload)
@@ -1281,7 +1282,7 @@ const void *ilahrs_field_member_const(const ilahrs_field_info_t *field, const vo
 
 static bool is_integer(const ilahrs_field_info_t *field)
 {
-    return TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_UNSIGNED || TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED;
+    return FIELD_KIND(field) == ILAHRS_KIND_UNSIGNED || FIELD_KIND(field) == ILAHRS_KIND_SIGNED;
 }
 
 static float float_of_bits(uint32_t bits)
@@ -1298,12 +1299,12 @@ int64_t ilahrs_field_get_int(const ilahrs_field_info_t *field, const void *paylo
         return 0;
     }
     bits = load_bits(ilahrs_field_member_const(field, payload), field->size);
-    return TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
+    return FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
 }
 
 float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *payload)
 {
-    if (TYPE_KIND(FIELD_TYPE(field)) != ILAHRS_KIND_FLOAT) {
+    if (FIELD_KIND(field) != ILAHRS_KIND_FLOAT) {
         return 0.0f;
     }
     return float_of_bits(load_bits(ilahrs_field_member_const(field, payload), 4));
@@ -1313,7 +1314,7 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 {
     int64_t low = 0;
     int64_t high = (int64_t)((((uint64_t)1) << (8 * field->size)) - 1u);
-    if (TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED) {
+    if (FIELD_KIND(field) == ILAHRS_KIND_SIGNED) {
         high = (int64_t)((((uint64_t)1) << (8 * field->size - 1)) - 1u);
         low = -high - 1;
     }
@@ -1326,7 +1327,7 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
 {
-    if (TYPE_KIND(FIELD_TYPE(field)) != ILAHRS_KIND_FLOAT) {
+    if (FIELD_KIND(field) != ILAHRS_KIND_FLOAT) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
     }
     memcpy(ilahrs_field_member(field, payload), &value, sizeof value);
@@ -1350,7 +1351,7 @@ static int32_t float_key(uint32_t bits)
  * the float32 roundings of their bounds, then the encoding's rule. */
 static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 {
-    if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
+    if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
         int32_t key = float_key(bits);
         if (key < ilahrs_float_bounds[FIELD_BOUNDS(f)][0] || key > ilahrs_float_bounds[FIELD_BOUNDS(f)][1]) {
             return false;
@@ -1361,8 +1362,8 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
         return true;
     }
     if (FIELD_BOUNDS(f) != 0) {
-        int32_t value = TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
-        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
+        int32_t value = FIELD_KIND(f) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
+        if (FIELD_KIND(f) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
             return false; /* above every int32 bound */
         }
         return value >= ilahrs_int_bounds[FIELD_BOUNDS(f)][0] && value <= ilahrs_int_bounds[FIELD_BOUNDS(f)][1];
@@ -1402,11 +1403,11 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
         if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
-        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
+        if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
             (void)ilahrs_field_set_float(f, out, ilahrs_defaults[i].number, NULL);
         } else if (is_integer(f)) {
             (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
-        } else if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
+        } else if (FIELD_KIND(f) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
@@ -1437,7 +1438,7 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         uint8_t *member = (uint8_t *)out + f->member;
-        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR || TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_RESERVED) {
+        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR || FIELD_KIND(f) == ILAHRS_KIND_RESERVED) {
             copy_forward(member, data + f->offset, f->size);
         } else {
             store_bits(member, get_le(data + f->offset, f->size), f->size);
@@ -1462,7 +1463,7 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
         const uint8_t *member = (const uint8_t *)in + f->member;
-        if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_CHAR || TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_RESERVED) {
+        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR || FIELD_KIND(f) == ILAHRS_KIND_RESERVED) {
             copy_forward(out + f->offset, member, f->size);
         } else {
             uint32_t bits = load_bits(member, f->size);
@@ -2104,14 +2105,14 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
     int64_t low;
     int64_t high;
     bool ok;
-    switch (TYPE_KIND(FIELD_TYPE(field))) {
+    switch (FIELD_KIND(field)) {
     case ILAHRS_KIND_FLOAT:
         low = ilahrs_exact_bounds[FIELD_BOUNDS(field)][0];
         high = ilahrs_exact_bounds[FIELD_BOUNDS(field)][1];
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        bool is_signed = TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED;
+        bool is_signed = FIELD_KIND(field) == ILAHRS_KIND_SIGNED;
         uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
         low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
         high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;

@@ -68,16 +68,16 @@ static bool ref_field_check(const ilahrs_field_info_t *field, double value, ilah
     bool ok;
     double low = 0.0;
     double high = 0.0;
-    switch (TYPE_KIND(FIELD_TYPE(field))) {
+    switch (FIELD_KIND(field)) {
     case ILAHRS_KIND_FLOAT:
         low = key_double(ilahrs_exact_bounds[FIELD_BOUNDS(field)][0]);
         high = key_double(ilahrs_exact_bounds[FIELD_BOUNDS(field)][1]);
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED))) - 1u);
+        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (FIELD_KIND(field) == ILAHRS_KIND_SIGNED))) - 1u);
         low = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][0]
-                                 : TYPE_KIND(FIELD_TYPE(field)) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
+                                 : FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
         high = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (double)top;
         break;
     }
@@ -288,21 +288,21 @@ static void around_field(const ilahrs_field_info_t *field, double value, int ulp
 /* The bounds the double code compared with, for any numeric field; false for other kinds. */
 static bool ref_bounds(const ilahrs_field_info_t *f, double *low, double *high)
 {
-    if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
+    if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
         *low = key_double(ilahrs_exact_bounds[FIELD_BOUNDS(f)][0]);
         *high = key_double(ilahrs_exact_bounds[FIELD_BOUNDS(f)][1]);
         return true;
     }
-    if (TYPE_KIND(FIELD_TYPE(f)) != ILAHRS_KIND_UNSIGNED && TYPE_KIND(FIELD_TYPE(f)) != ILAHRS_KIND_SIGNED) {
+    if (FIELD_KIND(f) != ILAHRS_KIND_UNSIGNED && FIELD_KIND(f) != ILAHRS_KIND_SIGNED) {
         return false;
     }
     if (FIELD_BOUNDS(f) != 0) {
         *low = ilahrs_int_bounds[FIELD_BOUNDS(f)][0];
         *high = ilahrs_int_bounds[FIELD_BOUNDS(f)][1];
     } else {
-        int bits = 8 * f->size - (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_SIGNED);
+        int bits = 8 * f->size - (FIELD_KIND(f) == ILAHRS_KIND_SIGNED);
         *high = ldexp(1.0, bits) - 1.0;
-        *low = TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_SIGNED ? -*high - 1.0 : 0.0;
+        *low = FIELD_KIND(f) == ILAHRS_KIND_SIGNED ? -*high - 1.0 : 0.0;
     }
     return true;
 }
@@ -348,7 +348,7 @@ static void test_field_check(void)
                 around_field(f, (double)ILAHRS_DECLINATION_COMPUTE_ABOVE, 2);
                 around_field(f, (double)ILAHRS_DECLINATION_COMPUTE, 2);
 #endif
-                if (TYPE_KIND(FIELD_TYPE(f)) == ILAHRS_KIND_FLOAT) {
+                if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
                     /* The bounds' float32 roundings are the builder's (ilahrs_float_bounds). */
                     if (float_key(float_bits((float)low)) != ilahrs_float_bounds[FIELD_BOUNDS(f)][0]
                         || float_key(float_bits((float)high)) != ilahrs_float_bounds[FIELD_BOUNDS(f)][1]) {
