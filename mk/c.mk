@@ -3,7 +3,8 @@
 #   make build-c       library, conformance runner and example with gcc and clang, -Werror
 #   make lint-c        the header compiled as C++ (g++ and clang++), the library with extra warnings
 #   make test-c        unit tests under ASan+UBSan (gcc and clang), the sanitized conformance runner
-#                      (chunked and byte at a time), brief libFuzzer runs, CMake build, the example
+#                      (chunked and byte at a time, and the frames-only decoder against the full one),
+#                      brief libFuzzer runs, CMake build, the example
 #   make bench-c       stream decoder throughput next to a byte-summing loop; writes build/bench/capture.bin
 #   make footprint-c   Cortex-M4 code and RAM sizes (arm-none-eabi-gcc)
 #   make fuzz-c        longer libFuzzer runs (FUZZ_SECONDS per target, default 60)
@@ -108,6 +109,18 @@ $(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
+# The frames-only stream decoder (ILAHRS_STREAM_SENTENCES=0), speed build with clang and size build
+# with gcc: tests/c/frames_only.py checks it against the full decoder's vectors and captures.
+C_FRAMES := -DILAHRS_STREAM_SENTENCES=0
+
+$(C_OUT)/san/ilahrs_conformance_frames: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/san/ilahrs_conformance_frames_small: tests/c/conformance_runner.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) $(C_SAN) $(C_SMALL) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
 # The integer helpers that take doubles against the double code they replace (test_values.c
 # includes ilahrs.c): gcc, and clang on the size-optimized variant.
 $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small: tests/c/test_values.c $(C_LIB)
@@ -146,6 +159,7 @@ C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/
 test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/test_ilahrs_small \
         $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small \
         $(C_OUT)/san/ilahrs_conformance $(C_OUT)/san/ilahrs_conformance_small \
+        $(C_OUT)/san/ilahrs_conformance_frames $(C_OUT)/san/ilahrs_conformance_frames_small \
         $(C_FUZZERS) $(C_OUT)/corpus/.stamp $(C_OUT)/capture $(C_OUT)/decode_capture $(C_OUT)/extended/test_ilahrs
 	$(C_OUT)/san/test_ilahrs_gcc
 	$(C_OUT)/san/test_ilahrs_clang 0x5EED
@@ -157,6 +171,8 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance --bytewise" --name c-bytewise
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance_small" --name c-optimize-size
 	$(PY) tests/c/differential.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance 16
+	$(PY) tests/c/frames_only.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance_frames
+	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(C_OUT)/san/ilahrs_conformance_frames_small --bytewise"
 	@for f in $(C_FUZZERS); do \
 		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
 		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \

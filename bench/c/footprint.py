@@ -6,6 +6,8 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
 
 - the stream decoder (ilahrs_stream_init/next/push/poll/finish), and how much of it is the
   $PAHR validation it shares with ilahrs_pahr_parse (the sentence parser, also linked alone),
+- the frames-only stream decoder (the library compiled with ILAHRS_STREAM_SENTENCES=0, for a
+  firmware that never turns on NMEA output),
 - the frame and command builders (ilahrs_frame_build, ilahrs_command_build, ilahrs_checksum,
   ilahrs_ack_build),
 - the parameter-block (payload) builder, ilahrs_payload_build_frame, with the field table,
@@ -16,8 +18,8 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
 - the whole library without the host conveniences that take doubles (ilahrs_field_check,
   ilahrs_pahr_from_array/from_values), and the whole library (every public function).
 
-Prints the code size (text: code and const tables) of each next to the targets, split into the
-library's own code and what newlib-nano/libgcc add, the decoder state size, and whether anything
+Prints the flash size (text: code and const tables) of each next to the targets, split into the
+library's own code, its const tables and what newlib-nano/libgcc add, the decoder state size, and whether anything
 uses the heap or static RAM. Sizes are measured, never assumed; targets are reported, not enforced.
 """
 
@@ -38,10 +40,11 @@ FIRMWARE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_payload_parse", "ilahrs_payload
 CORE = [*FIRMWARE, "ilahrs_frame_parse", "ilahrs_command_decode", "ilahrs_pahr_parse", "ilahrs_pahr_build",
         "ilahrs_error_kind_name"]
 MACHINE = ["ilahrs_transition_on", "ilahrs_event_for_frame", "ilahrs_state_timer"]
-# Host conveniences that take engineering values as doubles (soft-double on a Cortex-M4).
+# Host conveniences that take engineering values as doubles (done in integers: no soft-float).
 DOUBLE_HELPERS = {"ilahrs_field_check", "ilahrs_pahr_from_array", "ilahrs_pahr_from_values"}
-TARGETS = {"stream decoder": 512, "sentence parser": None, "frame and command builders": None,
-           "payload builder": None, "state machine": None, "firmware": None, "firmware core": None,
+TARGETS = {"stream decoder": 512, "stream decoder, frames only": 512, "sentence parser": None,
+           "frame and command builders": None, "payload builder": None, "state machine": None, "firmware": None,
+           "firmware core": None,
            "whole library without the double helpers": 8 * 1024, "whole library": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
@@ -64,14 +67,14 @@ def size_of(cc: str, elf: Path) -> tuple[int, int, int]:
     return int(out[0]), int(out[1]), int(out[2])
 
 
-def symbols(cc: str, elf: Path) -> list[tuple[int, int, str]]:
-    """(address, size, name) of every sized code or data symbol, one name per address."""
-    rows: dict[int, tuple[int, int, str]] = {}
+def symbols(cc: str, elf: Path) -> list[tuple[int, int, str, bool]]:
+    """(address, size, name, is code) of every sized code or data symbol, one name per address."""
+    rows: dict[int, tuple[int, int, str, bool]] = {}
     for line in run([tool(cc, "nm"), "--size-sort", "-S", str(elf)]).splitlines():
         parts = line.split()
         if len(parts) == 4 and parts[2].lower() in ("t", "r", "d", "b"):
             address = int(parts[0], 16)
-            row = (address, int(parts[1], 16), parts[3])
+            row = (address, int(parts[1], 16), parts[3], parts[2].lower() == "t")
             if address not in rows or parts[3].startswith("__aeabi"):  # libgcc aliases: one name
                 rows[address] = row
     return sorted(rows.values(), key=lambda r: (-r[1], r[2]))
@@ -96,6 +99,9 @@ def main() -> int:
     out.mkdir(parents=True, exist_ok=True)
     obj = out / "ilahrs.o"
     run([args.cc, *flags, f"-I{args.include}", "-c", str(args.source), "-o", str(obj)])
+    frames_obj = out / "ilahrs_frames_only.o"
+    run([args.cc, *flags, "-DILAHRS_STREAM_SENTENCES=0", f"-I{args.include}", "-c", str(args.source), "-o",
+         str(frames_obj)])
 
     # Static RAM and heap use of the library itself.
     obj_text, obj_data, obj_bss = size_of(args.cc, obj)
@@ -124,22 +130,25 @@ def main() -> int:
     print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
     linked: dict[str, set[tuple[str, int]]] = {}
     own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
-    groups = {"stream decoder": STREAM, "sentence parser": ["ilahrs_pahr_parse"],
+    groups = {"stream decoder": STREAM, "stream decoder, frames only": STREAM,
+              "sentence parser": ["ilahrs_pahr_parse"],
               "frame and command builders": BUILDERS, "payload builder": BLOCKS, "state machine": MACHINE,
               "firmware": FIRMWARE, "firmware core": CORE,
               "whole library without the double helpers": [p for p in public if p not in DOUBLE_HELPERS],
               "whole library": public}
     for name, entries in groups.items():
-        elf = out / (name.replace(" ", "_") + ".elf")
-        link(args.cc, flags, obj, entries, elf)
+        elf = out / (name.replace(",", "").replace(" ", "_") + ".elf")
+        link(args.cc, flags, frames_obj if name.endswith("frames only") else obj, entries, elf)
         text, _data, _bss = size_of(args.cc, elf)
         rows = symbols(args.cc, elf)
-        mine = sum(size for _, size, sym in rows if sym in own)
+        code = sum(size for _, size, sym, is_code in rows if sym in own and is_code)
+        tables = sum(size for _, size, sym, is_code in rows if sym in own and not is_code)
         target = TARGETS[name]
         verdict = "" if target is None else f"  (target <= {target}: {'met' if text <= target else 'NOT met'})"
-        print(f"{name}: text {text} = {mine} library + {text - mine} newlib-nano/libgcc{verdict}")
-        print("    largest: " + ", ".join(f"{sym} {size}" for _, size, sym in rows[:8]))
-        linked[name] = {(sym, size) for _, size, sym in rows}
+        print(f"{name}: text {text} = {code} library code + {tables} library const tables + "
+              f"{text - code - tables} newlib-nano/libgcc and alignment{verdict}")
+        print("    largest: " + ", ".join(f"{sym} {size}" for _, size, sym, _ in rows[:8]))
+        linked[name] = {(sym, size) for _, size, sym, _ in rows}
     shared = sum(size for _, size in linked["stream decoder"] & linked["sentence parser"])
     print(f"stream decoder without the $PAHR validation it shares with ilahrs_pahr_parse: "
           f"{sum(size for _, size in linked['stream decoder']) - shared} (shared: {shared})")

@@ -24,6 +24,18 @@
 #endif
 #endif
 
+/*
+ * Sentences in the stream decoder. A firmware that never turns on the device's NMEA output can
+ * define ILAHRS_STREAM_SENTENCES to 0 for the smallest decoder: it hands back frames only and
+ * counts the bytes of $PAHR sentences as discarded. It finds exactly the frames the full decoder
+ * finds, in the same order: a valid sentence is printable ASCII ending in CR LF, so no frame
+ * starts inside one, and a frame's validity never depends on what precedes it. Only the stream
+ * decoder changes; ilahrs_pahr_parse() and the other sentence functions stay.
+ */
+#ifndef ILAHRS_STREAM_SENTENCES
+#define ILAHRS_STREAM_SENTENCES 1
+#endif
+
 /* ---- Tables --------------------------------------------------------------------------- */
 
 /* Names, one pool per kind of name (NUL-separated); tables hold offsets into them. */
@@ -2285,6 +2297,7 @@ static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *
 }
 
 
+#if ILAHRS_STREAM_SENTENCES
 #if ILAHRS_OPTIMIZE_SIZE
 /*
  * The sentence p[0..n) whose prefix matched, n its length through its first LF (n > the prefix
@@ -2332,11 +2345,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
     return i == ILAHRS_PAHR_MAX_LENGTH ? INVALID : NEED_MORE;
 }
 #else
-static bool may_start(uint8_t byte)
-{
-    return byte == ILAHRS_FRAME_HEADER_0 || byte == PAHR_START;
-}
-
 /* True if p[0..n) is the start of the sentence prefix. */
 static bool pahr_prefix(const uint8_t *p, size_t n)
 {
@@ -2401,11 +2409,31 @@ static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
     }
 }
 #endif
+#endif
+
+#if !ILAHRS_OPTIMIZE_SIZE
+static bool may_start(uint8_t byte)
+{
+#if ILAHRS_STREAM_SENTENCES
+    if (byte == PAHR_START) {
+        return true;
+    }
+#endif
+    return byte == ILAHRS_FRAME_HEADER_0;
+}
+#endif
 
 /* The message at p[0..n): its size if valid, INVALID, or NEED_MORE bytes to decide. */
 static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
-    return p[0] == ILAHRS_FRAME_HEADER_0 ? frame_candidate(p, n, msg) : sentence_candidate(p, n, msg);
+    if (p[0] == ILAHRS_FRAME_HEADER_0) {
+        return frame_candidate(p, n, msg);
+    }
+#if ILAHRS_STREAM_SENTENCES
+    return sentence_candidate(p, n, msg);
+#else
+    return INVALID;
+#endif
 }
 
 void ilahrs_stream_init(ilahrs_stream_t *stream)
@@ -2595,7 +2623,7 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
         if (j == n) {
             break;
         }
-        r = p[j] == ILAHRS_FRAME_HEADER_0 ? frame_candidate(p + j, n - j, msg) : sentence_candidate(p + j, n - j, msg);
+        r = candidate(p + j, n - j, msg);
         if (r > 0) {
             *data = p + j + (size_t)r;
             *len = n - j - (size_t)r;

@@ -14,6 +14,7 @@ and by `ilahrs.statemachine`; every step must agree. Seeded.
 from __future__ import annotations
 
 import random
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -34,7 +35,7 @@ def python_events(chunks: list[bytes]) -> tuple[list[str], int]:
 
 def c_events(runner: str, chunks: list[bytes]) -> tuple[list[str], int]:
     line = "stream " + ",".join(chunk.hex() if chunk else "-" for chunk in chunks) + "\n"
-    answer = subprocess.run([runner], input=line, capture_output=True, text=True, check=True).stdout.strip()
+    answer = subprocess.run(shlex.split(runner), input=line, capture_output=True, text=True, check=True).stdout.strip()
     status, discarded, events = answer.split(" ")
     if status != "ok":
         raise SystemExit(f"runner answered {answer[:200]}")
