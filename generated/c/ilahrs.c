@@ -2269,7 +2269,7 @@ static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *
         if (n < ILAHRS_FRAME_PAYLOAD_OFFSET) {
             return NEED_MORE;
         }
-        if (!message_type_valid(get_le(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
+        if (!message_type_valid(p[ILAHRS_FRAME_MESSAGE_TYPE_OFFSET])) {
             return INVALID;
         }
         length = get_le(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
@@ -2288,8 +2288,8 @@ static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *
         msg->kind = ILAHRS_MESSAGE_FRAME;
         msg->data = p;
         msg->size = total;
-        msg->frame.message_type = (uint8_t)get_le(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE);
-        msg->frame.reserved = (uint8_t)get_le(p + ILAHRS_FRAME_RESERVED_OFFSET, ILAHRS_FRAME_RESERVED_SIZE);
+        msg->frame.message_type = (uint8_t)p[ILAHRS_FRAME_MESSAGE_TYPE_OFFSET];
+        msg->frame.reserved = (uint8_t)p[ILAHRS_FRAME_RESERVED_OFFSET];
         msg->frame.payload = p + ILAHRS_FRAME_PAYLOAD_OFFSET;
         msg->frame.payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
         return (int)total;
