@@ -172,16 +172,21 @@ class PahrSentence:
     def from_values(
         cls,
         *,
-roll: float, pitch: float, heading: float, temperature: float, vdd: float, usw: int,
+        roll: float,
+        pitch: float,
+        heading: float,
+        temperature: float,
+        vdd: float,
+        usw: int,
     ) -> PahrSentence:
         """Build from engineering values, rounding half away from zero; checked like `build()`."""
         sentence = cls(
-_scaled(roll, 100, 'roll'),
-_scaled(pitch, 100, 'pitch'),
-_scaled(heading, 100, 'heading'),
-_scaled(temperature, 10, 'temperature'),
-_scaled(vdd, 100, 'vdd'),
-usw,
+            _scaled(roll, 100, 'roll'),
+            _scaled(pitch, 100, 'pitch'),
+            _scaled(heading, 100, 'heading'),
+            _scaled(temperature, 10, 'temperature'),
+            _scaled(vdd, 100, 'vdd'),
+            usw,
         )
         sentence.check()
         return sentence
