@@ -85,6 +85,7 @@ def test_python_filters() -> None:
 def test_c_tables_fit_their_packing() -> None:
     """The C target's generation-time facts: the longest in-range $PAHR sentence, string pools that
     store a name ending another name as its tail, and a field table packed into the widths chosen."""
+    import itertools
     from dataclasses import replace
 
     from generator.targets.c import tables
@@ -104,6 +105,19 @@ def test_c_tables_fit_their_packing() -> None:
         for name, offset in pool.offsets.items():
             assert text[offset:].split("\0", 1)[0] == name
     assert t.pools["field"].offsets["gyro_x"] == t.pools["field"].offsets["ugyro_x"] + 1
+
+    # One pool for the names of the accessors: each section lists its kind in enum order, the event
+    # section continues the command section, and a USW bit without a flag has the empty name.
+    sections = {s.kind: s for s in t.name_sections}
+    assert [s.first for s in t.name_sections] == [0, *itertools.accumulate(len(s.names) for s in t.name_sections)][:-1]
+    assert sections["command"].names == tuple(c.name for c in spec.commands)
+    assert sections["event"].first == len(spec.commands)
+    assert sections["answer"].names[1] == "ahrs_parameters_read"
+    assert spec.status_word is not None
+    flags = {f.bit: f.name for f in spec.status_word.flags}
+    assert sections["flag"].names == tuple(flags.get(bit, "") for bit in range(len(sections["flag"].names)))
+    distinct = {n for s in t.name_sections for n in s.names}
+    assert "" in sections["flag"].names and t.pools["name"].size < sum(len(n) + 1 for n in distinct)
 
     fp = c_target.field_packing(t)
     assert t.pools["field"].size <= 1 << (16 - fp.type_bits)
