@@ -125,6 +125,28 @@ def test_c_tables_fit_their_packing() -> None:
     assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
 
 
+def test_c_state_table_is_sparse_and_fits_its_packing() -> None:
+    """The C state table: each state's default cell plus the cells that differ from it give back
+    every cell; entries and outcomes fit the widths chosen, and a machine too big is refused."""
+    from generator.targets.c import machine
+
+    m = machine.build_machine(build_spec())
+    assert m is not None
+    p = m.packing
+    rebuilt = [[m.defaults[s]] * len(m.events) for s in range(len(m.states))]
+    for s, e, cell in m.exceptions:
+        assert cell != m.defaults[s]
+        rebuilt[s][e] = cell
+        assert ((s * len(m.events) + e) << p.cell_bits | cell) < 1 << int(p.exception_type[4:-2])
+    assert rebuilt == m.cells
+    assert len(m.exceptions) < sum(1 for row in m.cells for cell in row if cell)
+    assert max(max(row) for row in m.cells) < 1 << p.cell_bits
+    assert all((o.to << p.sequence_bits | o.sequence) < 1 << int(p.outcome_type[4:-2]) for o in m.outcomes)
+    assert (p.exception_type, p.outcome_type) == ("uint16_t", "uint8_t")
+    with pytest.raises(ValueError, match="more than the C table's 32"):
+        machine.machine_packing(states=1 << 14, events=1 << 12, outcomes=1000, sequences=4)
+
+
 def test_c_double_keys_order_like_doubles() -> None:
     """The keys ilahrs.c compares exact float bounds by: strictly increasing with the double, equal
     for -0.0 and 0.0, and each bound's key decoding back to the bound itself."""

@@ -2696,105 +2696,112 @@ static const struct {
 static const uint8_t ilahrs_sends[10] = { ILAHRS_ANSWER_ACK, ILAHRS_ANSWER_AHRS_PARAMETERS_READ, ILAHRS_ANSWER_FIRMWARE_VERSION, ILAHRS_ANSWER_BIT_RESULT, ILAHRS_ANSWER_CALIBRATION_STATUS, ILAHRS_ANSWER_INITIAL_ALIGNMENT, ILAHRS_ANSWER_OUTPUT, ILAHRS_ANSWER_OUTPUT_SLEEP, ILAHRS_ANSWER_CALIBRATION_RESULT, ILAHRS_ANSWER_CALIBRATION_RUN_RESULT };
 static const uint8_t ilahrs_send_start[12] = { 0, 1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
 
-/* The distinct outcomes of the table: next state, answer sequence. */
-static const struct {
-    uint8_t to;
-    uint8_t sends;
-} ilahrs_outcomes[27] = {
-    { ILAHRS_STATE_ALIGNING_CONTINUOUS, 0 }, /* 1: aligning_continuous, 0 */
-    { ILAHRS_STATE_ALIGNING_ON_REQUEST, 0 }, /* 2: aligning_on_request, 0 */
-    { ILAHRS_STATE_AWAITING_PARAMETERS, 1 }, /* 3: awaiting_parameters, nothing */
-    { ILAHRS_STATE_IDLE, 2 }, /* 4: idle, 1 */
-    { ILAHRS_STATE_IDLE, 3 }, /* 5: idle, 2 */
-    { ILAHRS_STATE_IDLE, 4 }, /* 6: idle, 3 */
-    { ILAHRS_STATE_ON_REQUEST, 4 }, /* 7: on_request, 3 */
-    { ILAHRS_STATE_SLEEP, 1 }, /* 8: sleep, nothing */
-    { ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, 1 }, /* 9: calibration_awaiting_parameters, nothing */
-    { ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, 1 }, /* 10: runs_awaiting_parameters, nothing */
-    { ILAHRS_STATE_IDLE, 0 }, /* 11: idle, 0 */
-    { ILAHRS_STATE_IDLE, 5 }, /* 12: idle, 4 */
-    { ILAHRS_STATE_IDLE, 1 }, /* 13: idle, nothing */
-    { ILAHRS_STATE_RUNS_READY, 1 }, /* 14: runs_ready, nothing */
-    { ILAHRS_STATE_CONTINUOUS, 6 }, /* 15: continuous, 5 */
-    { ILAHRS_STATE_ON_REQUEST, 6 }, /* 16: on_request, 5 */
-    { ILAHRS_STATE_CONTINUOUS, 7 }, /* 17: continuous, 6 */
-    { ILAHRS_STATE_ON_REQUEST, 7 }, /* 18: on_request, 6 */
-    { ILAHRS_STATE_SLEEP, 8 }, /* 19: sleep, 7 */
-    { ILAHRS_STATE_CALIBRATION_ALIGNING, 0 }, /* 20: calibration_aligning, 0 */
-    { ILAHRS_STATE_CALIBRATION_ACCUMULATING, 6 }, /* 21: calibration_accumulating, 5 */
-    { ILAHRS_STATE_CALIBRATION_DECIDING, 9 }, /* 22: calibration_deciding, 8 */
-    { ILAHRS_STATE_RUNS_READY, 0 }, /* 23: runs_ready, 0 */
-    { ILAHRS_STATE_RUN_AWAITING_PARAMETERS, 1 }, /* 24: run_awaiting_parameters, nothing */
-    { ILAHRS_STATE_RUN_ALIGNING, 0 }, /* 25: run_aligning, 0 */
-    { ILAHRS_STATE_RUN_ACCUMULATING, 6 }, /* 26: run_accumulating, 5 */
-    { ILAHRS_STATE_RUNS_READY, 10 }, /* 27: runs_ready, 9 */
+/* The distinct outcomes of the table: next state << SEQUENCE_BITS | answer sequence. */
+#define SEQUENCE_BITS 4u
+static const uint8_t ilahrs_outcomes[27] = {
+    (ILAHRS_STATE_ALIGNING_CONTINUOUS << SEQUENCE_BITS) | 0u, /* 1: aligning_continuous, 0 */
+    (ILAHRS_STATE_ALIGNING_ON_REQUEST << SEQUENCE_BITS) | 0u, /* 2: aligning_on_request, 0 */
+    (ILAHRS_STATE_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 3: awaiting_parameters, nothing */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 2u, /* 4: idle, 1 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 3u, /* 5: idle, 2 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 4u, /* 6: idle, 3 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 4u, /* 7: on_request, 3 */
+    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 1u, /* 8: sleep, nothing */
+    (ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 9: calibration_awaiting_parameters, nothing */
+    (ILAHRS_STATE_RUNS_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 10: runs_awaiting_parameters, nothing */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 0u, /* 11: idle, 0 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 5u, /* 12: idle, 4 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 1u, /* 13: idle, nothing */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 1u, /* 14: runs_ready, nothing */
+    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 6u, /* 15: continuous, 5 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 6u, /* 16: on_request, 5 */
+    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 7u, /* 17: continuous, 6 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 7u, /* 18: on_request, 6 */
+    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 8u, /* 19: sleep, 7 */
+    (ILAHRS_STATE_CALIBRATION_ALIGNING << SEQUENCE_BITS) | 0u, /* 20: calibration_aligning, 0 */
+    (ILAHRS_STATE_CALIBRATION_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 21: calibration_accumulating, 5 */
+    (ILAHRS_STATE_CALIBRATION_DECIDING << SEQUENCE_BITS) | 9u, /* 22: calibration_deciding, 8 */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 0u, /* 23: runs_ready, 0 */
+    (ILAHRS_STATE_RUN_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 24: run_awaiting_parameters, nothing */
+    (ILAHRS_STATE_RUN_ALIGNING << SEQUENCE_BITS) | 0u, /* 25: run_aligning, 0 */
+    (ILAHRS_STATE_RUN_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 26: run_accumulating, 5 */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 10u, /* 27: runs_ready, 9 */
 };
 
-/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Events that lead to the
- * same outcomes in every state share a column: ilahrs_event_columns gives an event's column, and
- * ilahrs_cells holds each column's outcome by state. Events are the commands in ilahrs_command_t
- * order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
-static const uint8_t ilahrs_event_columns[ILAHRS_EVENT_COUNT] = {
-    0, /* AHRScont1 */
-    0, /* AHRScont2 */
-    0, /* AHRScont3 */
-    1, /* AHRSreq1 */
-    1, /* AHRSreq2 */
-    1, /* AHRSreq3 */
-    0, /* NMEAcont */
-    1, /* NMEAreq */
-    2, /* GetDataReq */
-    3, /* Stop */
-    4, /* LoadAHRSPar */
-    5, /* ReadAHRSPar */
-    6, /* LowPowerOn */
-    7, /* LowPowerOff */
-    8, /* GetVerFirmware */
-    9, /* GetBIT */
-    10, /* Start2DClb */
-    11, /* Start2D2TClb */
-    10, /* Start3DClb */
-    12, /* StartClbRun */
-    13, /* StopClbRun */
-    14, /* FinishClb */
-    15, /* AcceptClb */
-    16, /* ExitClb */
-    17, /* ClearClb */
-    18, /* GetClbRes */
-    19, /* parameter_block */
-    20, /* other_message */
-    20, /* unknown */
-    20, /* block_timeout */
-    21, /* alignment_done */
-    22, /* accumulation_done */
-    23, /* output_due */
-};
+/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Most events do the same
+ * in a state, so each state has a default cell, and ilahrs_cells lists the cells that differ from
+ * their state's default, by state and event: (state * ILAHRS_EVENT_COUNT + event) << CELL_BITS |
+ * cell. Events are the commands in ilahrs_command_t order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
+#define CELL_BITS 5u
+#define CELL_COUNT 65u
+static const uint8_t ilahrs_state_cells[ILAHRS_STATE_COUNT] = { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 };
 
-static const uint8_t ilahrs_cells[24][ILAHRS_STATE_COUNT] = {
-    { 1, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 2, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 18, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 13, 13, 13, 13, 13, 13, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 3, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 4, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 8, 13, 0, 19, 0, 8, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 13, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 5, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 6, 13, 0, 0, 0, 7, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 9, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 10, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 24, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 22, 0, 13, 0, 14, 0, 27 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 22, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 11, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 11, 11, 11, 11, 11, 11, 11, 11, 11 },
-    { 11, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 12, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 11, 0, 0, 0, 0, 0, 20, 0, 0, 0, 23, 0, 25, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 0, 15, 0, 16, 0, 0, 0, 21, 0, 0, 0, 0, 0, 26, 0 },
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 22, 0, 0, 0, 0, 0, 27 },
-    { 0, 0, 0, 17, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 },
+static const uint16_t ilahrs_cells[65] = {
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 0u) << CELL_BITS) | 1u, /* idle, AHRScont1 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 1u) << CELL_BITS) | 1u, /* idle, AHRScont2 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 2u) << CELL_BITS) | 1u, /* idle, AHRScont3 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 3u) << CELL_BITS) | 2u, /* idle, AHRSreq1 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 4u) << CELL_BITS) | 2u, /* idle, AHRSreq2 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 5u) << CELL_BITS) | 2u, /* idle, AHRSreq3 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 6u) << CELL_BITS) | 1u, /* idle, NMEAcont */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 7u) << CELL_BITS) | 2u, /* idle, NMEAreq */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* idle, Stop */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 10u) << CELL_BITS) | 3u, /* idle, LoadAHRSPar */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 11u) << CELL_BITS) | 4u, /* idle, ReadAHRSPar */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* idle, LowPowerOn */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 14u) << CELL_BITS) | 5u, /* idle, GetVerFirmware */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 6u, /* idle, GetBIT */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 16u) << CELL_BITS) | 9u, /* idle, Start2DClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 17u) << CELL_BITS) | 10u, /* idle, Start2D2TClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 18u) << CELL_BITS) | 9u, /* idle, Start3DClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 24u) << CELL_BITS) | 11u, /* idle, ClearClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 25u) << CELL_BITS) | 12u, /* idle, GetClbRes */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 11u, /* awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* awaiting_parameters, output_due */
+    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_continuous, Stop */
+    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 15u, /* aligning_continuous, alignment_done */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* continuous, Stop */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 19u, /* continuous, LowPowerOn */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 17u, /* continuous, output_due */
+    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_on_request, Stop */
+    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 16u, /* aligning_on_request, alignment_done */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 8u) << CELL_BITS) | 18u, /* on_request, GetDataReq */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* on_request, Stop */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* on_request, LowPowerOn */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 7u, /* on_request, GetBIT */
+    (((ILAHRS_STATE_SLEEP * ILAHRS_EVENT_COUNT) + 13u) << CELL_BITS) | 13u, /* sleep, LowPowerOff */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 20u, /* calibration_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_aligning, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 21u, /* calibration_aligning, alignment_done */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 22u, /* calibration_accumulating, StopClbRun */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_accumulating, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 22u, /* calibration_accumulating, accumulation_done */
+    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 22u) << CELL_BITS) | 11u, /* calibration_deciding, AcceptClb */
+    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_deciding, ExitClb */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 23u, /* runs_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 19u) << CELL_BITS) | 24u, /* runs_ready, StartClbRun */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 21u) << CELL_BITS) | 22u, /* runs_ready, FinishClb */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_ready, ExitClb */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 25u, /* run_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* run_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* run_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* run_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_aligning, ExitClb */
+    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 26u, /* run_aligning, alignment_done */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 27u, /* run_accumulating, StopClbRun */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_accumulating, ExitClb */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 27u, /* run_accumulating, accumulation_done */
 };
 
 /* Rows that apply only to firmware before a version, and there take precedence. */
@@ -2926,10 +2933,11 @@ ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t
 
 static bool outcome(unsigned k, ilahrs_step_t *out)
 {
-    unsigned from = ilahrs_send_start[ilahrs_outcomes[k].sends];
-    unsigned n = ilahrs_send_start[ilahrs_outcomes[k].sends + 1u] - from;
+    unsigned sends = ilahrs_outcomes[k] & ((1u << SEQUENCE_BITS) - 1u);
+    unsigned from = ilahrs_send_start[sends];
+    unsigned n = ilahrs_send_start[sends + 1u] - from;
     unsigned i;
-    out->to = (ilahrs_state_t)ilahrs_outcomes[k].to;
+    out->to = (ilahrs_state_t)(ilahrs_outcomes[k] >> SEQUENCE_BITS);
     out->send_count = (uint8_t)n;
     for (i = 0; i < n && i < ILAHRS_STEP_SEND_MAX; i++) {
         out->send[i] = (ilahrs_answer_t)ilahrs_sends[from + i];
@@ -2959,6 +2967,8 @@ static int legacy_row(unsigned state, unsigned event, const ilahrs_firmware_t *f
 static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, ilahrs_step_t *out)
 {
     unsigned cell;
+    unsigned key;
+    unsigned i;
     out->to = state;
     out->send_count = 0;
     if ((unsigned)state >= ILAHRS_STATE_COUNT || (unsigned)event >= ILAHRS_EVENT_COUNT) {
@@ -2967,7 +2977,14 @@ static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, i
     if (legacy >= 0) {
         return outcome(ilahrs_legacy[legacy].outcome, out);
     }
-    cell = ilahrs_cells[ilahrs_event_columns[event]][state];
+    cell = ilahrs_state_cells[state];
+    key = (unsigned)state * ILAHRS_EVENT_COUNT + (unsigned)event;
+    for (i = 0; i < CELL_COUNT; i++) {
+        if (ilahrs_cells[i] >> CELL_BITS == key) {
+            cell = ilahrs_cells[i] & ((1u << CELL_BITS) - 1u);
+            break;
+        }
+    }
     return cell != 0 && outcome(cell - 1u, out);
 }
 
