@@ -124,6 +124,13 @@ def test_c_tables_fit_their_packing() -> None:
     assert max(r.bounds for r in t.fields) < 1 << fp.bounds_bits
     assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
 
+    # Rows of small tables: each column in the smallest type that holds it, widest first.
+    assert c_target.row_members({"a": [1, 2], "b": [0, 70000], "c": "float", "d": [-1, 300]}) == [
+        ("uint32_t", "b"), ("float", "c"), ("int16_t", "d"), ("uint8_t", "a")]
+    with pytest.raises(ValueError, match="no 32-bit C integer type"):
+        c_target.row_members({"a": [0, 1 << 40]})
+    assert [name for _, name in c_target.default_members(t)] == ["number", "field", "text", "integer"]
+
 
 def test_c_state_table_is_sparse_and_fits_its_packing() -> None:
     """The C state table: each state's default cell plus the cells that differ from it give back

@@ -443,20 +443,21 @@ static const int32_t ilahrs_float_bounds[8][2] = {
 };
 
 
-/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
+/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides.
+ * Each column has the smallest type that holds it. */
 static const struct {
-    int32_t multiplier;
-    int32_t divisor;
+    uint16_t divisor;
+    uint8_t multiplier;
     uint8_t parameter;
 } ilahrs_scales[8] = {
     { 1, 1, 255 },
-    { 1, 100, 255 },
-    { 1, 1000, 255 },
-    { 1, 10000, 255 },
-    { 1, 10, 255 },
-    { 1, 0, 0 },
-    { 1, 0, 1 },
+    { 100, 1, 255 },
+    { 1000, 1, 255 },
+    { 10000, 1, 255 },
     { 10, 1, 255 },
+    { 0, 1, 0 },
+    { 0, 1, 1 },
+    { 1, 10, 255 },
 };
 
 /* ilahrs_field_info_t, unpacked. A field's type is its wire kind and an encoding a builder checks
@@ -647,24 +648,26 @@ static const struct {
     { 2, 1, 130, (uint8_t)sizeof(ilahrs_acknowledgement_t) },
 };
 
-/* Builder defaults other than zero (the spec default, else the lowest value the range allows). */
+/* Builder defaults other than zero (the spec default, else the lowest value the range allows):
+ * the field's row, the field-name pool offset of a char default (0: none, numeric), the default
+ * of an integer field and of a float field. Each column has the smallest type that holds it. */
 static const struct {
+    float number;
     uint8_t field;
-    uint16_t text; /* 0 with no text: numeric */
-    int32_t integer;  /* integer fields */
-    float number;     /* float fields */
+    uint8_t text;
+    uint8_t integer;
 } ilahrs_defaults[11] = {
-    { 56, 0, 100, 0.0f }, /* ahrs_parameters_load.update_rate */
-    { 57, 0, 30, 0.0f }, /* ahrs_parameters_load.alignment_time */
-    { 62, 0, 0, 1900.002685546875f }, /* ahrs_parameters_load.date */
-    { 67, 0, 1, 0.0f }, /* ahrs_parameters_read.update_rate */
-    { 68, 0, 1, 0.0f }, /* ahrs_parameters_read.alignment_time */
-    { 73, 0, 0, 1900.002685546875f }, /* ahrs_parameters_read.date */
-    { 83, 0, 1, 0.0f }, /* calibration_parameters.accumulation_time */
-    { 87, 0, 0, 1900.002685546875f }, /* calibration_parameters.date */
-    { 88, 0, 1, 0.0f }, /* calibration_result.calibration_type */
-    { 104, 0, 2, 0.0f }, /* calibration_run_result.calibration_type */
-    { 105, 0, 1, 0.0f }, /* calibration_run_result.run */
+    { 0.0f, 56, 0, 100 }, /* ahrs_parameters_load.update_rate */
+    { 0.0f, 57, 0, 30 }, /* ahrs_parameters_load.alignment_time */
+    { 1900.002685546875f, 62, 0, 0 }, /* ahrs_parameters_load.date */
+    { 0.0f, 67, 0, 1 }, /* ahrs_parameters_read.update_rate */
+    { 0.0f, 68, 0, 1 }, /* ahrs_parameters_read.alignment_time */
+    { 1900.002685546875f, 73, 0, 0 }, /* ahrs_parameters_read.date */
+    { 0.0f, 83, 0, 1 }, /* calibration_parameters.accumulation_time */
+    { 1900.002685546875f, 87, 0, 0 }, /* calibration_parameters.date */
+    { 0.0f, 88, 0, 1 }, /* calibration_result.calibration_type */
+    { 0.0f, 104, 0, 2 }, /* calibration_run_result.calibration_type */
+    { 0.0f, 105, 0, 1 }, /* calibration_run_result.run */
 };
 #define DEFAULT_COUNT 11u
 
