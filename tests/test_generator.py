@@ -85,6 +85,7 @@ def test_python_filters() -> None:
 def test_c_tables_fit_their_packing() -> None:
     """The C target's generation-time facts: the longest in-range $PAHR sentence, string pools that
     store a name ending another name as its tail, and a field table packed into the widths chosen."""
+    import itertools
     from dataclasses import replace
 
     from generator.targets.c import tables
@@ -105,10 +106,52 @@ def test_c_tables_fit_their_packing() -> None:
             assert text[offset:].split("\0", 1)[0] == name
     assert t.pools["field"].offsets["gyro_x"] == t.pools["field"].offsets["ugyro_x"] + 1
 
+    # One pool for the names of the accessors: each section lists its kind in enum order, the event
+    # section continues the command section, and a USW bit without a flag has the empty name.
+    sections = {s.kind: s for s in t.name_sections}
+    assert [s.first for s in t.name_sections] == [0, *itertools.accumulate(len(s.names) for s in t.name_sections)][:-1]
+    assert sections["command"].names == tuple(c.name for c in spec.commands)
+    assert sections["event"].first == len(spec.commands)
+    assert sections["answer"].names[1] == "ahrs_parameters_read"
+    assert spec.status_word is not None
+    flags = {f.bit: f.name for f in spec.status_word.flags}
+    assert sections["flag"].names == tuple(flags.get(bit, "") for bit in range(len(sections["flag"].names)))
+    distinct = {n for s in t.name_sections for n in s.names}
+    assert "" in sections["flag"].names and t.pools["name"].size < sum(len(n) + 1 for n in distinct)
+
     fp = c_target.field_packing(t)
     assert t.pools["field"].size <= 1 << (16 - fp.type_bits)
     assert max(r.bounds for r in t.fields) < 1 << fp.bounds_bits
     assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
+
+    # Rows of small tables: each column in the smallest type that holds it, widest first.
+    assert c_target.row_members({"a": [1, 2], "b": [0, 70000], "c": "float", "d": [-1, 300]}) == [
+        ("uint32_t", "b"), ("float", "c"), ("int16_t", "d"), ("uint8_t", "a")]
+    with pytest.raises(ValueError, match="no 32-bit C integer type"):
+        c_target.row_members({"a": [0, 1 << 40]})
+    assert [name for _, name in c_target.default_members(t)] == ["number", "field", "text", "integer"]
+
+
+def test_c_state_table_is_sparse_and_fits_its_packing() -> None:
+    """The C state table: each state's default cell plus the cells that differ from it give back
+    every cell; entries and outcomes fit the widths chosen, and a machine too big is refused."""
+    from generator.targets.c import machine
+
+    m = machine.build_machine(build_spec())
+    assert m is not None
+    p = m.packing
+    rebuilt = [[m.defaults[s]] * len(m.events) for s in range(len(m.states))]
+    for s, e, cell in m.exceptions:
+        assert cell != m.defaults[s]
+        rebuilt[s][e] = cell
+        assert ((s * len(m.events) + e) << p.cell_bits | cell) < 1 << int(p.exception_type[4:-2])
+    assert rebuilt == m.cells
+    assert len(m.exceptions) < sum(1 for row in m.cells for cell in row if cell)
+    assert max(max(row) for row in m.cells) < 1 << p.cell_bits
+    assert all((o.to << p.sequence_bits | o.sequence) < 1 << int(p.outcome_type[4:-2]) for o in m.outcomes)
+    assert (p.exception_type, p.outcome_type) == ("uint16_t", "uint8_t")
+    with pytest.raises(ValueError, match="more than the C table's 32"):
+        machine.machine_packing(states=1 << 14, events=1 << 12, outcomes=1000, sequences=4)
 
 
 def test_c_double_keys_order_like_doubles() -> None:

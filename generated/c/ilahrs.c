@@ -38,7 +38,8 @@
 
 /* ---- Tables --------------------------------------------------------------------------- */
 
-/* Names, one pool per kind of name (NUL-separated); tables hold offsets into them. */
+/* Names (NUL-separated pools; tables hold offsets into them). The names errors report have a
+ * pool per kind, so that a firmware links only the ones it reports. */
 static const char ilahrs_error_names[159] =
     "truncated\000"
     "bad_header\000"
@@ -140,7 +141,39 @@ static const char ilahrs_sentence_names[39] =
 static const char ilahrs_date_names[5] =
     "date";
 
-static const char ilahrs_command_names[264] =
+
+#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
+#define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
+#define FIELD_NAME(offset) (ilahrs_field_names + (offset))
+#define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
+#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
+#define NAME_FRAME_RESERVED FRAME_NAME(28)
+#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
+#define NAME_FRAME_HEADER FRAME_NAME(0)
+#define NAME_FRAME_PAYLOAD FRAME_NAME(7)
+#define NAME_FRAME_CHECKSUM FRAME_NAME(52)
+#define NAME_DATE (ilahrs_date_names + 0)
+
+static const uint8_t ilahrs_error_offsets[] = {
+    0, /* truncated */
+    10, /* bad_header */
+    21, /* bad_message_type */
+    38, /* bad_length */
+    49, /* bad_checksum */
+    62, /* trailing_data */
+    76, /* unknown_command */
+    92, /* out_of_range */
+    105, /* malformed */
+    115, /* buffer_too_small */
+    132, /* unexpected_message */
+    151, /* timeout */
+};
+
+/* Every other name, for the name accessors and by-name lookups, in one pool (a name that ends
+ * another is stored once, as its tail), and their offsets in one table: one section per kind, in
+ * the order of the kind's enum, starting at NAMES_<kind>. A USW bit without a flag has the empty
+ * name. Event names are the command names, then those of the other events. */
+static const char ilahrs_name_names[1314] =
     "AHRScont1\000"
     "AHRScont2\000"
     "AHRScont3\000"
@@ -166,9 +199,24 @@ static const char ilahrs_command_names[264] =
     "AcceptClb\000"
     "ExitClb\000"
     "ClearClb\000"
-    "GetClbRes";
-
-static const char ilahrs_payload_names[258] =
+    "GetClbRes\000"
+    "parameter_block\000"
+    "other_message\000"
+    "unknown\000"
+    "block_timeout\000"
+    "alignment_done\000"
+    "accumulation_done\000"
+    "output_due\000"
+    "g300_a2_tmga\000"
+    "g300_a6_tmga\000"
+    "sn_11ac0001_0009\000"
+    "g300_a2_tga\000"
+    "AHRS-G300-A2-TMGA-C1-V1.1\000"
+    "AHRS-G300-A6-TMGA-C1-V1.1\000"
+    "AHRS s/n 11AC0001 - 11AC0009\000"
+    "AHRS-G300-A2-TGA-C1-V1.1\000"
+    "idle\000"
+    "calibration\000"
     "full_output\000"
     "quaternion\000"
     "orientation_sensors\000"
@@ -182,26 +230,7 @@ static const char ilahrs_payload_names[258] =
     "calibration_run_result\000"
     "calibration_run_parameters\000"
     "calibration_status\000"
-    "acknowledgement";
-
-static const char ilahrs_variant_names[161] =
-    "g300_a2_tmga\000"
-    "AHRS-G300-A2-TMGA-C1-V1.1\000"
-    "g300_a6_tmga\000"
-    "AHRS-G300-A6-TMGA-C1-V1.1\000"
-    "sn_11ac0001_0009\000"
-    "AHRS s/n 11AC0001 - 11AC0009\000"
-    "g300_a2_tga\000"
-    "AHRS-G300-A2-TGA-C1-V1.1";
-
-static const char ilahrs_mode_names[45] =
-    "idle\000"
-    "continuous\000"
-    "on_request\000"
-    "calibration\000"
-    "sleep";
-
-static const char ilahrs_flag_names[272] =
+    "acknowledgement\000"
     "initial_alignment_failed\000"
     "parameters_incorrect\000"
     "gyro_failure\000"
@@ -215,13 +244,9 @@ static const char ilahrs_flag_names[272] =
     "y_rate_exceeded\000"
     "z_rate_exceeded\000"
     "large_magnetic_field\000"
-    "temperature_out_of_range";
-
-static const char ilahrs_state_names[240] =
-    "idle\000"
+    "temperature_out_of_range\000"
     "aligning_continuous\000"
     "aligning_on_request\000"
-    "sleep\000"
     "calibration_awaiting_parameters\000"
     "calibration_aligning\000"
     "calibration_accumulating\000"
@@ -230,97 +255,36 @@ static const char ilahrs_state_names[240] =
     "runs_ready\000"
     "run_awaiting_parameters\000"
     "run_aligning\000"
-    "run_accumulating";
-
-static const char ilahrs_event_names[96] =
-    "parameter_block\000"
-    "other_message\000"
-    "unknown\000"
-    "block_timeout\000"
-    "alignment_done\000"
-    "accumulation_done\000"
-    "output_due";
-
-static const char ilahrs_answer_names[152] =
+    "run_accumulating\000"
     "ack\000"
-    "ahrs_parameters_read\000"
-    "firmware_version\000"
-    "bit_result\000"
-    "calibration_status\000"
-    "initial_alignment\000"
-    "output\000"
-    "output_sleep\000"
-    "calibration_result\000"
-    "calibration_run_result";
+    "output_sleep";
 
-
-#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
-#define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
-#define FIELD_NAME(offset) (ilahrs_field_names + (offset))
-#define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
-#define COMMAND_NAME(offset) (ilahrs_command_names + (offset))
-#define PAYLOAD_NAME(offset) (ilahrs_payload_names + (offset))
-#define VARIANT_NAME(offset) (ilahrs_variant_names + (offset))
-#define MODE_NAME(offset) (ilahrs_mode_names + (offset))
-#define FLAG_NAME(offset) (ilahrs_flag_names + (offset))
-#define STATE_NAME(offset) (ilahrs_state_names + (offset))
-#define EVENT_NAME(offset) (ilahrs_event_names + (offset))
-#define ANSWER_NAME(offset) (ilahrs_answer_names + (offset))
-#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
-#define NAME_FRAME_RESERVED FRAME_NAME(28)
-#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
-#define NAME_FRAME_HEADER FRAME_NAME(0)
-#define NAME_FRAME_PAYLOAD FRAME_NAME(7)
-#define NAME_FRAME_CHECKSUM FRAME_NAME(52)
-#define NAME_DATE (ilahrs_date_names + 0)
-
-static const uint8_t ilahrs_error_offsets[] = {
-    0, /* truncated */
-    10, /* bad_header */
-    21, /* bad_message_type */
-    38, /* bad_length */
-    49, /* bad_checksum */
-    62, /* trailing_data */
-    76, /* unknown_command */
-    92, /* out_of_range */
-    105, /* malformed */
-    115, /* buffer_too_small */
-    132, /* unexpected_message */
-    151, /* timeout */
+static const uint16_t ilahrs_name_offsets[101] = {
+    /* command */ 0, 10, 20, 30, 39, 48, 57, 66, 74, 85, 90, 102, 114, 125, 137, 152, 159, 170, 183, 194, 206, 217, 227, 237, 245, 254,
+    /* event */ 264, 280, 294, 302, 316, 331, 349,
+    /* variant */ 360, 373, 386, 403,
+    /* part_number */ 415, 441, 467, 496,
+    /* mode */ 521, 1077, 1097, 526, 1308,
+    /* payload */ 538, 550, 561, 581, 599, 620, 641, 658, 669, 692, 711, 734, 761, 780,
+    /* flag */ 796, 821, 842, 855, 877, 898, 918, 9, 935, 954, 974, 990, 1006, 1022, 1043,
+    /* state */ 521, 1120, 1068, 1077, 1088, 1097, 1308, 1108, 1140, 1161, 1186, 1207, 1232, 1243, 1267, 1280,
+    /* answer */ 1297, 620, 641, 658, 761, 581, 543, 1301, 692, 711,
 };
+#define NAMES_COMMAND 0u
+#define NAMES_EVENT 26u
+#define NAMES_VARIANT 33u
+#define NAMES_PART_NUMBER 37u
+#define NAMES_MODE 41u
+#define NAMES_PAYLOAD 46u
+#define NAMES_FLAG 60u
+#define NAMES_STATE 75u
+#define NAMES_ANSWER 91u
+#define NAMES_FLAG_COUNT 15u /* one per USW bit up to the last flag */
+typedef char ilahrs_check_event_names[NAMES_EVENT == NAMES_COMMAND + ILAHRS_COMMAND_COUNT ? 1 : -1];
 
 /* Command table (Table C.1), one array per column so that a firmware links only the columns it
- * uses: name, code, modes it is valid in, response, parameter block, payload tables of a data
+ * uses: code, modes it is valid in, response, parameter block, payload tables of a data
  * response. */
-static const uint16_t ilahrs_command_name_offsets[ILAHRS_COMMAND_COUNT] = {
-    0, /* AHRScont1 */
-    10, /* AHRScont2 */
-    20, /* AHRScont3 */
-    30, /* AHRSreq1 */
-    39, /* AHRSreq2 */
-    48, /* AHRSreq3 */
-    57, /* NMEAcont */
-    66, /* NMEAreq */
-    74, /* GetDataReq */
-    85, /* Stop */
-    90, /* LoadAHRSPar */
-    102, /* ReadAHRSPar */
-    114, /* LowPowerOn */
-    125, /* LowPowerOff */
-    137, /* GetVerFirmware */
-    152, /* GetBIT */
-    159, /* Start2DClb */
-    170, /* Start2D2TClb */
-    183, /* Start3DClb */
-    194, /* StartClbRun */
-    206, /* StopClbRun */
-    217, /* FinishClb */
-    227, /* AcceptClb */
-    237, /* ExitClb */
-    245, /* ClearClb */
-    254, /* GetClbRes */
-};
-
 static const uint8_t ilahrs_command_codes[ILAHRS_COMMAND_COUNT] = {
 0x80, 0x82, 0x83, 0x84, 0x86, 0x87, 0x88, 0x89, 0xCA, 0xFE, 0x40, 0x41, 0xB0, 0xBA, 0x1F, 0x1A, 0x21, 0x22, 0x23, 0x2B, 0x20, 0x2C, 0x2E, 0xFE, 0x2F, 0x2A
 };
@@ -450,7 +414,7 @@ static const uint8_t ilahrs_commands_by_code[ILAHRS_COMMAND_COUNT] = {
 #define CODE_DEFAULT_COUNT 1u
 static const uint8_t ilahrs_code_defaults[1] = { ILAHRS_COMMAND_STOP };
 
-/* Variant parameters (KG, KA), names and part numbers. */
+/* Variant parameters (KG, KA). */
 static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
     { 100, 10000 }, /* g300_a2_tmga */
     { 100, 5000 }, /* g300_a6_tmga */
@@ -458,33 +422,6 @@ static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
     { 100, 10000 }, /* g300_a2_tga */
 };
 
-static const uint8_t ilahrs_variant_offsets[ILAHRS_VARIANT_COUNT][2] = {
-    { 0, 13 },
-    { 39, 52 },
-    { 78, 95 },
-    { 124, 136 },
-};
-
-/* USW flags: bit and name. */
-static const struct {
-    uint8_t bit;
-    uint16_t name;
-} ilahrs_usw_flags[14] = {
-    { 0, 0 },
-    { 1, 25 },
-    { 2, 46 },
-    { 3, 59 },
-    { 4, 81 },
-    { 5, 102 },
-    { 6, 122 },
-    { 8, 139 },
-    { 9, 158 },
-    { 10, 178 },
-    { 11, 194 },
-    { 12, 210 },
-    { 13, 226 },
-    { 14, 247 },
-};
 
 /* Builder checks, inclusive; row 0 of each table means "no check: the C type is the range".
  * Integer fields compare as integers; float fields compare their float32 value with the
@@ -518,20 +455,21 @@ static const int32_t ilahrs_float_bounds[8][2] = {
 };
 
 
-/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
+/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides.
+ * Each column has the smallest type that holds it. */
 static const struct {
-    int32_t multiplier;
-    int32_t divisor;
+    uint16_t divisor;
+    uint8_t multiplier;
     uint8_t parameter;
 } ilahrs_scales[8] = {
     { 1, 1, 255 },
-    { 1, 100, 255 },
-    { 1, 1000, 255 },
-    { 1, 10000, 255 },
-    { 1, 10, 255 },
-    { 1, 0, 0 },
-    { 1, 0, 1 },
+    { 100, 1, 255 },
+    { 1000, 1, 255 },
+    { 10000, 1, 255 },
     { 10, 1, 255 },
+    { 0, 1, 0 },
+    { 0, 1, 1 },
+    { 1, 10, 255 },
 };
 
 /* ilahrs_field_info_t, unpacked. A field's type is its wire kind and an encoding a builder checks
@@ -701,50 +639,51 @@ static const ilahrs_field_info_t ilahrs_fields[131] = {
 };
 
 static const struct {
-    uint16_t name;
     uint8_t size;
     uint8_t field_count;
     uint8_t first_field;
-    uint16_t struct_size;
+    uint8_t struct_size; /* checked below */
 } ilahrs_payloads[ILAHRS_PAYLOAD_COUNT] = {
-    { 0, 34, 16, 0, (uint16_t)sizeof(ilahrs_full_output_t) },
-    { 12, 34, 11, 16, (uint16_t)sizeof(ilahrs_quaternion_t) },
-    { 23, 34, 16, 27, (uint16_t)sizeof(ilahrs_orientation_sensors_t) },
-    { 43, 50, 13, 43, (uint16_t)sizeof(ilahrs_initial_alignment_t) },
-    { 61, 50, 11, 56, (uint16_t)sizeof(ilahrs_ahrs_parameters_load_t) },
-    { 82, 50, 12, 67, (uint16_t)sizeof(ilahrs_ahrs_parameters_read_t) },
-    { 103, 50, 1, 79, (uint16_t)sizeof(ilahrs_firmware_version_t) },
-    { 120, 4, 2, 80, (uint16_t)sizeof(ilahrs_bit_result_t) },
-    { 131, 22, 6, 82, (uint16_t)sizeof(ilahrs_calibration_parameters_t) },
-    { 154, 52, 16, 88, (uint16_t)sizeof(ilahrs_calibration_result_t) },
-    { 173, 30, 9, 104, (uint16_t)sizeof(ilahrs_calibration_run_result_t) },
-    { 196, 6, 1, 113, (uint16_t)sizeof(ilahrs_calibration_run_parameters_t) },
-    { 223, 52, 16, 114, (uint16_t)sizeof(ilahrs_calibration_status_t) },
-    { 242, 2, 1, 130, (uint16_t)sizeof(ilahrs_acknowledgement_t) },
+    { 34, 16, 0, (uint8_t)sizeof(ilahrs_full_output_t) },
+    { 34, 11, 16, (uint8_t)sizeof(ilahrs_quaternion_t) },
+    { 34, 16, 27, (uint8_t)sizeof(ilahrs_orientation_sensors_t) },
+    { 50, 13, 43, (uint8_t)sizeof(ilahrs_initial_alignment_t) },
+    { 50, 11, 56, (uint8_t)sizeof(ilahrs_ahrs_parameters_load_t) },
+    { 50, 12, 67, (uint8_t)sizeof(ilahrs_ahrs_parameters_read_t) },
+    { 50, 1, 79, (uint8_t)sizeof(ilahrs_firmware_version_t) },
+    { 4, 2, 80, (uint8_t)sizeof(ilahrs_bit_result_t) },
+    { 22, 6, 82, (uint8_t)sizeof(ilahrs_calibration_parameters_t) },
+    { 52, 16, 88, (uint8_t)sizeof(ilahrs_calibration_result_t) },
+    { 30, 9, 104, (uint8_t)sizeof(ilahrs_calibration_run_result_t) },
+    { 6, 1, 113, (uint8_t)sizeof(ilahrs_calibration_run_parameters_t) },
+    { 52, 16, 114, (uint8_t)sizeof(ilahrs_calibration_status_t) },
+    { 2, 1, 130, (uint8_t)sizeof(ilahrs_acknowledgement_t) },
 };
 
-/* Builder defaults other than zero (the spec default, else the lowest value the range allows). */
+/* Builder defaults other than zero (the spec default, else the lowest value the range allows):
+ * the field's row, the field-name pool offset of a char default (0: none, numeric), the default
+ * of an integer field and of a float field. Each column has the smallest type that holds it. */
 static const struct {
+    float number;
     uint8_t field;
-    uint16_t text; /* 0 with no text: numeric */
-    int32_t integer;  /* integer fields */
-    float number;     /* float fields */
+    uint8_t text;
+    uint8_t integer;
 } ilahrs_defaults[11] = {
-    { 56, 0, 100, 0.0f }, /* ahrs_parameters_load.update_rate */
-    { 57, 0, 30, 0.0f }, /* ahrs_parameters_load.alignment_time */
-    { 62, 0, 0, 1900.002685546875f }, /* ahrs_parameters_load.date */
-    { 67, 0, 1, 0.0f }, /* ahrs_parameters_read.update_rate */
-    { 68, 0, 1, 0.0f }, /* ahrs_parameters_read.alignment_time */
-    { 73, 0, 0, 1900.002685546875f }, /* ahrs_parameters_read.date */
-    { 83, 0, 1, 0.0f }, /* calibration_parameters.accumulation_time */
-    { 87, 0, 0, 1900.002685546875f }, /* calibration_parameters.date */
-    { 88, 0, 1, 0.0f }, /* calibration_result.calibration_type */
-    { 104, 0, 2, 0.0f }, /* calibration_run_result.calibration_type */
-    { 105, 0, 1, 0.0f }, /* calibration_run_result.run */
+    { 0.0f, 56, 0, 100 }, /* ahrs_parameters_load.update_rate */
+    { 0.0f, 57, 0, 30 }, /* ahrs_parameters_load.alignment_time */
+    { 1900.002685546875f, 62, 0, 0 }, /* ahrs_parameters_load.date */
+    { 0.0f, 67, 0, 1 }, /* ahrs_parameters_read.update_rate */
+    { 0.0f, 68, 0, 1 }, /* ahrs_parameters_read.alignment_time */
+    { 1900.002685546875f, 73, 0, 0 }, /* ahrs_parameters_read.date */
+    { 0.0f, 83, 0, 1 }, /* calibration_parameters.accumulation_time */
+    { 1900.002685546875f, 87, 0, 0 }, /* calibration_parameters.date */
+    { 0.0f, 88, 0, 1 }, /* calibration_result.calibration_type */
+    { 0.0f, 104, 0, 2 }, /* calibration_run_result.calibration_type */
+    { 0.0f, 105, 0, 1 }, /* calibration_run_result.run */
 };
 #define DEFAULT_COUNT 11u
 
-/* C99 compile-time checks: struct offsets fit ilahrs_field_info_t.member. */
+/* C99 compile-time checks: struct sizes and offsets fit ilahrs_payloads and ilahrs_field_info_t.member. */
 typedef char ilahrs_check_full_output[sizeof(ilahrs_full_output_t) <= 255 ? 1 : -1];
 typedef char ilahrs_check_quaternion[sizeof(ilahrs_quaternion_t) <= 255 ? 1 : -1];
 typedef char ilahrs_check_orientation_sensors[sizeof(ilahrs_orientation_sensors_t) <= 255 ? 1 : -1];
@@ -930,6 +869,34 @@ static bool equal_name(const char *name, size_t len, const char *known)
     return known[len] == '\0';
 }
 
+/* Out of line in the size build: a call is smaller than the copy the compiler would inline into
+ * each name accessor. */
+#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
+/* Entry `index` of the `count` names of the section at `first` of ilahrs_name_offsets, NULL
+ * when out of range. Every name accessor but the error kind's is this one call. */
+static NOINLINE const char *name_at(unsigned index, unsigned first, unsigned count)
+{
+    return index < count ? ilahrs_name_names + ilahrs_name_offsets[first + index] : NULL;
+}
+
+/* The index of the `len` characters at `name` among the `count` names of the section at `first`,
+ * or -1. */
+static int name_index(const char *name, size_t len, unsigned first, unsigned count)
+{
+    unsigned i;
+    for (i = 0; i < count; i++) {
+        if (equal_name(name, len, ilahrs_name_names + ilahrs_name_offsets[first + i])) {
+            return (int)i;
+        }
+    }
+    return -1;
+}
+
 /* ---- Errors ---------------------------------------------------------------------------- */
 
 const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind)
@@ -1074,13 +1041,12 @@ size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap,
 
 const char *ilahrs_mode_name(ilahrs_mode_t mode)
 {
-    static const uint8_t names[ILAHRS_MODE_COUNT] = { 0, 5, 16, 27, 39 };
-    return (unsigned)mode < ILAHRS_MODE_COUNT ? MODE_NAME(names[mode]) : NULL;
+    return name_at((unsigned)mode, NAMES_MODE, ILAHRS_MODE_COUNT);
 }
 
 const char *ilahrs_command_name(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? COMMAND_NAME(ilahrs_command_name_offsets[command]) : NULL;
+    return name_at((unsigned)command, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
 }
 
 uint8_t ilahrs_command_code(ilahrs_command_t command)
@@ -1090,14 +1056,12 @@ uint8_t ilahrs_command_code(ilahrs_command_t command)
 
 bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *command, ilahrs_error_t *err)
 {
-    unsigned i;
-    for (i = 0; i < ILAHRS_COMMAND_COUNT; i++) {
-        if (equal_name(name, len, COMMAND_NAME(ilahrs_command_name_offsets[i]))) {
-            *command = (ilahrs_command_t)i;
-            return true;
-        }
+    int i = name_index(name, len, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
+    if (i < 0) {
+        return fail(err, ILAHRS_ERR_UNKNOWN_COMMAND, ILAHRS_NO_OFFSET, NULL);
     }
-    return fail(err, ILAHRS_ERR_UNKNOWN_COMMAND, ILAHRS_NO_OFFSET, NULL);
+    *command = (ilahrs_command_t)i;
+    return true;
 }
 
 uint8_t ilahrs_command_valid_in(ilahrs_command_t command)
@@ -1200,31 +1164,29 @@ int32_t ilahrs_variant_parameter(ilahrs_variant_t variant, ilahrs_variant_parame
 
 const char *ilahrs_variant_name(ilahrs_variant_t variant)
 {
-    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? VARIANT_NAME(ilahrs_variant_offsets[variant][0]) : NULL;
+    return name_at((unsigned)variant, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
 }
 
 const char *ilahrs_variant_part_number(ilahrs_variant_t variant)
 {
-    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? VARIANT_NAME(ilahrs_variant_offsets[variant][1]) : NULL;
+    return name_at((unsigned)variant, NAMES_PART_NUMBER, ILAHRS_VARIANT_COUNT);
 }
 
 bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *variant)
 {
-    unsigned i;
-    for (i = 0; i < ILAHRS_VARIANT_COUNT; i++) {
-        if (equal_name(name, len, VARIANT_NAME(ilahrs_variant_offsets[i][0]))) {
-            *variant = (ilahrs_variant_t)i;
-            return true;
-        }
+    int i = name_index(name, len, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
+    if (i < 0) {
+        return false;
     }
-    return false;
+    *variant = (ilahrs_variant_t)i;
+    return true;
 }
 
 /* ---- Payloads -------------------------------------------------------------------------- */
 
 const char *ilahrs_payload_name(ilahrs_payload_t payload)
 {
-    return payload >= 0 && payload < ILAHRS_PAYLOAD_COUNT ? PAYLOAD_NAME(ilahrs_payloads[payload].name) : NULL;
+    return name_at((unsigned)payload, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT); /* ILAHRS_PAYLOAD_NONE: out of range */
 }
 
 size_t ilahrs_payload_size(ilahrs_payload_t payload)
@@ -1252,14 +1214,12 @@ const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t
 
 bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload)
 {
-    int i;
-    for (i = 0; i < ILAHRS_PAYLOAD_COUNT; i++) {
-        if (equal_name(name, len, PAYLOAD_NAME(ilahrs_payloads[i].name))) {
-            *payload = (ilahrs_payload_t)i;
-            return true;
-        }
+    int i = name_index(name, len, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT);
+    if (i < 0) {
+        return false;
     }
-    return false;
+    *payload = (ilahrs_payload_t)i;
+    return true;
 }
 
 const char *ilahrs_field_name(const ilahrs_field_info_t *field)
@@ -1617,13 +1577,8 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
 
 const char *ilahrs_usw_flag_name(unsigned bit)
 {
-    unsigned i;
-    for (i = 0; i < 14u; i++) {
-        if (ilahrs_usw_flags[i].bit == bit) {
-            return FLAG_NAME(ilahrs_usw_flags[i].name);
-        }
-    }
-    return NULL;
+    const char *name = name_at(bit, NAMES_FLAG, NAMES_FLAG_COUNT);
+    return name != NULL && name[0] != '\0' ? name : NULL; /* empty: a bit without a flag */
 }
 
 /* ---- $PAHR sentences (Table 6.7, section 6.2) ---------------------------------------------------- */
@@ -2690,52 +2645,81 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 
 /* ---- Device state machine (6.1, 6.3, 6.4) --------------------------------------- */
 
-/* States: name, mode, the parameter block awaited (payload, -1: none), the event its timer fires
- * (ILAHRS_EVENT_COUNT: none). */
-static const struct {
-    uint8_t name;
-    uint8_t mode;
-    int8_t expects;
-    uint8_t timer;
-} ilahrs_states[ILAHRS_STATE_COUNT] = {
-    { 0, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* idle */
-    { 63, ILAHRS_MODE_IDLE, ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, ILAHRS_EVENT_COUNT }, /* awaiting_parameters */
-    { 5, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_continuous */
-    { 14, ILAHRS_MODE_CONTINUOUS, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_OUTPUT_DUE }, /* continuous */
-    { 25, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* aligning_on_request */
-    { 34, ILAHRS_MODE_ON_REQUEST, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* on_request */
-    { 45, ILAHRS_MODE_SLEEP, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* sleep */
-    { 51, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* calibration_awaiting_parameters */
-    { 83, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* calibration_aligning */
-    { 104, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* calibration_accumulating */
-    { 129, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* calibration_deciding */
-    { 150, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, ILAHRS_EVENT_COUNT }, /* runs_awaiting_parameters */
-    { 175, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_COUNT }, /* runs_ready */
-    { 186, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, ILAHRS_EVENT_COUNT }, /* run_awaiting_parameters */
-    { 210, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ALIGNMENT_DONE }, /* run_aligning */
-    { 223, ILAHRS_MODE_CALIBRATION, ILAHRS_PAYLOAD_NONE, ILAHRS_EVENT_ACCUMULATION_DONE }, /* run_accumulating */
+/* States, one array per column: mode, the parameter block awaited (payload, -1: none), the
+ * event its timer fires (ILAHRS_EVENT_COUNT: none). */
+static const uint8_t ilahrs_state_modes[ILAHRS_STATE_COUNT] = {
+    ILAHRS_MODE_IDLE, /* idle */
+    ILAHRS_MODE_IDLE, /* awaiting_parameters */
+    ILAHRS_MODE_CONTINUOUS, /* aligning_continuous */
+    ILAHRS_MODE_CONTINUOUS, /* continuous */
+    ILAHRS_MODE_ON_REQUEST, /* aligning_on_request */
+    ILAHRS_MODE_ON_REQUEST, /* on_request */
+    ILAHRS_MODE_SLEEP, /* sleep */
+    ILAHRS_MODE_CALIBRATION, /* calibration_awaiting_parameters */
+    ILAHRS_MODE_CALIBRATION, /* calibration_aligning */
+    ILAHRS_MODE_CALIBRATION, /* calibration_accumulating */
+    ILAHRS_MODE_CALIBRATION, /* calibration_deciding */
+    ILAHRS_MODE_CALIBRATION, /* runs_awaiting_parameters */
+    ILAHRS_MODE_CALIBRATION, /* runs_ready */
+    ILAHRS_MODE_CALIBRATION, /* run_awaiting_parameters */
+    ILAHRS_MODE_CALIBRATION, /* run_aligning */
+    ILAHRS_MODE_CALIBRATION, /* run_accumulating */
 };
 
-/* Names of the events that are not commands, from ILAHRS_COMMAND_COUNT on. */
-static const uint8_t ilahrs_event_offsets[ILAHRS_EVENT_COUNT - ILAHRS_COMMAND_COUNT] = { 0, 16, 30, 38, 52, 67, 85 };
+static const int8_t ilahrs_state_blocks[ILAHRS_STATE_COUNT] = {
+ILAHRS_PAYLOAD_NONE, /* idle */
+ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, /* awaiting_parameters */
+ILAHRS_PAYLOAD_NONE, /* aligning_continuous */
+ILAHRS_PAYLOAD_NONE, /* continuous */
+ILAHRS_PAYLOAD_NONE, /* aligning_on_request */
+ILAHRS_PAYLOAD_NONE, /* on_request */
+ILAHRS_PAYLOAD_NONE, /* sleep */
+ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* calibration_awaiting_parameters */
+ILAHRS_PAYLOAD_NONE, /* calibration_aligning */
+ILAHRS_PAYLOAD_NONE, /* calibration_accumulating */
+ILAHRS_PAYLOAD_NONE, /* calibration_deciding */
+ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* runs_awaiting_parameters */
+ILAHRS_PAYLOAD_NONE, /* runs_ready */
+ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, /* run_awaiting_parameters */
+ILAHRS_PAYLOAD_NONE, /* run_aligning */
+ILAHRS_PAYLOAD_NONE, /* run_accumulating */
+};
 
-/* Answers: name, payload table (-1: none), USW mode of an output answer (NO_USW_MODE: none). */
+static const uint8_t ilahrs_state_timers[ILAHRS_STATE_COUNT] = {
+ILAHRS_EVENT_COUNT, /* idle */
+ILAHRS_EVENT_COUNT, /* awaiting_parameters */
+ILAHRS_EVENT_ALIGNMENT_DONE, /* aligning_continuous */
+ILAHRS_EVENT_OUTPUT_DUE, /* continuous */
+ILAHRS_EVENT_ALIGNMENT_DONE, /* aligning_on_request */
+ILAHRS_EVENT_COUNT, /* on_request */
+ILAHRS_EVENT_COUNT, /* sleep */
+ILAHRS_EVENT_COUNT, /* calibration_awaiting_parameters */
+ILAHRS_EVENT_ALIGNMENT_DONE, /* calibration_aligning */
+ILAHRS_EVENT_ACCUMULATION_DONE, /* calibration_accumulating */
+ILAHRS_EVENT_COUNT, /* calibration_deciding */
+ILAHRS_EVENT_COUNT, /* runs_awaiting_parameters */
+ILAHRS_EVENT_COUNT, /* runs_ready */
+ILAHRS_EVENT_COUNT, /* run_awaiting_parameters */
+ILAHRS_EVENT_ALIGNMENT_DONE, /* run_aligning */
+ILAHRS_EVENT_ACCUMULATION_DONE, /* run_accumulating */
+};
+
+/* Answers: payload table (-1: none), USW mode of an output answer (NO_USW_MODE: none). */
 #define NO_USW_MODE 0xFFu
 static const struct {
-    uint8_t name;
     int8_t payload;
     uint8_t usw_mode;
 } ilahrs_answers[ILAHRS_ANSWER_COUNT] = {
-    { 0, ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* ack */
-    { 4, ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, NO_USW_MODE }, /* ahrs_parameters_read */
-    { 25, ILAHRS_PAYLOAD_FIRMWARE_VERSION, NO_USW_MODE }, /* firmware_version */
-    { 42, ILAHRS_PAYLOAD_BIT_RESULT, NO_USW_MODE }, /* bit_result */
-    { 53, ILAHRS_PAYLOAD_CALIBRATION_STATUS, NO_USW_MODE }, /* calibration_status */
-    { 72, ILAHRS_PAYLOAD_INITIAL_ALIGNMENT, NO_USW_MODE }, /* initial_alignment */
-    { 90, ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* output */
-    { 97, ILAHRS_PAYLOAD_NONE, ILAHRS_USW_MODE_SLEEP }, /* output_sleep */
-    { 110, ILAHRS_PAYLOAD_CALIBRATION_RESULT, NO_USW_MODE }, /* calibration_result */
-    { 129, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT, NO_USW_MODE }, /* calibration_run_result */
+    { ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* ack */
+    { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, NO_USW_MODE }, /* ahrs_parameters_read */
+    { ILAHRS_PAYLOAD_FIRMWARE_VERSION, NO_USW_MODE }, /* firmware_version */
+    { ILAHRS_PAYLOAD_BIT_RESULT, NO_USW_MODE }, /* bit_result */
+    { ILAHRS_PAYLOAD_CALIBRATION_STATUS, NO_USW_MODE }, /* calibration_status */
+    { ILAHRS_PAYLOAD_INITIAL_ALIGNMENT, NO_USW_MODE }, /* initial_alignment */
+    { ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* output */
+    { ILAHRS_PAYLOAD_NONE, ILAHRS_USW_MODE_SLEEP }, /* output_sleep */
+    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, NO_USW_MODE }, /* calibration_result */
+    { ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT, NO_USW_MODE }, /* calibration_run_result */
 };
 
 /* Answer sequences, one after the other; sequence k is ilahrs_sends[ilahrs_send_start[k] ..
@@ -2743,105 +2727,112 @@ static const struct {
 static const uint8_t ilahrs_sends[10] = { ILAHRS_ANSWER_ACK, ILAHRS_ANSWER_AHRS_PARAMETERS_READ, ILAHRS_ANSWER_FIRMWARE_VERSION, ILAHRS_ANSWER_BIT_RESULT, ILAHRS_ANSWER_CALIBRATION_STATUS, ILAHRS_ANSWER_INITIAL_ALIGNMENT, ILAHRS_ANSWER_OUTPUT, ILAHRS_ANSWER_OUTPUT_SLEEP, ILAHRS_ANSWER_CALIBRATION_RESULT, ILAHRS_ANSWER_CALIBRATION_RUN_RESULT };
 static const uint8_t ilahrs_send_start[12] = { 0, 1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
 
-/* The distinct outcomes of the table: next state, answer sequence. */
-static const struct {
-    uint8_t to;
-    uint8_t sends;
-} ilahrs_outcomes[27] = {
-    { ILAHRS_STATE_ALIGNING_CONTINUOUS, 0 }, /* 1: aligning_continuous, 0 */
-    { ILAHRS_STATE_ALIGNING_ON_REQUEST, 0 }, /* 2: aligning_on_request, 0 */
-    { ILAHRS_STATE_AWAITING_PARAMETERS, 1 }, /* 3: awaiting_parameters, nothing */
-    { ILAHRS_STATE_IDLE, 2 }, /* 4: idle, 1 */
-    { ILAHRS_STATE_IDLE, 3 }, /* 5: idle, 2 */
-    { ILAHRS_STATE_IDLE, 4 }, /* 6: idle, 3 */
-    { ILAHRS_STATE_ON_REQUEST, 4 }, /* 7: on_request, 3 */
-    { ILAHRS_STATE_SLEEP, 1 }, /* 8: sleep, nothing */
-    { ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, 1 }, /* 9: calibration_awaiting_parameters, nothing */
-    { ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, 1 }, /* 10: runs_awaiting_parameters, nothing */
-    { ILAHRS_STATE_IDLE, 0 }, /* 11: idle, 0 */
-    { ILAHRS_STATE_IDLE, 5 }, /* 12: idle, 4 */
-    { ILAHRS_STATE_IDLE, 1 }, /* 13: idle, nothing */
-    { ILAHRS_STATE_RUNS_READY, 1 }, /* 14: runs_ready, nothing */
-    { ILAHRS_STATE_CONTINUOUS, 6 }, /* 15: continuous, 5 */
-    { ILAHRS_STATE_ON_REQUEST, 6 }, /* 16: on_request, 5 */
-    { ILAHRS_STATE_CONTINUOUS, 7 }, /* 17: continuous, 6 */
-    { ILAHRS_STATE_ON_REQUEST, 7 }, /* 18: on_request, 6 */
-    { ILAHRS_STATE_SLEEP, 8 }, /* 19: sleep, 7 */
-    { ILAHRS_STATE_CALIBRATION_ALIGNING, 0 }, /* 20: calibration_aligning, 0 */
-    { ILAHRS_STATE_CALIBRATION_ACCUMULATING, 6 }, /* 21: calibration_accumulating, 5 */
-    { ILAHRS_STATE_CALIBRATION_DECIDING, 9 }, /* 22: calibration_deciding, 8 */
-    { ILAHRS_STATE_RUNS_READY, 0 }, /* 23: runs_ready, 0 */
-    { ILAHRS_STATE_RUN_AWAITING_PARAMETERS, 1 }, /* 24: run_awaiting_parameters, nothing */
-    { ILAHRS_STATE_RUN_ALIGNING, 0 }, /* 25: run_aligning, 0 */
-    { ILAHRS_STATE_RUN_ACCUMULATING, 6 }, /* 26: run_accumulating, 5 */
-    { ILAHRS_STATE_RUNS_READY, 10 }, /* 27: runs_ready, 9 */
+/* The distinct outcomes of the table: next state << SEQUENCE_BITS | answer sequence. */
+#define SEQUENCE_BITS 4u
+static const uint8_t ilahrs_outcomes[27] = {
+    (ILAHRS_STATE_ALIGNING_CONTINUOUS << SEQUENCE_BITS) | 0u, /* 1: aligning_continuous, 0 */
+    (ILAHRS_STATE_ALIGNING_ON_REQUEST << SEQUENCE_BITS) | 0u, /* 2: aligning_on_request, 0 */
+    (ILAHRS_STATE_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 3: awaiting_parameters, nothing */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 2u, /* 4: idle, 1 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 3u, /* 5: idle, 2 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 4u, /* 6: idle, 3 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 4u, /* 7: on_request, 3 */
+    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 1u, /* 8: sleep, nothing */
+    (ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 9: calibration_awaiting_parameters, nothing */
+    (ILAHRS_STATE_RUNS_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 10: runs_awaiting_parameters, nothing */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 0u, /* 11: idle, 0 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 5u, /* 12: idle, 4 */
+    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 1u, /* 13: idle, nothing */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 1u, /* 14: runs_ready, nothing */
+    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 6u, /* 15: continuous, 5 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 6u, /* 16: on_request, 5 */
+    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 7u, /* 17: continuous, 6 */
+    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 7u, /* 18: on_request, 6 */
+    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 8u, /* 19: sleep, 7 */
+    (ILAHRS_STATE_CALIBRATION_ALIGNING << SEQUENCE_BITS) | 0u, /* 20: calibration_aligning, 0 */
+    (ILAHRS_STATE_CALIBRATION_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 21: calibration_accumulating, 5 */
+    (ILAHRS_STATE_CALIBRATION_DECIDING << SEQUENCE_BITS) | 9u, /* 22: calibration_deciding, 8 */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 0u, /* 23: runs_ready, 0 */
+    (ILAHRS_STATE_RUN_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 24: run_awaiting_parameters, nothing */
+    (ILAHRS_STATE_RUN_ALIGNING << SEQUENCE_BITS) | 0u, /* 25: run_aligning, 0 */
+    (ILAHRS_STATE_RUN_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 26: run_accumulating, 5 */
+    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 10u, /* 27: runs_ready, 9 */
 };
 
-/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Events that lead to the
- * same outcomes in every state share a column: ilahrs_event_columns gives an event's column, and
- * ilahrs_cells holds each column's outcome by state. Events are the commands in ilahrs_command_t
- * order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
-static const uint8_t ilahrs_event_columns[ILAHRS_EVENT_COUNT] = {
-    0, /* AHRScont1 */
-    0, /* AHRScont2 */
-    0, /* AHRScont3 */
-    1, /* AHRSreq1 */
-    1, /* AHRSreq2 */
-    1, /* AHRSreq3 */
-    0, /* NMEAcont */
-    1, /* NMEAreq */
-    2, /* GetDataReq */
-    3, /* Stop */
-    4, /* LoadAHRSPar */
-    5, /* ReadAHRSPar */
-    6, /* LowPowerOn */
-    7, /* LowPowerOff */
-    8, /* GetVerFirmware */
-    9, /* GetBIT */
-    10, /* Start2DClb */
-    11, /* Start2D2TClb */
-    10, /* Start3DClb */
-    12, /* StartClbRun */
-    13, /* StopClbRun */
-    14, /* FinishClb */
-    15, /* AcceptClb */
-    16, /* ExitClb */
-    17, /* ClearClb */
-    18, /* GetClbRes */
-    19, /* parameter_block */
-    20, /* other_message */
-    20, /* unknown */
-    20, /* block_timeout */
-    21, /* alignment_done */
-    22, /* accumulation_done */
-    23, /* output_due */
-};
+/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Most events do the same
+ * in a state, so each state has a default cell, and ilahrs_cells lists the cells that differ from
+ * their state's default, by state and event: (state * ILAHRS_EVENT_COUNT + event) << CELL_BITS |
+ * cell. Events are the commands in ilahrs_command_t order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
+#define CELL_BITS 5u
+#define CELL_COUNT 65u
+static const uint8_t ilahrs_state_cells[ILAHRS_STATE_COUNT] = { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 };
 
-static const uint8_t ilahrs_cells[24][ILAHRS_STATE_COUNT] = {
-    { 1, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 2, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 18, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 13, 13, 13, 13, 13, 13, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 3, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 4, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 8, 13, 0, 19, 0, 8, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 13, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 5, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 6, 13, 0, 0, 0, 7, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 9, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 10, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 24, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 22, 0, 13, 0, 14, 0, 27 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 22, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 11, 13, 0, 14, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 11, 11, 11, 11, 11, 11, 11, 11, 11 },
-    { 11, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 12, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 11, 0, 0, 0, 0, 0, 20, 0, 0, 0, 23, 0, 25, 0, 0 },
-    { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 },
-    { 0, 0, 15, 0, 16, 0, 0, 0, 21, 0, 0, 0, 0, 0, 26, 0 },
-    { 0, 0, 0, 0, 0, 0, 0, 0, 0, 22, 0, 0, 0, 0, 0, 27 },
-    { 0, 0, 0, 17, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 },
+static const uint16_t ilahrs_cells[65] = {
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 0u) << CELL_BITS) | 1u, /* idle, AHRScont1 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 1u) << CELL_BITS) | 1u, /* idle, AHRScont2 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 2u) << CELL_BITS) | 1u, /* idle, AHRScont3 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 3u) << CELL_BITS) | 2u, /* idle, AHRSreq1 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 4u) << CELL_BITS) | 2u, /* idle, AHRSreq2 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 5u) << CELL_BITS) | 2u, /* idle, AHRSreq3 */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 6u) << CELL_BITS) | 1u, /* idle, NMEAcont */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 7u) << CELL_BITS) | 2u, /* idle, NMEAreq */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* idle, Stop */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 10u) << CELL_BITS) | 3u, /* idle, LoadAHRSPar */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 11u) << CELL_BITS) | 4u, /* idle, ReadAHRSPar */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* idle, LowPowerOn */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 14u) << CELL_BITS) | 5u, /* idle, GetVerFirmware */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 6u, /* idle, GetBIT */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 16u) << CELL_BITS) | 9u, /* idle, Start2DClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 17u) << CELL_BITS) | 10u, /* idle, Start2D2TClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 18u) << CELL_BITS) | 9u, /* idle, Start3DClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 24u) << CELL_BITS) | 11u, /* idle, ClearClb */
+    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 25u) << CELL_BITS) | 12u, /* idle, GetClbRes */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 11u, /* awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* awaiting_parameters, output_due */
+    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_continuous, Stop */
+    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 15u, /* aligning_continuous, alignment_done */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* continuous, Stop */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 19u, /* continuous, LowPowerOn */
+    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 17u, /* continuous, output_due */
+    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_on_request, Stop */
+    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 16u, /* aligning_on_request, alignment_done */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 8u) << CELL_BITS) | 18u, /* on_request, GetDataReq */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* on_request, Stop */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* on_request, LowPowerOn */
+    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 7u, /* on_request, GetBIT */
+    (((ILAHRS_STATE_SLEEP * ILAHRS_EVENT_COUNT) + 13u) << CELL_BITS) | 13u, /* sleep, LowPowerOff */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 20u, /* calibration_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_aligning, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 21u, /* calibration_aligning, alignment_done */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 22u, /* calibration_accumulating, StopClbRun */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_accumulating, ExitClb */
+    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 22u, /* calibration_accumulating, accumulation_done */
+    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 22u) << CELL_BITS) | 11u, /* calibration_deciding, AcceptClb */
+    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_deciding, ExitClb */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 23u, /* runs_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 19u) << CELL_BITS) | 24u, /* runs_ready, StartClbRun */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 21u) << CELL_BITS) | 22u, /* runs_ready, FinishClb */
+    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_ready, ExitClb */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_awaiting_parameters, ExitClb */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 25u, /* run_awaiting_parameters, parameter_block */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* run_awaiting_parameters, alignment_done */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* run_awaiting_parameters, accumulation_done */
+    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* run_awaiting_parameters, output_due */
+    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_aligning, ExitClb */
+    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 26u, /* run_aligning, alignment_done */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 27u, /* run_accumulating, StopClbRun */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_accumulating, ExitClb */
+    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 27u, /* run_accumulating, accumulation_done */
 };
 
 /* Rows that apply only to firmware before a version, and there take precedence. */
@@ -2861,63 +2852,56 @@ static const struct {
 
 const char *ilahrs_state_name(ilahrs_state_t state)
 {
-    return (unsigned)state < ILAHRS_STATE_COUNT ? STATE_NAME(ilahrs_states[state].name) : NULL;
+    return name_at((unsigned)state, NAMES_STATE, ILAHRS_STATE_COUNT);
 }
 
 bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state)
 {
-    unsigned i;
-    for (i = 0; i < ILAHRS_STATE_COUNT; i++) {
-        if (equal_name(name, len, STATE_NAME(ilahrs_states[i].name))) {
-            *state = (ilahrs_state_t)i;
-            return true;
-        }
+    int i = name_index(name, len, NAMES_STATE, ILAHRS_STATE_COUNT);
+    if (i < 0) {
+        return false;
     }
-    return false;
+    *state = (ilahrs_state_t)i;
+    return true;
 }
 
 ilahrs_mode_t ilahrs_state_mode(ilahrs_state_t state)
 {
-    return (ilahrs_mode_t)((unsigned)state < ILAHRS_STATE_COUNT ? ilahrs_states[state].mode : ILAHRS_MODE_COUNT);
+    return (ilahrs_mode_t)((unsigned)state < ILAHRS_STATE_COUNT ? ilahrs_state_modes[state] : ILAHRS_MODE_COUNT);
 }
 
 ilahrs_payload_t ilahrs_state_expects(ilahrs_state_t state)
 {
-    return (unsigned)state < ILAHRS_STATE_COUNT ? (ilahrs_payload_t)ilahrs_states[state].expects : ILAHRS_PAYLOAD_NONE;
+    return (unsigned)state < ILAHRS_STATE_COUNT ? (ilahrs_payload_t)ilahrs_state_blocks[state] : ILAHRS_PAYLOAD_NONE;
 }
 
 bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event)
 {
-    if ((unsigned)state >= ILAHRS_STATE_COUNT || ilahrs_states[state].timer == ILAHRS_EVENT_COUNT) {
+    if ((unsigned)state >= ILAHRS_STATE_COUNT || ilahrs_state_timers[state] == ILAHRS_EVENT_COUNT) {
         return false;
     }
-    *event = (ilahrs_event_t)ilahrs_states[state].timer;
+    *event = (ilahrs_event_t)ilahrs_state_timers[state];
     return true;
 }
 
 const char *ilahrs_event_name(ilahrs_event_t event)
 {
-    if ((unsigned)event < ILAHRS_COMMAND_COUNT) {
-        return ilahrs_command_name((ilahrs_command_t)event);
-    }
-    return (unsigned)event < ILAHRS_EVENT_COUNT ? EVENT_NAME(ilahrs_event_offsets[(unsigned)event - ILAHRS_COMMAND_COUNT]) : NULL;
+    return name_at((unsigned)event, NAMES_COMMAND, ILAHRS_EVENT_COUNT); /* commands, then the other events */
 }
 
 bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event)
 {
-    unsigned i;
-    for (i = 0; i < ILAHRS_EVENT_COUNT; i++) {
-        if (equal_name(name, len, ilahrs_event_name((ilahrs_event_t)i))) {
-            *event = (ilahrs_event_t)i;
-            return true;
-        }
+    int i = name_index(name, len, NAMES_COMMAND, ILAHRS_EVENT_COUNT);
+    if (i < 0) {
+        return false;
     }
-    return false;
+    *event = (ilahrs_event_t)i;
+    return true;
 }
 
 const char *ilahrs_answer_name(ilahrs_answer_t answer)
 {
-    return (unsigned)answer < ILAHRS_ANSWER_COUNT ? ANSWER_NAME(ilahrs_answers[answer].name) : NULL;
+    return name_at((unsigned)answer, NAMES_ANSWER, ILAHRS_ANSWER_COUNT);
 }
 
 ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer)
@@ -2936,7 +2920,7 @@ bool ilahrs_answer_usw_mode(ilahrs_answer_t answer, ilahrs_usw_mode_t *mode)
 
 ilahrs_event_t ilahrs_event_for_code(ilahrs_state_t state, uint8_t code)
 {
-    unsigned modes = (unsigned)state < ILAHRS_STATE_COUNT ? ILAHRS_MODE_BIT(ilahrs_states[state].mode) : 0u;
+    unsigned modes = (unsigned)state < ILAHRS_STATE_COUNT ? ILAHRS_MODE_BIT(ilahrs_state_modes[state]) : 0u;
     unsigned named = 0;
     unsigned only = 0;
     unsigned i;
@@ -2980,10 +2964,11 @@ ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t
 
 static bool outcome(unsigned k, ilahrs_step_t *out)
 {
-    unsigned from = ilahrs_send_start[ilahrs_outcomes[k].sends];
-    unsigned n = ilahrs_send_start[ilahrs_outcomes[k].sends + 1u] - from;
+    unsigned sends = ilahrs_outcomes[k] & ((1u << SEQUENCE_BITS) - 1u);
+    unsigned from = ilahrs_send_start[sends];
+    unsigned n = ilahrs_send_start[sends + 1u] - from;
     unsigned i;
-    out->to = (ilahrs_state_t)ilahrs_outcomes[k].to;
+    out->to = (ilahrs_state_t)(ilahrs_outcomes[k] >> SEQUENCE_BITS);
     out->send_count = (uint8_t)n;
     for (i = 0; i < n && i < ILAHRS_STEP_SEND_MAX; i++) {
         out->send[i] = (ilahrs_answer_t)ilahrs_sends[from + i];
@@ -3013,6 +2998,8 @@ static int legacy_row(unsigned state, unsigned event, const ilahrs_firmware_t *f
 static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, ilahrs_step_t *out)
 {
     unsigned cell;
+    unsigned key;
+    unsigned i;
     out->to = state;
     out->send_count = 0;
     if ((unsigned)state >= ILAHRS_STATE_COUNT || (unsigned)event >= ILAHRS_EVENT_COUNT) {
@@ -3021,7 +3008,14 @@ static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, i
     if (legacy >= 0) {
         return outcome(ilahrs_legacy[legacy].outcome, out);
     }
-    cell = ilahrs_cells[ilahrs_event_columns[event]][state];
+    cell = ilahrs_state_cells[state];
+    key = (unsigned)state * ILAHRS_EVENT_COUNT + (unsigned)event;
+    for (i = 0; i < CELL_COUNT; i++) {
+        if (ilahrs_cells[i] >> CELL_BITS == key) {
+            cell = ilahrs_cells[i] & ((1u << CELL_BITS) - 1u);
+            break;
+        }
+    }
     return cell != 0 && outcome(cell - 1u, out);
 }
 

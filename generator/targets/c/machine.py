@@ -1,15 +1,18 @@
 """The device state machine as compact C tables, derived from `spec.state_machine`.
 
-The C library looks a (state, event) pair up in one dense `uint8_t` matrix whose cells index a
-short list of distinct outcomes (next state, answer sequence); sequences index one flat list of
-answers. Rows marked `firmware_before` go to a separate list checked first. Events are the
-commands in `ilahrs_command_t` order (so a command's event has the command's value), then the
-spec's other events. Nothing here is written by hand: states, events, answers and every cell come
-from the model, in the model's order.
+The C library looks a (state, event) pair up in a sparse table whose cells index a short list of
+distinct outcomes (next state, answer sequence); sequences index one flat list of answers. Most
+events do the same in a state (nothing, or, while a parameter block is awaited, back to idle),
+so each state has a default cell and the table lists only the cells that differ from their
+state's default, as packed (state, event, cell) entries. Rows marked `firmware_before` go to a
+separate list checked first. Events are the commands in `ilahrs_command_t` order (so a command's
+event has the command's value), then the spec's other events. Nothing here is written by hand:
+states, events, answers and every cell come from the model, in the model's order.
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
 
 from generator.model import TIMER_EVENTS, Spec
@@ -48,6 +51,42 @@ class Answer:
     doc: str
 
 
+@dataclass(frozen=True)
+class MachinePacking:
+    """Bit widths of the packed C tables: an exception is (state * events + event) << cell_bits |
+    cell; an outcome is state << sequence_bits | sequence."""
+
+    cell_bits: int
+    key_bits: int
+    exception_type: str
+    sequence_bits: int
+    outcome_type: str
+
+
+def bits_for(count: int) -> int:
+    """Bits that hold the values 0 .. count - 1 (at least one)."""
+    return max(1, (count - 1).bit_length())
+
+
+def packed_type(bits: int, what: str) -> str:
+    if bits > 32:
+        raise ValueError(f"the state machine's {what} need {bits} bits: more than the C table's 32")
+    return "uint8_t" if bits <= 8 else "uint16_t" if bits <= 16 else "uint32_t"
+
+
+def machine_packing(states: int, events: int, outcomes: int, sequences: int) -> MachinePacking:
+    cell_bits = bits_for(outcomes + 1)  # outcome index + 1, 0: ignored
+    key_bits = bits_for(states * events)
+    sequence_bits = bits_for(sequences)
+    return MachinePacking(
+        cell_bits=cell_bits,
+        key_bits=key_bits,
+        exception_type=packed_type(key_bits + cell_bits, "table cells"),
+        sequence_bits=sequence_bits,
+        outcome_type=packed_type(bits_for(states) + sequence_bits, "outcomes"),
+    )
+
+
 @dataclass
 class Machine:
     states: list[str]
@@ -59,8 +98,9 @@ class Machine:
     flat_answers: list[int]
     outcomes: list[Outcome]
     cells: list[list[int]]  # [state][event] -> outcome index + 1, or IGNORED
-    columns: list[tuple[int, ...]]  # the distinct event columns of `cells`: [column][state]
-    event_column: list[int]  # per event: its column
+    defaults: list[int]  # per state: its most frequent cell
+    exceptions: list[tuple[int, int, int]]  # (state, event, cell) of the cells that differ from their default
+    packing: MachinePacking
     legacy: list[LegacyRow]
     send_max: int
     versions: list[tuple[int, ...]]
@@ -128,13 +168,13 @@ def build_machine(spec: Spec) -> Machine | None:
         elif cells[s][e] == IGNORED:
             cells[s][e] = k + 1
             wildcard[(s, e)] = t.wildcard
-    columns: list[tuple[int, ...]] = []
-    event_column: list[int] = []
-    for e in range(len(events)):
-        column = tuple(row[e] for row in cells)
-        if column not in columns:
-            columns.append(column)
-        event_column.append(columns.index(column))
+    defaults: list[int] = []
+    exceptions: list[tuple[int, int, int]] = []
+    for s, state_cells in enumerate(cells):
+        counts = Counter(state_cells)
+        default = max(sorted(counts), key=lambda cell: counts[cell])  # the most frequent, lowest on a tie
+        defaults.append(default)
+        exceptions.extend((s, e, cell) for e, cell in enumerate(state_cells) if cell != default)
     starts: list[int] = []
     flat: list[int] = []
     for seq in sequences:
@@ -155,8 +195,9 @@ def build_machine(spec: Spec) -> Machine | None:
         flat_answers=flat,
         outcomes=outcomes,
         cells=cells,
-        columns=columns,
-        event_column=event_column,
+        defaults=defaults,
+        exceptions=exceptions,
+        packing=machine_packing(len(states), len(events), len(outcomes), len(sequences)),
         legacy=legacy,
         send_max=max([1, *(len(s) for s in sequences)]),
         versions=versions,

@@ -2,9 +2,12 @@
 
 The C library is table-driven where that keeps it small on a microcontroller: one generic
 payload parser/builder walks a compact field table, one $PAHR codec walks a field table, and
-names live in string pools, one per kind of name, so that a firmware image links only the
-pools it uses. This module turns the model into those tables (deduplicated, in first-use
-order, so the output is stable); the templates only print them. Nothing here computes a wire
+names live in string pools. The names a firmware reports in errors (fields, frame parts, $PAHR
+fields, error kinds, the date) have a pool per kind, so that a firmware image links only the
+pools it uses; every other name (what the name accessors and by-name lookups return) shares one
+pool, `name`, whose offsets form one table of sections, one per kind. This module turns the
+model into those tables (deduplicated, in first-use order, so the output is stable); the
+templates only print them. Nothing here computes a wire
 offset: offsets come from `field.offset` (generator/layout.py).
 """
 
@@ -14,6 +17,8 @@ import struct
 from dataclasses import dataclass, field
 
 from generator.model import FLOAT32_MAX, PRIMITIVES, Field, Payload, Spec
+
+from . import machine
 
 # The parts of a frame that are not fields but that errors name (spec/README.md, "Frame decode").
 FRAME_HEADER_NAME = "header"
@@ -118,9 +123,20 @@ class DefaultRow:
     text: int  # field-name pool offset of a char default, or -1
 
 
+@dataclass(frozen=True)
+class NameSection:
+    """The names of one kind in the shared pool, in the order of the kind's C enum (a USW bit
+    without a flag has the empty name); `first` is the section's first entry in the offset table."""
+
+    kind: str
+    first: int
+    names: tuple[str, ...]
+
+
 @dataclass
 class Tables:
     pools: dict[str, StringPool]
+    name_sections: list[NameSection]
     int_bounds: list[Bounds]
     float_bounds: list[Bounds]
     scales: list[ScaleEntry]
@@ -129,6 +145,11 @@ class Tables:
     defaults: list[DefaultRow]
     encodings: tuple[str, ...] = ENCODINGS
     kinds: tuple[str, ...] = KINDS
+
+    @property
+    def name_count(self) -> int:
+        """Entries of the name offset table."""
+        return sum(len(s.names) for s in self.name_sections)
 
 
 def float32(value: float) -> float:
@@ -171,8 +192,7 @@ def build_tables(spec: Spec) -> Tables:
 
 
 def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
-    kinds = ("error", "frame", "field", "sentence", "date", "command", "payload", "variant", "mode", "flag",
-             "state", "event", "answer")
+    kinds = ("error", "frame", "field", "sentence", "date", "name")
     pools = {name: StringPool(name, None if known is None else known[name]) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
@@ -187,23 +207,34 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
             pools["sentence"].add(nf.name)
     if spec.date is not None:
         pools["date"].add("date")
-    for c in spec.commands:
-        pools["command"].add(c.name)
-    for v in spec.variants:
-        pools["variant"].add(v.name)
-        pools["variant"].add(v.part_number)
-    for m in spec.modes:
-        pools["mode"].add(m.name)
+    sections: list[NameSection] = []
+
+    def section(kind: str, entries: list[str]) -> None:
+        first = sections[-1].first + len(sections[-1].names) if sections else 0
+        sections.append(NameSection(kind, first, tuple(entries)))
+        for name in entries:
+            pools["name"].add(name)
+
+    # Events are the commands, then the state machine's own events: the event section follows the
+    # command section, so that event names are the command names read further.
+    m = machine.build_machine(spec)
+    section("command", [c.name for c in spec.commands])
+    if m is not None:
+        section("event", m.extra_events)
+    section("variant", [v.name for v in spec.variants])
+    section("part_number", [v.part_number for v in spec.variants])
+    section("mode", [mode.name for mode in spec.modes])
+    section("payload", [p.name for p in spec.payloads])
     if spec.status_word is not None:
+        by_bit = [""] * (max(flag.bit for flag in spec.status_word.flags) + 1)
         for flag in spec.status_word.flags:
-            pools["flag"].add(flag.name)
-    if spec.state_machine is not None:
-        for st in spec.state_machine.states:
-            pools["state"].add(st.name)
-        for ev in spec.state_machine.events:
-            pools["event"].add(ev.name)
-        for answer in spec.state_machine.sends:
-            pools["answer"].add(answer)
+            if not flag.name:
+                raise ValueError(f"USW bit {flag.bit}: the C name table needs a non-empty flag name")
+            by_bit[flag.bit] = flag.name
+        section("flag", by_bit)
+    if m is not None:
+        section("state", m.states)
+        section("answer", [a.name for a in m.answers])
 
     int_bounds: list[Bounds] = [Bounds(0.0, 0.0)]  # row 0: no check
     float_bounds: list[Bounds] = [Bounds(0.0, 0.0)]
@@ -213,7 +244,6 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     defaults: list[DefaultRow] = []
     parameters = [p.name for p in spec.variant_parameters]
     for p in spec.payloads:
-        pools["payload"].add(p.name)
         first[p.name] = len(rows)
         for f in p.fields:
             b = field_bounds(f)
@@ -246,6 +276,7 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
             )
     return Tables(
         pools=pools,
+        name_sections=sections,
         int_bounds=int_bounds,
         float_bounds=float_bounds,
         scales=scales,

@@ -117,6 +117,33 @@ def field_packing(t: tables.Tables) -> FieldPacking:
     )
 
 
+C_WIDTHS = {"int8_t": 1, "uint8_t": 1, "int16_t": 2, "uint16_t": 2, "int32_t": 4, "uint32_t": 4, "float": 4}
+
+
+def row_members(columns: dict[str, list[int] | str]) -> list[tuple[str, str]]:
+    """The members of a table row, (C type, name): a column of integers gets the smallest type that
+    holds them (a string is a fixed type); widest first, so that the row has no padding inside."""
+    members = [(kind if isinstance(kind, str) else filters.c_int_type(min(kind, default=0), max(kind, default=0)), name)
+               for name, kind in columns.items()]
+    return sorted(members, key=lambda m: -C_WIDTHS[m[0]])
+
+
+def scale_members(t: tables.Tables) -> list[tuple[str, str]]:
+    return row_members({"multiplier": [s.multiplier for s in t.scales], "divisor": [s.divisor for s in t.scales],
+                        "parameter": [s.parameter for s in t.scales]})
+
+
+def default_members(t: tables.Tables) -> list[tuple[str, str]]:
+    """ilahrs_defaults: the field's row, the field-name pool offset of a char default (0: none), the
+    integer default of an integer field, the float default of a float field."""
+    return row_members({
+        "field": [r.field for r in t.defaults],
+        "text": [max(r.text, 0) for r in t.defaults],
+        "integer": [int(r.number) for r in t.defaults if t.fields[r.field].field.is_integer],
+        "number": "float",
+    })
+
+
 def longest_sentence(nmea: Nmea) -> int:
     """Characters of the longest sentence ilahrs_pahr_build() writes for in-range values: a field
     is longest at one end of its range (the sign counts within the template width)."""
@@ -172,6 +199,8 @@ def outputs(spec: Spec) -> list[Output]:
         "pahr_saturated": PAHR_SATURATED,
         "pahr_longest": pahr_longest,
         "fp": field_packing(t),
+        "scale_members": scale_members(t),
+        "default_members": default_members(t),
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
     }
     return [
