@@ -5,12 +5,13 @@
 #   make test-c        unit tests under ASan+UBSan (gcc and clang), the sanitized conformance runner
 #                      (chunked and byte at a time, and the frames-only decoder against the full one),
 #                      brief libFuzzer runs, CMake build, the example
+#   make test-c-be     the same tests on a big-endian host (s390x under qemu-user)
 #   make bench-c       stream decoder throughput next to a byte-summing loop; writes build/bench/capture.bin
 #   make footprint-c   Cortex-M4 code and RAM sizes (arm-none-eabi-gcc)
 #   make fuzz-c        longer libFuzzer runs (FUZZ_SECONDS per target, default 60)
 #
-# Tools missing on a fresh machine (clang, its libFuzzer runtime, cmake, arm-none-eabi-gcc) are
-# installed with apt when needed.
+# Tools missing on a fresh machine (clang, its libFuzzer runtime, cmake, arm-none-eabi-gcc, the
+# s390x cross compiler and qemu-user) are installed with apt when needed.
 
 C_DIR := generated/c
 C_OUT := $(BUILD)/c
@@ -29,12 +30,12 @@ ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sec
 SETUP_TARGETS += setup-c
 BUILD_TARGETS += build-c
 LINT_TARGETS += lint-c
-TEST_TARGETS += test-c
+TEST_TARGETS += test-c test-c-be
 BENCH_TARGETS += bench-c
 FOOTPRINT_TARGETS += footprint-c
 FUZZ_TARGETS += fuzz-c
 
-.PHONY: setup-c build-c lint-c test-c bench-c footprint-c fuzz-c setup-c-arm
+.PHONY: setup-c build-c lint-c test-c test-c-be bench-c footprint-c fuzz-c setup-c-arm setup-c-be
 
 APT_INSTALL = (apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(1) >/dev/null)
 
@@ -185,6 +186,40 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	test -f $(C_OUT)/cmake/install/lib/pkgconfig/ilahrs.pc -o -f $(C_OUT)/cmake/install/lib64/pkgconfig/ilahrs.pc
 	$(C_OUT)/capture --size 200000 --seed 7 --out $(C_OUT)/example-capture.bin >/dev/null
 	$(C_OUT)/decode_capture $(C_OUT)/example-capture.bin | tail -1
+
+# --- big-endian host: s390x under qemu-user ---------------------------------------------------
+# The library converts between wire and host order whatever the host's byte order: the unit
+# tests, test_values and the conformance runner (speed and size builds, chunked and byte at a
+# time) run on a big-endian s390x, statically linked and run by qemu-user.
+
+BE_CC ?= s390x-linux-gnu-gcc
+BE_RUN ?= qemu-s390x
+C_BE := $(C_OUT)/be
+
+setup-c-be:
+	@command -v $(BE_CC) >/dev/null && command -v $(BE_RUN) >/dev/null \
+		|| $(call APT_INSTALL,gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user)
+
+$(C_BE)/test_ilahrs $(C_BE)/test_ilahrs_small: tests/c/test_ilahrs.c $(C_LIB) | setup-c-be
+	@mkdir -p $(@D)
+	$(BE_CC) $(C_STD) -O2 -static $(if $(findstring _small,$@),$(C_SMALL)) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_BE)/test_values: tests/c/test_values.c $(C_LIB) | setup-c-be
+	@mkdir -p $(@D)
+	$(BE_CC) $(C_STD) -O2 -static -I$(C_DIR) $< -lm -o $@
+
+$(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB) | setup-c-be
+	@mkdir -p $(@D)
+	$(BE_CC) $(C_STD) -O2 -static $(if $(findstring _small,$@),$(C_SMALL)) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+test-c-be: setup-c-be $(C_BE)/test_ilahrs $(C_BE)/test_ilahrs_small $(C_BE)/test_values \
+           $(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small $(C_OUT)/capture
+	$(BE_RUN) $(C_BE)/test_ilahrs
+	$(BE_RUN) $(C_BE)/test_ilahrs_small 0xC0DE
+	$(BE_RUN) $(C_BE)/test_values
+	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance" --name c-s390x
+	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance_small --bytewise" --name c-s390x-size-bytewise
+	$(PY) tests/c/differential.py $(C_OUT)/capture "$(BE_RUN) $(C_BE)/ilahrs_conformance" 4
 
 # --- bench, footprint, fuzz ----------------------------------------------------------------
 

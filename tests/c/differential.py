@@ -108,7 +108,8 @@ def sessions(runner: str, count: int) -> int:
                 tokens.append(f"E:{rng.choice(timers)}")
         lines.append(f"session {firmware or '-'} {','.join(tokens)}\n")
         expected.append(python_session(firmware, tokens))
-    answers = subprocess.run([runner], input="".join(lines), capture_output=True, text=True, check=True).stdout
+    answers = subprocess.run(shlex.split(runner), input="".join(lines), capture_output=True, text=True,
+                             check=True).stdout
     got = answers.splitlines()
     differ = sum(1 for a, b in zip(expected, got, strict=False) if a != b) + abs(len(expected) - len(got))
     print(f"sessions: {count} random sessions, {sum(len(x.split(',')) for x in lines)} events: "
