@@ -824,7 +824,15 @@ static void zero_bytes(void *dst, size_t n)
 #endif
 }
 
-static bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
+/* Optimized for size, every error path calls one copy of fail() rather than inline its three
+ * stores (over a dozen bytes at each of some fifty call sites). */
+#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
+static NOINLINE bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
 {
     if (err != NULL) {
         err->kind = kind;
