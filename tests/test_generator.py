@@ -135,3 +135,18 @@ def test_c_double_keys_order_like_doubles() -> None:
     for bound in tables.build_tables(build_spec()).float_bounds:
         for value in (bound.low, bound.high):
             assert from_key(filters.double_key(value)) == value
+
+
+def test_c_date_decoder_integers_fit() -> None:
+    """ilahrs_date_decode() measures distances in int32: the generator refuses a date encoding
+    whose values and dates would not fit (here years near 1, where a float32 has 23 fraction bits)."""
+    from dataclasses import replace
+
+    from generator.targets.c import target as c_target
+
+    spec = build_spec()
+    assert spec.date is not None
+    assert c_target.date_tables(spec) is not None
+    early = replace(spec, date=replace(spec.date, year_min=2, year_max=3))
+    with pytest.raises(ValueError, match="32-bit integers"):
+        c_target.date_tables(early)

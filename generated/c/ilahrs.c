@@ -1320,17 +1320,15 @@ float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *paylo
 
 bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64_t value, ilahrs_error_t *err)
 {
-    int64_t low = 0;
-    int64_t high = (int64_t)((((uint64_t)1) << (8 * field->size)) - 1u);
-    if (FIELD_KIND(field) == ILAHRS_KIND_SIGNED) {
-        high = (int64_t)((((uint64_t)1) << (8 * field->size - 1)) - 1u);
-        low = -high - 1;
+    /* The value fits the field if its low bytes, read back as the field's type, give it again. */
+    uint32_t bits = (uint32_t)(uint64_t)value;
+    if (is_integer(field)
+        && value == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size)
+                                                             : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * field->size))))) {
+        store_bits(ilahrs_field_member(field, payload), bits, field->size);
+        return true;
     }
-    if (!is_integer(field) || value < low || value > high) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
-    }
-    store_bits(ilahrs_field_member(field, payload), (uint32_t)(uint64_t)value, field->size);
-    return true;
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
@@ -1566,24 +1564,28 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
 #define DATE_DECODE_MIN_KEY 1156407296
 #define DATE_DECODE_MAX_KEY 1158254592
 #define DATE_EXPONENT 137u
+#define DATE_FRACTION_BITS (150u - DATE_EXPONENT)
+#define DATE_FRACTION_MASK ((1u << DATE_FRACTION_BITS) - 1u)
 
 bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
 {
     uint32_t bits;
-    uint32_t exponent;
-    uint64_t target;
-    uint64_t best = ~(uint64_t)0;
+    uint32_t fixed;
+    int32_t target;
+    uint32_t best = 0xFFFFFFFFu;
     int base;
     int year;
     memcpy(&bits, &value, sizeof bits);
     if (float_key(bits) < DATE_DECODE_MIN_KEY || float_key(bits) > DATE_DECODE_MAX_KEY) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
-    /* value = mantissa * 2^(exponent - 150): scaled by DATE_SCALE * 2^(150 - DATE_EXPONENT) it is
-     * an integer, and so is every date. */
-    exponent = (bits >> 23) & 0xFFu;
-    target = ((uint64_t)((bits & 0x7FFFFFu) | 0x800000u) * DATE_SCALE) << (exponent - DATE_EXPONENT);
-    base = (int)(((bits & 0x7FFFFFu) | 0x800000u) >> (150u - exponent)); /* floor(value) */
+    /* value = mantissa * 2^(exponent - 150): in units of 2^-DATE_FRACTION_BITS it is the integer
+     * `fixed`. Distances are measured from the year `base` in units of 1 / (DATE_SCALE *
+     * 2^DATE_FRACTION_BITS), where value and every date are integers (the generator checked that
+     * they fit an int32). */
+    fixed = ((bits & 0x7FFFFFu) | 0x800000u) << (((bits >> 23) & 0xFFu) - DATE_EXPONENT);
+    base = (int)(fixed >> DATE_FRACTION_BITS); /* floor(value) */
+    target = (int32_t)(fixed & DATE_FRACTION_MASK) * (int32_t)DATE_SCALE;
     for (year = base - 1; year <= base; year++) {
         int month;
         if (year < ILAHRS_DATE_YEAR_MIN || year > ILAHRS_DATE_YEAR_MAX) {
@@ -1592,8 +1594,8 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
         for (month = 1; month <= 12; month++) {
             int day;
             for (day = 1; day <= days_in_month(year, month); day++) {
-                uint64_t at = (uint64_t)date_scaled(year, month, day) << (150u - DATE_EXPONENT);
-                uint64_t distance = at > target ? at - target : target - at;
+                int32_t at = (date_scaled(year, month, day) - base * (int32_t)DATE_SCALE) * (int32_t)(DATE_FRACTION_MASK + 1u);
+                uint32_t distance = at > target ? (uint32_t)(at - target) : (uint32_t)(target - at);
                 if (distance < best) {
                     best = distance;
                     date->year = (int16_t)year;
@@ -1603,7 +1605,7 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
             }
         }
     }
-    if (best == ~(uint64_t)0) {
+    if (best == 0xFFFFFFFFu) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     return true;
@@ -2198,27 +2200,28 @@ static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
 
 bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
-    int64_t scaled[ILAHRS_PAHR_FIELD_COUNT];
+    ilahrs_pahr_t sentence; /* written to *out only if every field is in range */
     size_t k;
+    /* A NaN or an infinity in a decimal field is reported before any field out of range. */
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        if (!ilahrs_pahr_fields[k].hex && ((double_bits(values[k]) >> 52) & 0x7FFu) == 0x7FFu) {
+            goto out_of_range;
+        }
+    }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         uint64_t bits = double_bits(values[k]);
         bool hex = ilahrs_pahr_fields[k].hex != 0;
-        int64_t magnitude;
-        if (!hex && ((bits >> 52) & 0x7FFu) == 0x7FFu) { /* NaN or infinite */
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
+        int64_t magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        int64_t scaled = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+        if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
+            goto out_of_range;
         }
-        magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
-        scaled[k] = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)scaled, ilahrs_pahr_fields[k].size);
     }
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
-        }
-    }
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)scaled[k], ilahrs_pahr_fields[k].size);
-    }
+    *out = sentence;
     return true;
+out_of_range:
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
 }
 
 /* (double)n without floating-point code, for |n| < 2^53. */
