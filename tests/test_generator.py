@@ -150,3 +150,24 @@ def test_c_date_decoder_integers_fit() -> None:
     early = replace(spec, date=replace(spec.date, year_min=2, year_max=3))
     with pytest.raises(ValueError, match="32-bit integers"):
         c_target.date_tables(early)
+
+
+def test_c_member_bits() -> None:
+    """Builder defaults are stored as the bits of their struct member: a float's float32 bits, an
+    integer's two's complement in the member's size; an integer the member cannot hold is refused."""
+    from dataclasses import replace
+
+    from generator.model import PRIMITIVES
+    from generator.targets.c import filters
+
+    gyro = build_spec().payload("orientation_sensors").field("gyro_x")
+    signed16 = replace(gyro, type=PRIMITIVES["s16"], size=2)
+    unsigned8 = replace(gyro, type=PRIMITIVES["u8"], size=1)
+    float32 = replace(gyro, type=PRIMITIVES["f32"], size=4)
+    assert filters.c_member_bits(100, unsigned8) == "0x00000064u"
+    assert filters.c_member_bits(-2, signed16) == "0x0000FFFEu"
+    assert filters.c_member_bits(1900.002685546875, float32) == "0x44ED8016u"
+    assert filters.c_member_bits(0.1, float32) == "0x3DCCCCCDu"  # the float32 nearest, as C's (float)
+    for value, f in ((256, unsigned8), (-1, unsigned8), (32768, signed16), (1.5, signed16)):
+        with pytest.raises(ValueError):
+            filters.c_member_bits(value, f)

@@ -711,24 +711,24 @@ static const struct {
     { 242, 2, 1, 130, (uint16_t)sizeof(ilahrs_acknowledgement_t) },
 };
 
-/* Builder defaults other than zero (the spec default, else the lowest value the range allows). */
+/* Builder defaults other than zero (the spec default, else the lowest value the range allows):
+ * a char field's text, or the bits of a numeric field's member. */
 static const struct {
     uint8_t field;
     uint16_t text; /* 0 with no text: numeric */
-    int32_t integer;  /* integer fields */
-    float number;     /* float fields */
+    uint32_t bits; /* an integer's two's complement, a float's IEEE 754 bits */
 } ilahrs_defaults[11] = {
-    { 56, 0, 100, 0.0f }, /* ahrs_parameters_load.update_rate */
-    { 57, 0, 30, 0.0f }, /* ahrs_parameters_load.alignment_time */
-    { 62, 0, 0, 1900.002685546875f }, /* ahrs_parameters_load.date */
-    { 67, 0, 1, 0.0f }, /* ahrs_parameters_read.update_rate */
-    { 68, 0, 1, 0.0f }, /* ahrs_parameters_read.alignment_time */
-    { 73, 0, 0, 1900.002685546875f }, /* ahrs_parameters_read.date */
-    { 83, 0, 1, 0.0f }, /* calibration_parameters.accumulation_time */
-    { 87, 0, 0, 1900.002685546875f }, /* calibration_parameters.date */
-    { 88, 0, 1, 0.0f }, /* calibration_result.calibration_type */
-    { 104, 0, 2, 0.0f }, /* calibration_run_result.calibration_type */
-    { 105, 0, 1, 0.0f }, /* calibration_run_result.run */
+    { 56, 0, 0x00000064u }, /* ahrs_parameters_load.update_rate = 100 */
+    { 57, 0, 0x0000001Eu }, /* ahrs_parameters_load.alignment_time = 30 */
+    { 62, 0, 0x44ED8016u }, /* ahrs_parameters_load.date = 1900.002685546875f */
+    { 67, 0, 0x00000001u }, /* ahrs_parameters_read.update_rate = 1 */
+    { 68, 0, 0x00000001u }, /* ahrs_parameters_read.alignment_time = 1 */
+    { 73, 0, 0x44ED8016u }, /* ahrs_parameters_read.date = 1900.002685546875f */
+    { 83, 0, 0x00000001u }, /* calibration_parameters.accumulation_time = 1 */
+    { 87, 0, 0x44ED8016u }, /* calibration_parameters.date = 1900.002685546875f */
+    { 88, 0, 0x00000001u }, /* calibration_result.calibration_type = 1 */
+    { 104, 0, 0x00000002u }, /* calibration_run_result.calibration_type = 2 */
+    { 105, 0, 0x00000001u }, /* calibration_run_result.run = 1 */
 };
 #define DEFAULT_COUNT 11u
 
@@ -791,21 +791,6 @@ static void move_bytes(uint8_t *dst, const uint8_t *src, size_t n)
     }
 #else
     memmove(dst, src, n);
-#endif
-}
-
-/* The first byte `c` in p[0..n), or NULL (memchr). */
-static const uint8_t *find_byte(const uint8_t *p, size_t n, uint8_t c)
-{
-#if ILAHRS_OPTIMIZE_SIZE
-    for (; n > 0; n--, p++) {
-        if (*p == c) {
-            return p;
-        }
-    }
-    return NULL;
-#else
-    return (const uint8_t *)memchr(p, c, n);
 #endif
 }
 
@@ -993,20 +978,15 @@ static bool message_type_valid(uint32_t type)
 
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
 {
+    static const uint8_t header[ILAHRS_FRAME_HEADER_SIZE] = { ILAHRS_FRAME_HEADER_0, ILAHRS_FRAME_HEADER_1 };
     size_t total;
     size_t at;
     uint32_t length;
-    if (len < 1u) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
-    }
-    if (data[0] != ILAHRS_FRAME_HEADER_0) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, (NAME_FRAME_HEADER));
-    }
-    if (len < 2u) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
-    }
-    if (data[1] != ILAHRS_FRAME_HEADER_1) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 1, (NAME_FRAME_HEADER));
+    /* The header bytes that are there; a short frame is truncated just below. */
+    for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < len; at++) {
+        if (data[at] != header[at]) {
+            return fail(err, ILAHRS_ERR_BAD_HEADER, at, (NAME_FRAME_HEADER));
+        }
     }
     if (len < ILAHRS_FRAME_PAYLOAD_OFFSET) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
@@ -1409,17 +1389,15 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
         if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
-        if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
-            (void)ilahrs_field_set_float(f, out, ilahrs_defaults[i].number, NULL);
-        } else if (is_integer(f)) {
-            (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
-        } else if (FIELD_KIND(f) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
+        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR) {
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
-            for (n = 0; n < f->size && text[n] != '\0'; n++) {
+            for (n = 0; ilahrs_defaults[i].text != 0 && n < f->size && text[n] != '\0'; n++) {
                 member[n] = text[n];
             }
+        } else {
+            store_bits(ilahrs_field_member(f, out), ilahrs_defaults[i].bits, f->size);
         }
     }
 }
@@ -1932,37 +1910,27 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     const uint8_t *p = (const uint8_t *)text;
-    const uint8_t *cr = NULL;
     size_t i;
     size_t end;
-    if (len < 1) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, 0, NULL);
-    }
-    if (p[0] != PAHR_START) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, NULL);
-    }
-    for (i = 1; i < PAHR_PREFIX_LENGTH && i < len; i++) {
+    /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
+    for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
-            return fail(err, ILAHRS_ERR_BAD_HEADER, 1, NULL);
+            return fail(err, ILAHRS_ERR_BAD_HEADER, i != 0, NULL);
         }
     }
     if (len < PAHR_PREFIX_LENGTH) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     /* The first CR LF. */
-    for (i = PAHR_PREFIX_LENGTH; i + 1 < len; i = (size_t)(cr - p) + 1) {
-        cr = find_byte(p + i, len - 1 - i, PAHR_CR);
-        if (cr == NULL || cr[1] == PAHR_LF) {
-            break;
-        }
+    for (i = PAHR_PREFIX_LENGTH; i + 1 < len && !(p[i] == PAHR_CR && p[i + 1] == PAHR_LF); i++) {
     }
-    if (cr == NULL || i + 1 >= len) {
+    if (i + 1 >= len) {
         if (len > ILAHRS_PAHR_MAX_LENGTH) {
             return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
         }
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
-    end = (size_t)(cr - p) + 2;
+    end = i + 2;
     if (end > ILAHRS_PAHR_MAX_LENGTH) {
         return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
     }
