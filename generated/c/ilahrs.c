@@ -2042,11 +2042,12 @@ static int64_t double_key(uint64_t bits)
     return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
 }
 
-/* The bits of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
-static uint64_t int_bits(int64_t n)
+/* double_key() of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
+static int64_t int_key(int64_t n)
 {
     uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
     uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
+    int64_t magnitude;
     if (m == 0) {
         return 0;
     }
@@ -2054,7 +2055,8 @@ static uint64_t int_bits(int64_t n)
         m <<= 1;
         exponent--;
     }
-    return (n < 0 ? DOUBLE_SIGN : 0u) | ((exponent << 52) + m);
+    magnitude = (int64_t)((exponent << 52) + m);
+    return n < 0 ? -magnitude : magnitude;
 }
 
 /* The exact bounds of float fields, as double keys: `value >= low && value <= high` on doubles is
@@ -2094,8 +2096,8 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
         uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
         low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
         high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
-        low = double_key(int_bits(low));
-        high = double_key(int_bits(high));
+        low = int_key(low);
+        high = int_key(high);
         break;
     }
     default:
@@ -2179,12 +2181,16 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         uint64_t bits = double_bits(values[k]);
         bool hex = ilahrs_pahr_fields[k].hex != 0;
-        int64_t magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
-        int64_t scaled = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+        uint64_t magnitude = pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        int32_t scaled;
+        if (magnitude >= SATURATED) {
+            goto out_of_range; /* every range lies below SATURATED (checked by the generator) */
+        }
+        scaled = (bits & DOUBLE_SIGN) != 0 ? -(int32_t)magnitude : (int32_t)magnitude;
         if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
             goto out_of_range;
         }
-        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)scaled, ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
     }
     *out = sentence;
     return true;
@@ -2195,7 +2201,8 @@ out_of_range:
 /* (double)n without floating-point code, for |n| < 2^53. */
 static double int_double(int64_t n)
 {
-    uint64_t bits = int_bits(n);
+    int64_t key = int_key(n);
+    uint64_t bits = key < 0 ? DOUBLE_SIGN | (0u - (uint64_t)key) : (uint64_t)key;
     double value;
     memcpy(&value, &bits, sizeof value);
     return value;
