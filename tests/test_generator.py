@@ -129,7 +129,7 @@ def test_c_tables_fit_their_packing() -> None:
         ("uint32_t", "b"), ("float", "c"), ("int16_t", "d"), ("uint8_t", "a")]
     with pytest.raises(ValueError, match="no 32-bit C integer type"):
         c_target.row_members({"a": [0, 1 << 40]})
-    assert [name for _, name in c_target.default_members(t)] == ["number", "field", "text", "integer"]
+    assert [name for _, name in c_target.default_members(t)] == ["bits", "field", "text"]
 
 
 def test_c_state_table_is_sparse_and_fits_its_packing() -> None:
@@ -178,3 +178,39 @@ def test_c_double_keys_order_like_doubles() -> None:
     for bound in tables.build_tables(build_spec()).float_bounds:
         for value in (bound.low, bound.high):
             assert from_key(filters.double_key(value)) == value
+
+
+def test_c_date_decoder_integers_fit() -> None:
+    """ilahrs_date_decode() measures distances in int32: the generator refuses a date encoding
+    whose values and dates would not fit (here years near 1, where a float32 has 23 fraction bits)."""
+    from dataclasses import replace
+
+    from generator.targets.c import target as c_target
+
+    spec = build_spec()
+    assert spec.date is not None
+    assert c_target.date_tables(spec) is not None
+    early = replace(spec, date=replace(spec.date, year_min=2, year_max=3))
+    with pytest.raises(ValueError, match="32-bit integers"):
+        c_target.date_tables(early)
+
+
+def test_c_member_bits() -> None:
+    """Builder defaults are stored as the bits of their struct member: a float's float32 bits, an
+    integer's two's complement in the member's size; an integer the member cannot hold is refused."""
+    from dataclasses import replace
+
+    from generator.model import PRIMITIVES
+    from generator.targets.c import filters
+
+    gyro = build_spec().payload("orientation_sensors").field("gyro_x")
+    signed16 = replace(gyro, type=PRIMITIVES["s16"], size=2)
+    unsigned8 = replace(gyro, type=PRIMITIVES["u8"], size=1)
+    float32 = replace(gyro, type=PRIMITIVES["f32"], size=4)
+    assert filters.c_member_bits(100, unsigned8) == "0x00000064u"
+    assert filters.c_member_bits(-2, signed16) == "0x0000FFFEu"
+    assert filters.c_member_bits(1900.002685546875, float32) == "0x44ED8016u"
+    assert filters.c_member_bits(0.1, float32) == "0x3DCCCCCDu"  # the float32 nearest, as C's (float)
+    for value, f in ((256, unsigned8), (-1, unsigned8), (32768, signed16), (1.5, signed16)):
+        with pytest.raises(ValueError):
+            filters.c_member_bits(value, f)

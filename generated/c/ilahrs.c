@@ -661,25 +661,24 @@ static const struct {
 };
 
 /* Builder defaults other than zero (the spec default, else the lowest value the range allows):
- * the field's row, the field-name pool offset of a char default (0: none, numeric), the default
- * of an integer field and of a float field. Each column has the smallest type that holds it. */
+ * the field's row, the field-name pool offset of a char field's text (0: none, numeric), or the
+ * bits of a numeric field's member. Each column has the smallest type that holds it. */
 static const struct {
-    float number;
+    uint32_t bits;
     uint8_t field;
     uint8_t text;
-    uint8_t integer;
 } ilahrs_defaults[11] = {
-    { 0.0f, 56, 0, 100 }, /* ahrs_parameters_load.update_rate */
-    { 0.0f, 57, 0, 30 }, /* ahrs_parameters_load.alignment_time */
-    { 1900.002685546875f, 62, 0, 0 }, /* ahrs_parameters_load.date */
-    { 0.0f, 67, 0, 1 }, /* ahrs_parameters_read.update_rate */
-    { 0.0f, 68, 0, 1 }, /* ahrs_parameters_read.alignment_time */
-    { 1900.002685546875f, 73, 0, 0 }, /* ahrs_parameters_read.date */
-    { 0.0f, 83, 0, 1 }, /* calibration_parameters.accumulation_time */
-    { 1900.002685546875f, 87, 0, 0 }, /* calibration_parameters.date */
-    { 0.0f, 88, 0, 1 }, /* calibration_result.calibration_type */
-    { 0.0f, 104, 0, 2 }, /* calibration_run_result.calibration_type */
-    { 0.0f, 105, 0, 1 }, /* calibration_run_result.run */
+    { 0x00000064u, 56, 0 }, /* ahrs_parameters_load.update_rate = 100 */
+    { 0x0000001Eu, 57, 0 }, /* ahrs_parameters_load.alignment_time = 30 */
+    { 0x44ED8016u, 62, 0 }, /* ahrs_parameters_load.date = 1900.002685546875f */
+    { 0x00000001u, 67, 0 }, /* ahrs_parameters_read.update_rate = 1 */
+    { 0x00000001u, 68, 0 }, /* ahrs_parameters_read.alignment_time = 1 */
+    { 0x44ED8016u, 73, 0 }, /* ahrs_parameters_read.date = 1900.002685546875f */
+    { 0x00000001u, 83, 0 }, /* calibration_parameters.accumulation_time = 1 */
+    { 0x44ED8016u, 87, 0 }, /* calibration_parameters.date = 1900.002685546875f */
+    { 0x00000001u, 88, 0 }, /* calibration_result.calibration_type = 1 */
+    { 0x00000002u, 104, 0 }, /* calibration_run_result.calibration_type = 2 */
+    { 0x00000001u, 105, 0 }, /* calibration_run_result.run = 1 */
 };
 #define DEFAULT_COUNT 11u
 
@@ -745,21 +744,6 @@ static void move_bytes(uint8_t *dst, const uint8_t *src, size_t n)
 #endif
 }
 
-/* The first byte `c` in p[0..n), or NULL (memchr). */
-static const uint8_t *find_byte(const uint8_t *p, size_t n, uint8_t c)
-{
-#if ILAHRS_OPTIMIZE_SIZE
-    for (; n > 0; n--, p++) {
-        if (*p == c) {
-            return p;
-        }
-    }
-    return NULL;
-#else
-    return (const uint8_t *)memchr(p, c, n);
-#endif
-}
-
 /* Set n bytes to zero (memset). */
 static void zero_bytes(void *dst, size_t n)
 {
@@ -775,7 +759,15 @@ static void zero_bytes(void *dst, size_t n)
 #endif
 }
 
-static bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
+/* Optimized for size, every error path calls one copy of fail() rather than inline its three
+ * stores (over a dozen bytes at each of some fifty call sites). */
+#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
+static NOINLINE bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
 {
     if (err != NULL) {
         err->kind = kind;
@@ -964,20 +956,15 @@ static bool message_type_valid(uint32_t type)
 
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
 {
+    static const uint8_t header[ILAHRS_FRAME_HEADER_SIZE] = { ILAHRS_FRAME_HEADER_0, ILAHRS_FRAME_HEADER_1 };
     size_t total;
     size_t at;
     uint32_t length;
-    if (len < 1u) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
-    }
-    if (data[0] != ILAHRS_FRAME_HEADER_0) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, (NAME_FRAME_HEADER));
-    }
-    if (len < 2u) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
-    }
-    if (data[1] != ILAHRS_FRAME_HEADER_1) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 1, (NAME_FRAME_HEADER));
+    /* The header bytes that are there; a short frame is truncated just below. */
+    for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < len; at++) {
+        if (data[at] != header[at]) {
+            return fail(err, ILAHRS_ERR_BAD_HEADER, at, (NAME_FRAME_HEADER));
+        }
     }
     if (len < ILAHRS_FRAME_PAYLOAD_OFFSET) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
@@ -1284,17 +1271,15 @@ float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *paylo
 
 bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64_t value, ilahrs_error_t *err)
 {
-    int64_t low = 0;
-    int64_t high = (int64_t)((((uint64_t)1) << (8 * field->size)) - 1u);
-    if (FIELD_KIND(field) == ILAHRS_KIND_SIGNED) {
-        high = (int64_t)((((uint64_t)1) << (8 * field->size - 1)) - 1u);
-        low = -high - 1;
+    /* The value fits the field if its low bytes, read back as the field's type, give it again. */
+    uint32_t bits = (uint32_t)(uint64_t)value;
+    if (is_integer(field)
+        && value == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size)
+                                                             : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * field->size))))) {
+        store_bits(ilahrs_field_member(field, payload), bits, field->size);
+        return true;
     }
-    if (!is_integer(field) || value < low || value > high) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
-    }
-    store_bits(ilahrs_field_member(field, payload), (uint32_t)(uint64_t)value, field->size);
-    return true;
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
@@ -1375,17 +1360,15 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
         if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
-        if (FIELD_KIND(f) == ILAHRS_KIND_FLOAT) {
-            (void)ilahrs_field_set_float(f, out, ilahrs_defaults[i].number, NULL);
-        } else if (is_integer(f)) {
-            (void)ilahrs_field_set_int(f, out, ilahrs_defaults[i].integer, NULL);
-        } else if (FIELD_KIND(f) == ILAHRS_KIND_CHAR && ilahrs_defaults[i].text != 0) {
+        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR) {
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
-            for (n = 0; n < f->size && text[n] != '\0'; n++) {
+            for (n = 0; ilahrs_defaults[i].text != 0 && n < f->size && text[n] != '\0'; n++) {
                 member[n] = text[n];
             }
+        } else {
+            store_bits(ilahrs_field_member(f, out), ilahrs_defaults[i].bits, f->size);
         }
     }
 }
@@ -1530,24 +1513,28 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
 #define DATE_DECODE_MIN_KEY 1156407296
 #define DATE_DECODE_MAX_KEY 1158254592
 #define DATE_EXPONENT 137u
+#define DATE_FRACTION_BITS (150u - DATE_EXPONENT)
+#define DATE_FRACTION_MASK ((1u << DATE_FRACTION_BITS) - 1u)
 
 bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
 {
     uint32_t bits;
-    uint32_t exponent;
-    uint64_t target;
-    uint64_t best = ~(uint64_t)0;
+    uint32_t fixed;
+    int32_t target;
+    uint32_t best = 0xFFFFFFFFu;
     int base;
     int year;
     memcpy(&bits, &value, sizeof bits);
     if (float_key(bits) < DATE_DECODE_MIN_KEY || float_key(bits) > DATE_DECODE_MAX_KEY) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
-    /* value = mantissa * 2^(exponent - 150): scaled by DATE_SCALE * 2^(150 - DATE_EXPONENT) it is
-     * an integer, and so is every date. */
-    exponent = (bits >> 23) & 0xFFu;
-    target = ((uint64_t)((bits & 0x7FFFFFu) | 0x800000u) * DATE_SCALE) << (exponent - DATE_EXPONENT);
-    base = (int)(((bits & 0x7FFFFFu) | 0x800000u) >> (150u - exponent)); /* floor(value) */
+    /* value = mantissa * 2^(exponent - 150): in units of 2^-DATE_FRACTION_BITS it is the integer
+     * `fixed`. Distances are measured from the year `base` in units of 1 / (DATE_SCALE *
+     * 2^DATE_FRACTION_BITS), where value and every date are integers (the generator checked that
+     * they fit an int32). */
+    fixed = ((bits & 0x7FFFFFu) | 0x800000u) << (((bits >> 23) & 0xFFu) - DATE_EXPONENT);
+    base = (int)(fixed >> DATE_FRACTION_BITS); /* floor(value) */
+    target = (int32_t)(fixed & DATE_FRACTION_MASK) * (int32_t)DATE_SCALE;
     for (year = base - 1; year <= base; year++) {
         int month;
         if (year < ILAHRS_DATE_YEAR_MIN || year > ILAHRS_DATE_YEAR_MAX) {
@@ -1556,8 +1543,8 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
         for (month = 1; month <= 12; month++) {
             int day;
             for (day = 1; day <= days_in_month(year, month); day++) {
-                uint64_t at = (uint64_t)date_scaled(year, month, day) << (150u - DATE_EXPONENT);
-                uint64_t distance = at > target ? at - target : target - at;
+                int32_t at = (date_scaled(year, month, day) - base * (int32_t)DATE_SCALE) * (int32_t)(DATE_FRACTION_MASK + 1u);
+                uint32_t distance = at > target ? (uint32_t)(at - target) : (uint32_t)(target - at);
                 if (distance < best) {
                     best = distance;
                     date->year = (int16_t)year;
@@ -1567,7 +1554,7 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
             }
         }
     }
-    if (best == ~(uint64_t)0) {
+    if (best == 0xFFFFFFFFu) {
         return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     return true;
@@ -1889,37 +1876,27 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     const uint8_t *p = (const uint8_t *)text;
-    const uint8_t *cr = NULL;
     size_t i;
     size_t end;
-    if (len < 1) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, 0, NULL);
-    }
-    if (p[0] != PAHR_START) {
-        return fail(err, ILAHRS_ERR_BAD_HEADER, 0, NULL);
-    }
-    for (i = 1; i < PAHR_PREFIX_LENGTH && i < len; i++) {
+    /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
+    for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
-            return fail(err, ILAHRS_ERR_BAD_HEADER, 1, NULL);
+            return fail(err, ILAHRS_ERR_BAD_HEADER, i != 0, NULL);
         }
     }
     if (len < PAHR_PREFIX_LENGTH) {
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
     /* The first CR LF. */
-    for (i = PAHR_PREFIX_LENGTH; i + 1 < len; i = (size_t)(cr - p) + 1) {
-        cr = find_byte(p + i, len - 1 - i, PAHR_CR);
-        if (cr == NULL || cr[1] == PAHR_LF) {
-            break;
-        }
+    for (i = PAHR_PREFIX_LENGTH; i + 1 < len && !(p[i] == PAHR_CR && p[i + 1] == PAHR_LF); i++) {
     }
-    if (cr == NULL || i + 1 >= len) {
+    if (i + 1 >= len) {
         if (len > ILAHRS_PAHR_MAX_LENGTH) {
             return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
         }
         return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
     }
-    end = (size_t)(cr - p) + 2;
+    end = i + 2;
     if (end > ILAHRS_PAHR_MAX_LENGTH) {
         return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
     }
@@ -2031,11 +2008,12 @@ static int64_t double_key(uint64_t bits)
     return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
 }
 
-/* The bits of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
-static uint64_t int_bits(int64_t n)
+/* double_key() of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
+static int64_t int_key(int64_t n)
 {
     uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
     uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
+    int64_t magnitude;
     if (m == 0) {
         return 0;
     }
@@ -2043,7 +2021,8 @@ static uint64_t int_bits(int64_t n)
         m <<= 1;
         exponent--;
     }
-    return (n < 0 ? DOUBLE_SIGN : 0u) | ((exponent << 52) + m);
+    magnitude = (int64_t)((exponent << 52) + m);
+    return n < 0 ? -magnitude : magnitude;
 }
 
 /* The exact bounds of float fields, as double keys: `value >= low && value <= high` on doubles is
@@ -2083,8 +2062,8 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
         uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
         low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
         high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
-        low = double_key(int_bits(low));
-        high = double_key(int_bits(high));
+        low = int_key(low);
+        high = int_key(high);
         break;
     }
     default:
@@ -2157,33 +2136,39 @@ static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
 
 bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
-    int64_t scaled[ILAHRS_PAHR_FIELD_COUNT];
+    ilahrs_pahr_t sentence; /* written to *out only if every field is in range */
     size_t k;
+    /* A NaN or an infinity in a decimal field is reported before any field out of range. */
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        if (!ilahrs_pahr_fields[k].hex && ((double_bits(values[k]) >> 52) & 0x7FFu) == 0x7FFu) {
+            goto out_of_range;
+        }
+    }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         uint64_t bits = double_bits(values[k]);
         bool hex = ilahrs_pahr_fields[k].hex != 0;
-        int64_t magnitude;
-        if (!hex && ((bits >> 52) & 0x7FFu) == 0x7FFu) { /* NaN or infinite */
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
+        uint64_t magnitude = pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        int32_t scaled;
+        if (magnitude >= SATURATED) {
+            goto out_of_range; /* every range lies below SATURATED (checked by the generator) */
         }
-        magnitude = (int64_t)pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
-        scaled[k] = (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
-    }
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        if (scaled[k] < ilahrs_pahr_fields[k].min || scaled[k] > ilahrs_pahr_fields[k].max) {
-            return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
+        scaled = (bits & DOUBLE_SIGN) != 0 ? -(int32_t)magnitude : (int32_t)magnitude;
+        if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
+            goto out_of_range;
         }
+        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
     }
-    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)scaled[k], ilahrs_pahr_fields[k].size);
-    }
+    *out = sentence;
     return true;
+out_of_range:
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
 }
 
 /* (double)n without floating-point code, for |n| < 2^53. */
 static double int_double(int64_t n)
 {
-    uint64_t bits = int_bits(n);
+    int64_t key = int_key(n);
+    uint64_t bits = key < 0 ? DOUBLE_SIGN | (0u - (uint64_t)key) : (uint64_t)key;
     double value;
     memcpy(&value, &bits, sizeof value);
     return value;

@@ -228,6 +228,23 @@ def c_int64(value: int) -> str:
     return f"(-{-value}ll)" if value < 0 else f"{value}ll"
 
 
+def c_member_bits(value: float, f: Field) -> str:
+    """The bits a numeric field's struct member holds for `value`, as a uint32_t literal: the bits
+    of the float32 nearest it, or an integer's two's complement in the field's size (refused unless
+    the member holds it exactly)."""
+    if f.kind == "float" and f.size == 4:
+        bits: int = struct.unpack("<I", struct.pack("<f", value))[0]
+    elif f.kind in ("unsigned", "signed") and f.size in (1, 2, 4) and value == int(value):
+        half = 2 ** (8 * f.size - 1)
+        low, high = (0, 2 * half - 1) if f.kind == "unsigned" else (-half, half - 1)
+        if not low <= int(value) <= high:
+            raise ValueError(f"{f.name}: {value!r} does not fit its {f.size}-byte {f.kind} member")
+        bits = int(value) % 2 ** (8 * f.size)
+    else:
+        raise ValueError(f"{f.name}: {value!r} is not a value of a numeric member")
+    return f"0x{bits:08X}u"
+
+
 # ilahrs.c multiplies a double's 53-bit significand by a $PAHR divisor in 64 bits (pahr_magnitude()).
 PAHR_DIVISOR_LIMIT = 2**11
 
@@ -263,4 +280,5 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "double_key": double_key,
     "c_int64": c_int64,
     "pahr_max_divisor": pahr_max_divisor,
+    "c_member_bits": c_member_bits,
 }

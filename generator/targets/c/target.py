@@ -65,6 +65,7 @@ def date_tables(spec: Spec) -> DateTables | None:
         raise ValueError(f"the C target does not implement date decode rule {d.decode!r}")
     scale = math.lcm(*(term.divisor for term in d.terms))
     parts = {"year": 0, "month": 1, "day": 2}
+    spread = 0  # the largest |scaled - base * scale| the decoder meets (base: the year or the next)
     for year in range(d.year_min, d.year_max + 1):
         for month in range(1, 13):
             for day in range(1, calendar.monthrange(year, month)[1] + 1):
@@ -75,11 +76,21 @@ def date_tables(spec: Spec) -> DateTables | None:
                     formula += (ymd[parts[t.part]] + t.offset) / t.divisor
                 if not 0 < scaled < 2**24 or nearest_float32(scaled, scale) != filters.float32(formula):
                     raise ValueError(f"date {ymd}: the C encoder's exact float32 division does not apply")
+                spread = max(spread, abs(scaled - year * scale), abs(scaled - (year + 1) * scale))
     low, high = float(d.year_min - 1), float(d.year_max + 2)
     exponent = (struct.unpack("<I", struct.pack("<f", low))[0] >> 23) & 0xFF
     top = (struct.unpack("<I", struct.pack("<f", high))[0] >> 23) & 0xFF
-    if not 127 <= exponent <= 150 or (2**24 * scale) << (top - exponent) >= 2**63 or top > 150:
-        raise ValueError("date floats outside what the C decoder's 64-bit integers hold")
+    # ilahrs_date_decode() holds the value in units of 2^-(150 - exponent) in a uint32 and its
+    # distances to dates, in units of 1 / (scale * 2^(150 - exponent)), in an int32.
+    fraction_bits = 150 - exponent
+    if (
+        not 127 <= exponent <= 150
+        or top > 150
+        or 2**24 << (top - exponent) > 2**32
+        or (spread + scale) << fraction_bits >= 2**31
+        or (d.year_max + 2) * scale >= 2**31
+    ):
+        raise ValueError("date floats outside what the C decoder's 32-bit integers hold")
     return DateTables(scale, filters.float_key(low), filters.float_key(high), exponent)
 
 
@@ -135,12 +146,11 @@ def scale_members(t: tables.Tables) -> list[tuple[str, str]]:
 
 def default_members(t: tables.Tables) -> list[tuple[str, str]]:
     """ilahrs_defaults: the field's row, the field-name pool offset of a char default (0: none), the
-    integer default of an integer field, the float default of a float field."""
+    bits of a numeric field's member."""
     return row_members({
         "field": [r.field for r in t.defaults],
         "text": [max(r.text, 0) for r in t.defaults],
-        "integer": [int(r.number) for r in t.defaults if t.fields[r.field].field.is_integer],
-        "number": "float",
+        "bits": "uint32_t",
     })
 
 
