@@ -117,6 +117,26 @@ def sessions(runner: str, count: int) -> int:
     return differ
 
 
+def damaged_capture(tool: str, seed: int, directory: Path) -> tuple[int, list[bytes]]:
+    """A capture written by `tool` with this seed, damaged by random byte changes and cut into
+    random chunks: its size and the chunks."""
+    rng = random.Random(seed)
+    path = directory / f"capture-{seed}.bin"
+    size = rng.choice([2000, 30000, 120000])
+    subprocess.run([tool, "--size", str(size), "--seed", str(seed), "--out", str(path)],
+                   check=True, capture_output=True)
+    data = bytearray(path.read_bytes())
+    for _ in range(rng.choice([0, size // 500, size // 50])):
+        data[rng.randrange(len(data))] = rng.randrange(256)
+    chunks: list[bytes] = []
+    at = 0
+    while at < len(data):
+        n = rng.choice([1, 2, 3, 9, 47, 60, 82, 500, 4096])
+        chunks.append(bytes(data[at : at + n]))
+        at += n
+    return size, chunks
+
+
 def main(argv: list[str]) -> int:
     if len(argv) not in (3, 4):
         print(__doc__, file=sys.stderr)
@@ -126,20 +146,7 @@ def main(argv: list[str]) -> int:
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
         for seed in range(1, rounds + 1):
-            rng = random.Random(seed)
-            path = Path(tmp) / f"capture-{seed}.bin"
-            size = rng.choice([2000, 30000, 120000])
-            subprocess.run([tool, "--size", str(size), "--seed", str(seed), "--out", str(path)],
-                           check=True, capture_output=True)
-            data = bytearray(path.read_bytes())
-            for _ in range(rng.choice([0, size // 500, size // 50])):
-                data[rng.randrange(len(data))] = rng.randrange(256)
-            chunks: list[bytes] = []
-            at = 0
-            while at < len(data):
-                n = rng.choice([1, 2, 3, 9, 47, 60, 82, 500, 4096])
-                chunks.append(bytes(data[at : at + n]))
-                at += n
+            size, chunks = damaged_capture(tool, seed, Path(tmp))
             want = python_events(chunks)
             got = c_events(runner, chunks)
             same = want == got

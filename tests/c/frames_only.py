@@ -18,7 +18,6 @@ RUNNER is tests/c/conformance_runner.c built with -DILAHRS_STREAM_SENTENCES=0, a
 from __future__ import annotations
 
 import json
-import random
 import subprocess
 import sys
 import tempfile
@@ -67,20 +66,7 @@ def captures(tool: str, runner: str, rounds: int) -> int:
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
         for seed in range(1, rounds + 1):
-            rng = random.Random(seed)
-            path = Path(tmp) / f"capture-{seed}.bin"
-            size = rng.choice([2000, 30000, 120000])
-            subprocess.run([tool, "--size", str(size), "--seed", str(seed), "--out", str(path)],
-                           check=True, capture_output=True)
-            data = bytearray(path.read_bytes())
-            for _ in range(rng.choice([0, size // 500, size // 50])):
-                data[rng.randrange(len(data))] = rng.randrange(256)
-            chunks = []
-            at = 0
-            while at < len(data):
-                n = rng.choice([1, 2, 3, 9, 47, 60, 82, 500, 4096])
-                chunks.append(bytes(data[at : at + n]))
-                at += n
+            size, chunks = differential.damaged_capture(tool, seed, Path(tmp))
             want = python_frames(chunks)
             got = differential.c_events(runner, chunks)
             if any(e.startswith("N:") for e in got[0]):
