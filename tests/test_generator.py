@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 import re
 from pathlib import Path
 
@@ -120,9 +121,24 @@ def test_c_tables_fit_their_packing() -> None:
     assert "" in sections["flag"].names and t.pools["name"].size < sum(len(n) + 1 for n in distinct)
 
     fp = c_target.field_packing(t)
-    assert t.pools["field"].size <= 1 << (16 - fp.type_bits)
+    width = {"uint8_t": 8, "uint16_t": 16, "uint32_t": 32}
+    assert t.pools["field"].size <= 1 << (width[fp.name_type] - fp.type_bits)
     assert max(r.bounds for r in t.fields) < 1 << fp.bounds_bits
-    assert max(r.scale for r in t.fields) < 1 << (8 - fp.bounds_bits)
+    assert max(r.scale for r in t.fields) < 1 << (width[fp.info] - fp.bounds_bits)
+    assert max(r.field.size for r in t.fields if not r.field.is_numeric) < 1 << width[fp.info]
+    assert max(r.field.offset for r in t.fields) < 1 << fp.offset_bits
+    assert max(r.member - r.field.offset for r in t.fields) < 1 << (width[fp.place] - fp.offset_bits)
+    assert t.kinds[-2:] == ("char", "reserved")  # the array kinds, whose info is their size
+    # This spec fits four bytes a row; a column wider than 32 bits is refused.
+    assert (fp.name_type, fp.place, fp.info) == ("uint16_t", "uint8_t", "uint8_t")
+    with pytest.raises(ValueError, match="no 32-bit C integer type"):
+        c_target.packed_type(33)
+    huge_pool = copy.copy(t.pools["field"])
+    huge_pool.size = 1 << 30  # names at offsets that leave no room for the type in 32 bits
+    huge = copy.copy(t)
+    huge.pools = {**t.pools, "field": huge_pool}
+    with pytest.raises(ValueError, match="no 32-bit C integer type"):
+        c_target.field_packing(huge)
 
     # Rows of small tables: each column in the smallest type that holds it, widest first.
     assert c_target.row_members({"a": [1, 2], "b": [0, 70000], "c": "float", "d": [-1, 300]}) == [

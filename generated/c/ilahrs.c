@@ -472,170 +472,177 @@ static const struct {
     { 1, 10, 255 },
 };
 
-/* ilahrs_field_info_t, unpacked. A field's type is its wire kind and an encoding a builder checks
- * beyond a range; its checks are its builder bounds and its engineering scale. */
+/* ilahrs_field_info_t, unpacked. A field's type is its wire kind, an encoding a builder checks
+ * beyond a range and the log2 of a number's size; char and reserved (the last kinds) are arrays,
+ * whose info is their size. A number's info is its builder bounds and its engineering scale. */
 #define KIND_BITS 3u
-#define TYPE_BITS 4u
+#define ENCODING_BITS 1u
+#define TYPE_BITS 6u
+#define OFFSET_BITS 6u
 #define BOUNDS_BITS 4u
-#define FIELD_TYPE(f) ((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u))
-#define FIELD_KIND(f) TYPE_KIND(FIELD_TYPE(f))
+#define FIELD_KIND(f) ((unsigned)(f)->name_type & ((1u << KIND_BITS) - 1u))
+#define FIELD_ENCODING(f) (((unsigned)(f)->name_type >> KIND_BITS) & ((1u << ENCODING_BITS) - 1u))
 #define FIELD_NAME_AT(f) ((unsigned)(f)->name_type >> TYPE_BITS)
-#define FIELD_BOUNDS(f) ((unsigned)(f)->checks & ((1u << BOUNDS_BITS) - 1u))
-#define FIELD_SCALE(f) ((unsigned)(f)->checks >> BOUNDS_BITS)
-#define TYPE_KIND(type) ((type) & ((1u << KIND_BITS) - 1u))
-#define TYPE_ENCODING(type) ((type) >> KIND_BITS)
+#define FIELD_IS_ARRAY(f) (FIELD_KIND(f) >= ILAHRS_KIND_CHAR)
+#define FIELD_ARRAY_SIZE(f) ((unsigned)(f)->info)
+#define FIELD_NUMBER_SIZE(f) (1u << (((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u)) >> (KIND_BITS + ENCODING_BITS)))
+#define FIELD_SIZE(f) (FIELD_IS_ARRAY(f) ? FIELD_ARRAY_SIZE(f) : FIELD_NUMBER_SIZE(f))
+#define FIELD_OFFSET(f) ((unsigned)(f)->place & ((1u << OFFSET_BITS) - 1u))
+#define FIELD_MEMBER(f) (FIELD_OFFSET(f) + ((unsigned)(f)->place >> OFFSET_BITS))
+#define FIELD_BOUNDS(f) ((unsigned)(f)->info & ((1u << BOUNDS_BITS) - 1u))
+#define FIELD_SCALE(f) ((unsigned)(f)->info >> BOUNDS_BITS)
 #define ENCODING_NONE 0u
 #define ENCODING_DECLINATION 1u
 #define NO_PARAMETER 255
 
-/* Every payload field, table after table, in wire order: name, kind and encoding, wire offset and
- * size, struct member, bounds and scale. */
+/* Every payload field, table after table, in wire order: name and type, wire offset and the
+ * padding before its struct member, array size or bounds and scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
     /* full_output (Table 6.4) */
-    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_full_output_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_full_output_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_full_output_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (0u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_full_output_t, ugyro_x), 0 }, /* ugyro_x */
-    { (8u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_full_output_t, ugyro_y), 0 }, /* ugyro_y */
-    { (16u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_full_output_t, ugyro_z), 0 }, /* ugyro_z */
-    { (24u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_full_output_t, uacc_x), 0 }, /* uacc_x */
-    { (31u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 14, 2, offsetof(ilahrs_full_output_t, uacc_y), 0 }, /* uacc_y */
-    { (38u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 16, 2, offsetof(ilahrs_full_output_t, uacc_z), 0 }, /* uacc_z */
-    { (45u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 18, 2, offsetof(ilahrs_full_output_t, umag_x), 0 }, /* umag_x */
-    { (52u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 20, 2, offsetof(ilahrs_full_output_t, umag_y), 0 }, /* umag_y */
-    { (59u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 22, 2, offsetof(ilahrs_full_output_t, umag_z), 0 }, /* umag_z */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_full_output_t, reserved), 0 }, /* reserved */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_full_output_t, usw), 0 }, /* usw */
-    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_full_output_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_full_output_t, utermo), 0 }, /* utermo */
+    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (0u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 0 }, /* ugyro_x */
+    { (8u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 0 }, /* ugyro_y */
+    { (16u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 0 }, /* ugyro_z */
+    { (24u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 0 }, /* uacc_x */
+    { (31u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 14, 0 }, /* uacc_y */
+    { (38u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 16, 0 }, /* uacc_z */
+    { (45u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 18, 0 }, /* umag_x */
+    { (52u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 20, 0 }, /* umag_y */
+    { (59u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 22, 0 }, /* umag_z */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 24, 4 }, /* reserved */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
+    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 }, /* utermo */
     /* quaternion (Table 6.5) */
-    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_quaternion_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_quaternion_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_quaternion_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (90u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_quaternion_t, lk0), 4 | (3u << BOUNDS_BITS) }, /* lk0 */
-    { (94u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_quaternion_t, lk1), 4 | (3u << BOUNDS_BITS) }, /* lk1 */
-    { (98u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_quaternion_t, lk2), 4 | (3u << BOUNDS_BITS) }, /* lk2 */
-    { (102u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_quaternion_t, lk3), 4 | (3u << BOUNDS_BITS) }, /* lk3 */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 14, 14, offsetof(ilahrs_quaternion_t, reserved), 0 }, /* reserved */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_quaternion_t, usw), 0 }, /* usw */
-    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_quaternion_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_quaternion_t, utermo), 0 | (4u << BOUNDS_BITS) }, /* utermo */
+    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (90u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 4 | (3u << BOUNDS_BITS) }, /* lk0 */
+    { (94u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 4 | (3u << BOUNDS_BITS) }, /* lk1 */
+    { (98u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 4 | (3u << BOUNDS_BITS) }, /* lk2 */
+    { (102u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 4 | (3u << BOUNDS_BITS) }, /* lk3 */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 14, 14 }, /* reserved */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
+    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 | (4u << BOUNDS_BITS) }, /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { (234u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_orientation_sensors_t, heading), 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_orientation_sensors_t, pitch), 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_orientation_sensors_t, roll), 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (1u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 6, 2, offsetof(ilahrs_orientation_sensors_t, gyro_x), 0 | (5u << BOUNDS_BITS) }, /* gyro_x */
-    { (9u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 8, 2, offsetof(ilahrs_orientation_sensors_t, gyro_y), 0 | (5u << BOUNDS_BITS) }, /* gyro_y */
-    { (17u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 10, 2, offsetof(ilahrs_orientation_sensors_t, gyro_z), 0 | (5u << BOUNDS_BITS) }, /* gyro_z */
-    { (25u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 12, 2, offsetof(ilahrs_orientation_sensors_t, acc_x), 0 | (6u << BOUNDS_BITS) }, /* acc_x */
-    { (32u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 14, 2, offsetof(ilahrs_orientation_sensors_t, acc_y), 0 | (6u << BOUNDS_BITS) }, /* acc_y */
-    { (39u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 16, 2, offsetof(ilahrs_orientation_sensors_t, acc_z), 0 | (6u << BOUNDS_BITS) }, /* acc_z */
-    { (46u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 18, 2, offsetof(ilahrs_orientation_sensors_t, mag_x), 0 | (7u << BOUNDS_BITS) }, /* mag_x */
-    { (53u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 20, 2, offsetof(ilahrs_orientation_sensors_t, mag_y), 0 | (7u << BOUNDS_BITS) }, /* mag_y */
-    { (60u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 22, 2, offsetof(ilahrs_orientation_sensors_t, mag_z), 0 | (7u << BOUNDS_BITS) }, /* mag_z */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_orientation_sensors_t, reserved), 0 }, /* reserved */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_orientation_sensors_t, usw), 0 }, /* usw */
-    { (79u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 30, 2, offsetof(ilahrs_orientation_sensors_t, vdd), 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 32, 2, offsetof(ilahrs_orientation_sensors_t, utermo), 0 | (4u << BOUNDS_BITS) }, /* utermo */
+    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
+    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
+    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
+    { (1u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 0 | (5u << BOUNDS_BITS) }, /* gyro_x */
+    { (9u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 0 | (5u << BOUNDS_BITS) }, /* gyro_y */
+    { (17u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 0 | (5u << BOUNDS_BITS) }, /* gyro_z */
+    { (25u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 0 | (6u << BOUNDS_BITS) }, /* acc_x */
+    { (32u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 14, 0 | (6u << BOUNDS_BITS) }, /* acc_y */
+    { (39u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 16, 0 | (6u << BOUNDS_BITS) }, /* acc_z */
+    { (46u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 18, 0 | (7u << BOUNDS_BITS) }, /* mag_x */
+    { (53u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 20, 0 | (7u << BOUNDS_BITS) }, /* mag_y */
+    { (60u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 22, 0 | (7u << BOUNDS_BITS) }, /* mag_z */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 24, 4 }, /* reserved */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
+    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
+    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 | (4u << BOUNDS_BITS) }, /* utermo */
     /* initial_alignment (Table 6.8) */
-    { (106u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 0, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_x), 1 }, /* gyro_bias_x */
-    { (118u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_y), 1 }, /* gyro_bias_y */
-    { (130u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_initial_alignment_t, gyro_bias_z), 1 }, /* gyro_bias_z */
-    { (142u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_initial_alignment_t, average_acc_x), 1 }, /* average_acc_x */
-    { (156u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_initial_alignment_t, average_acc_y), 1 }, /* average_acc_y */
-    { (170u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_initial_alignment_t, average_acc_z), 1 }, /* average_acc_z */
-    { (184u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_initial_alignment_t, average_mag_x), 1 }, /* average_mag_x */
-    { (198u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_initial_alignment_t, average_mag_y), 1 }, /* average_mag_y */
-    { (212u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_initial_alignment_t, average_mag_z), 1 }, /* average_mag_z */
-    { (226u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_initial_alignment_t, initial_heading), 2 }, /* initial_heading */
-    { (242u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_initial_alignment_t, initial_roll), 3 }, /* initial_roll */
-    { (255u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_initial_alignment_t, initial_pitch), 4 }, /* initial_pitch */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 48, 2, offsetof(ilahrs_initial_alignment_t, usw), 0 }, /* usw */
+    { (106u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 0, 1 }, /* gyro_bias_x */
+    { (118u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* gyro_bias_y */
+    { (130u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* gyro_bias_z */
+    { (142u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* average_acc_x */
+    { (156u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* average_acc_y */
+    { (170u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* average_acc_z */
+    { (184u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* average_mag_x */
+    { (198u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* average_mag_y */
+    { (212u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* average_mag_z */
+    { (226u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 2 }, /* initial_heading */
+    { (242u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 3 }, /* initial_roll */
+    { (255u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 4 }, /* initial_pitch */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 48, 0 }, /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { (269u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_ahrs_parameters_load_t, update_rate), 5 }, /* update_rate */
-    { (281u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_ahrs_parameters_load_t, alignment_time), 6 }, /* alignment_time */
-    { (296u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << KIND_BITS), 4, 4, offsetof(ilahrs_ahrs_parameters_load_t, declination), 1 }, /* declination */
-    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_ahrs_parameters_load_t, latitude), 4 }, /* latitude */
-    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_ahrs_parameters_load_t, longitude), 3 }, /* longitude */
-    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_ahrs_parameters_load_t, altitude), 5 }, /* altitude */
-    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_ahrs_parameters_load_t, date), 6 }, /* date */
-    { (341u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1), 7 }, /* alignment_angle_a1 */
-    { (360u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2), 7 }, /* alignment_angle_a2 */
-    { (379u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3), 7 }, /* alignment_angle_a3 */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 36, 14, offsetof(ilahrs_ahrs_parameters_load_t, reserved), 0 }, /* reserved */
+    { (269u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 5 }, /* update_rate */
+    { (281u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 6 }, /* alignment_time */
+    { (296u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_DECLINATION << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* declination */
+    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* latitude */
+    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* longitude */
+    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 5 }, /* altitude */
+    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 6 }, /* date */
+    { (341u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 7 }, /* alignment_angle_a1 */
+    { (360u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 7 }, /* alignment_angle_a2 */
+    { (379u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 7 }, /* alignment_angle_a3 */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 36, 14 }, /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { (269u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_ahrs_parameters_read_t, update_rate), 5 }, /* update_rate */
-    { (281u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_ahrs_parameters_read_t, alignment_time), 6 }, /* alignment_time */
-    { (296u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_DECLINATION << KIND_BITS), 4, 4, offsetof(ilahrs_ahrs_parameters_read_t, declination), 1 }, /* declination */
-    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_ahrs_parameters_read_t, latitude), 4 }, /* latitude */
-    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_ahrs_parameters_read_t, longitude), 3 }, /* longitude */
-    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_ahrs_parameters_read_t, altitude), 5 }, /* altitude */
-    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_ahrs_parameters_read_t, date), 6 }, /* date */
-    { (341u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1), 7 }, /* alignment_angle_a1 */
-    { (360u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2), 7 }, /* alignment_angle_a2 */
-    { (379u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3), 7 }, /* alignment_angle_a3 */
-    { (398u << TYPE_BITS) | ILAHRS_KIND_CHAR | (ENCODING_NONE << KIND_BITS), 36, 8, offsetof(ilahrs_ahrs_parameters_read_t, device_id), 0 }, /* device_id */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 44, 6, offsetof(ilahrs_ahrs_parameters_read_t, reserved), 0 }, /* reserved */
+    { (269u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 5 }, /* update_rate */
+    { (281u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 6 }, /* alignment_time */
+    { (296u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_DECLINATION << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* declination */
+    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* latitude */
+    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* longitude */
+    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 5 }, /* altitude */
+    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 6 }, /* date */
+    { (341u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 7 }, /* alignment_angle_a1 */
+    { (360u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 7 }, /* alignment_angle_a2 */
+    { (379u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 7 }, /* alignment_angle_a3 */
+    { (398u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_CHAR, (0u << OFFSET_BITS) | 36, 8 }, /* device_id */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (1u << OFFSET_BITS) | 44, 6 }, /* reserved */
     /* firmware_version (Table 6.11) */
-    { (408u << TYPE_BITS) | ILAHRS_KIND_CHAR | (ENCODING_NONE << KIND_BITS), 0, 50, offsetof(ilahrs_firmware_version_t, version), 0 }, /* version */
+    { (408u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_CHAR, (0u << OFFSET_BITS) | 0, 50 }, /* version */
     /* bit_result (Table 6.12) */
-    { (416u << TYPE_BITS) | ILAHRS_KIND_SIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_bit_result_t, utermo100), 0 | (1u << BOUNDS_BITS) }, /* utermo100 */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 2, offsetof(ilahrs_bit_result_t, usw), 0 }, /* usw */
+    { (416u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 0, 0 | (1u << BOUNDS_BITS) }, /* utermo100 */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 0 }, /* usw */
     /* calibration_parameters (Table 6.13) */
-    { (426u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 0, 4, offsetof(ilahrs_calibration_parameters_t, reference_azimuth), 7 }, /* reference_azimuth */
-    { (444u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 4, 2, offsetof(ilahrs_calibration_parameters_t, accumulation_time), 6 }, /* accumulation_time */
-    { (308u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 6, 4, offsetof(ilahrs_calibration_parameters_t, latitude), 4 }, /* latitude */
-    { (317u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 10, 4, offsetof(ilahrs_calibration_parameters_t, longitude), 3 }, /* longitude */
-    { (327u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 14, 4, offsetof(ilahrs_calibration_parameters_t, altitude), 5 }, /* altitude */
-    { (336u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 18, 4, offsetof(ilahrs_calibration_parameters_t, date), 6 }, /* date */
+    { (426u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 0, 7 }, /* reference_azimuth */
+    { (444u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 4, 6 }, /* accumulation_time */
+    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 6, 4 }, /* latitude */
+    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 10, 3 }, /* longitude */
+    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 14, 5 }, /* altitude */
+    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 18, 6 }, /* date */
     /* calibration_result (Table 6.14) */
-    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_result_t, calibration_type), 7 }, /* calibration_type */
-    { (479u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_result_t, runs_used), 0 }, /* runs_used */
-    { (489u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_result_t, data_used), 8 }, /* data_used */
-    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_result_t, success), 0 }, /* success */
-    { (507u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_result_t, tm_c_11), 1 }, /* tm_c_11 */
-    { (515u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_result_t, tm_c_12), 1 }, /* tm_c_12 */
-    { (523u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_result_t, tm_c_13), 1 }, /* tm_c_13 */
-    { (531u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_calibration_result_t, tm_c_21), 1 }, /* tm_c_21 */
-    { (539u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_calibration_result_t, tm_c_22), 1 }, /* tm_c_22 */
-    { (547u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_calibration_result_t, tm_c_23), 1 }, /* tm_c_23 */
-    { (555u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_calibration_result_t, tm_c_31), 1 }, /* tm_c_31 */
-    { (563u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_calibration_result_t, tm_c_32), 1 }, /* tm_c_32 */
-    { (571u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_calibration_result_t, tm_c_33), 1 }, /* tm_c_33 */
-    { (579u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_calibration_result_t, hm_0_x), 1 }, /* hm_0_x */
-    { (586u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_calibration_result_t, hm_0_y), 1 }, /* hm_0_y */
-    { (593u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 48, 4, offsetof(ilahrs_calibration_result_t, hm_0_z), 1 }, /* hm_0_z */
+    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 7 }, /* calibration_type */
+    { (479u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 0 }, /* runs_used */
+    { (489u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 8 }, /* data_used */
+    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
+    { (507u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* tm_c_11 */
+    { (515u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* tm_c_12 */
+    { (523u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* tm_c_13 */
+    { (531u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* tm_c_21 */
+    { (539u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* tm_c_22 */
+    { (547u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* tm_c_23 */
+    { (555u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* tm_c_31 */
+    { (563u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* tm_c_32 */
+    { (571u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 1 }, /* tm_c_33 */
+    { (579u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 1 }, /* hm_0_x */
+    { (586u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 1 }, /* hm_0_y */
+    { (593u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 48, 1 }, /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_run_result_t, calibration_type), 9 }, /* calibration_type */
-    { (600u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_run_result_t, run), 10 }, /* run */
-    { (489u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_run_result_t, data_used), 8 }, /* data_used */
-    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_run_result_t, success), 0 }, /* success */
-    { (604u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_run_result_t, reserved_1), 0 }, /* reserved_1 */
-    { (615u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_run_result_t, average_pitch), 4 }, /* average_pitch */
-    { (629u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_run_result_t, average_roll), 3 }, /* average_roll */
-    { (642u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 16, 12, offsetof(ilahrs_calibration_run_result_t, reserved_2), 0 }, /* reserved_2 */
-    { (75u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 28, 2, offsetof(ilahrs_calibration_run_result_t, usw), 0 }, /* usw */
+    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 9 }, /* calibration_type */
+    { (600u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 10 }, /* run */
+    { (489u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 8 }, /* data_used */
+    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
+    { (604u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 4, 4 }, /* reserved_1 */
+    { (615u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* average_pitch */
+    { (629u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* average_roll */
+    { (642u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 16, 12 }, /* reserved_2 */
+    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 0, 6, offsetof(ilahrs_calibration_run_parameters_t, reserved), 0 }, /* reserved */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 0, 6 }, /* reserved */
     /* calibration_status (Table 6.17) */
-    { (462u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 1, offsetof(ilahrs_calibration_status_t, calibration_type), 0 }, /* calibration_type */
-    { (479u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 1, 1, offsetof(ilahrs_calibration_status_t, runs_used), 0 }, /* runs_used */
-    { (66u << TYPE_BITS) | ILAHRS_KIND_RESERVED | (ENCODING_NONE << KIND_BITS), 2, 1, offsetof(ilahrs_calibration_status_t, reserved), 0 }, /* reserved */
-    { (499u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 3, 1, offsetof(ilahrs_calibration_status_t, success), 0 }, /* success */
-    { (507u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 4, 4, offsetof(ilahrs_calibration_status_t, tm_c_11), 1 }, /* tm_c_11 */
-    { (515u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 8, 4, offsetof(ilahrs_calibration_status_t, tm_c_12), 1 }, /* tm_c_12 */
-    { (523u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 12, 4, offsetof(ilahrs_calibration_status_t, tm_c_13), 1 }, /* tm_c_13 */
-    { (531u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 16, 4, offsetof(ilahrs_calibration_status_t, tm_c_21), 1 }, /* tm_c_21 */
-    { (539u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 20, 4, offsetof(ilahrs_calibration_status_t, tm_c_22), 1 }, /* tm_c_22 */
-    { (547u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 24, 4, offsetof(ilahrs_calibration_status_t, tm_c_23), 1 }, /* tm_c_23 */
-    { (555u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 28, 4, offsetof(ilahrs_calibration_status_t, tm_c_31), 1 }, /* tm_c_31 */
-    { (563u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 32, 4, offsetof(ilahrs_calibration_status_t, tm_c_32), 1 }, /* tm_c_32 */
-    { (571u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 36, 4, offsetof(ilahrs_calibration_status_t, tm_c_33), 1 }, /* tm_c_33 */
-    { (579u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 40, 4, offsetof(ilahrs_calibration_status_t, hm_0_x), 1 }, /* hm_0_x */
-    { (586u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 44, 4, offsetof(ilahrs_calibration_status_t, hm_0_y), 1 }, /* hm_0_y */
-    { (593u << TYPE_BITS) | ILAHRS_KIND_FLOAT | (ENCODING_NONE << KIND_BITS), 48, 4, offsetof(ilahrs_calibration_status_t, hm_0_z), 1 }, /* hm_0_z */
+    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 0 }, /* calibration_type */
+    { (479u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 0 }, /* runs_used */
+    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 2, 1 }, /* reserved */
+    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
+    { (507u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* tm_c_11 */
+    { (515u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* tm_c_12 */
+    { (523u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* tm_c_13 */
+    { (531u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* tm_c_21 */
+    { (539u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* tm_c_22 */
+    { (547u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* tm_c_23 */
+    { (555u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* tm_c_31 */
+    { (563u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* tm_c_32 */
+    { (571u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 1 }, /* tm_c_33 */
+    { (579u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 1 }, /* hm_0_x */
+    { (586u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 1 }, /* hm_0_y */
+    { (593u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 48, 1 }, /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { (653u << TYPE_BITS) | ILAHRS_KIND_UNSIGNED | (ENCODING_NONE << KIND_BITS), 0, 2, offsetof(ilahrs_acknowledgement_t, checksum), 0 }, /* checksum */
+    { (653u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 0 }, /* checksum */
 };
 
 static const struct {
@@ -682,21 +689,167 @@ static const struct {
 };
 #define DEFAULT_COUNT 11u
 
-/* C99 compile-time checks: struct sizes and offsets fit ilahrs_payloads and ilahrs_field_info_t.member. */
-typedef char ilahrs_check_full_output[sizeof(ilahrs_full_output_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_quaternion[sizeof(ilahrs_quaternion_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_orientation_sensors[sizeof(ilahrs_orientation_sensors_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_initial_alignment[sizeof(ilahrs_initial_alignment_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_ahrs_parameters_load[sizeof(ilahrs_ahrs_parameters_load_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_ahrs_parameters_read[sizeof(ilahrs_ahrs_parameters_read_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_firmware_version[sizeof(ilahrs_firmware_version_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_bit_result[sizeof(ilahrs_bit_result_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_calibration_parameters[sizeof(ilahrs_calibration_parameters_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_calibration_result[sizeof(ilahrs_calibration_result_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_calibration_run_result[sizeof(ilahrs_calibration_run_result_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_calibration_run_parameters[sizeof(ilahrs_calibration_run_parameters_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_calibration_status[sizeof(ilahrs_calibration_status_t) <= 255 ? 1 : -1];
-typedef char ilahrs_check_acknowledgement[sizeof(ilahrs_acknowledgement_t) <= 255 ? 1 : -1];
+/* C99 compile-time checks: struct sizes fit ilahrs_payloads, and each member lies where
+ * ilahrs_fields says (the generator's natural alignment). */
+typedef char ilahrs_check_full_output[sizeof(ilahrs_full_output_t) <= 255
+    && offsetof(ilahrs_full_output_t, heading) == 0
+    && offsetof(ilahrs_full_output_t, pitch) == 2
+    && offsetof(ilahrs_full_output_t, roll) == 4
+    && offsetof(ilahrs_full_output_t, ugyro_x) == 6
+    && offsetof(ilahrs_full_output_t, ugyro_y) == 8
+    && offsetof(ilahrs_full_output_t, ugyro_z) == 10
+    && offsetof(ilahrs_full_output_t, uacc_x) == 12
+    && offsetof(ilahrs_full_output_t, uacc_y) == 14
+    && offsetof(ilahrs_full_output_t, uacc_z) == 16
+    && offsetof(ilahrs_full_output_t, umag_x) == 18
+    && offsetof(ilahrs_full_output_t, umag_y) == 20
+    && offsetof(ilahrs_full_output_t, umag_z) == 22
+    && offsetof(ilahrs_full_output_t, reserved) == 24
+    && offsetof(ilahrs_full_output_t, usw) == 28
+    && offsetof(ilahrs_full_output_t, vdd) == 30
+    && offsetof(ilahrs_full_output_t, utermo) == 32
+    ? 1 : -1];
+typedef char ilahrs_check_quaternion[sizeof(ilahrs_quaternion_t) <= 255
+    && offsetof(ilahrs_quaternion_t, heading) == 0
+    && offsetof(ilahrs_quaternion_t, pitch) == 2
+    && offsetof(ilahrs_quaternion_t, roll) == 4
+    && offsetof(ilahrs_quaternion_t, lk0) == 6
+    && offsetof(ilahrs_quaternion_t, lk1) == 8
+    && offsetof(ilahrs_quaternion_t, lk2) == 10
+    && offsetof(ilahrs_quaternion_t, lk3) == 12
+    && offsetof(ilahrs_quaternion_t, reserved) == 14
+    && offsetof(ilahrs_quaternion_t, usw) == 28
+    && offsetof(ilahrs_quaternion_t, vdd) == 30
+    && offsetof(ilahrs_quaternion_t, utermo) == 32
+    ? 1 : -1];
+typedef char ilahrs_check_orientation_sensors[sizeof(ilahrs_orientation_sensors_t) <= 255
+    && offsetof(ilahrs_orientation_sensors_t, heading) == 0
+    && offsetof(ilahrs_orientation_sensors_t, pitch) == 2
+    && offsetof(ilahrs_orientation_sensors_t, roll) == 4
+    && offsetof(ilahrs_orientation_sensors_t, gyro_x) == 6
+    && offsetof(ilahrs_orientation_sensors_t, gyro_y) == 8
+    && offsetof(ilahrs_orientation_sensors_t, gyro_z) == 10
+    && offsetof(ilahrs_orientation_sensors_t, acc_x) == 12
+    && offsetof(ilahrs_orientation_sensors_t, acc_y) == 14
+    && offsetof(ilahrs_orientation_sensors_t, acc_z) == 16
+    && offsetof(ilahrs_orientation_sensors_t, mag_x) == 18
+    && offsetof(ilahrs_orientation_sensors_t, mag_y) == 20
+    && offsetof(ilahrs_orientation_sensors_t, mag_z) == 22
+    && offsetof(ilahrs_orientation_sensors_t, reserved) == 24
+    && offsetof(ilahrs_orientation_sensors_t, usw) == 28
+    && offsetof(ilahrs_orientation_sensors_t, vdd) == 30
+    && offsetof(ilahrs_orientation_sensors_t, utermo) == 32
+    ? 1 : -1];
+typedef char ilahrs_check_initial_alignment[sizeof(ilahrs_initial_alignment_t) <= 255
+    && offsetof(ilahrs_initial_alignment_t, gyro_bias_x) == 0
+    && offsetof(ilahrs_initial_alignment_t, gyro_bias_y) == 4
+    && offsetof(ilahrs_initial_alignment_t, gyro_bias_z) == 8
+    && offsetof(ilahrs_initial_alignment_t, average_acc_x) == 12
+    && offsetof(ilahrs_initial_alignment_t, average_acc_y) == 16
+    && offsetof(ilahrs_initial_alignment_t, average_acc_z) == 20
+    && offsetof(ilahrs_initial_alignment_t, average_mag_x) == 24
+    && offsetof(ilahrs_initial_alignment_t, average_mag_y) == 28
+    && offsetof(ilahrs_initial_alignment_t, average_mag_z) == 32
+    && offsetof(ilahrs_initial_alignment_t, initial_heading) == 36
+    && offsetof(ilahrs_initial_alignment_t, initial_roll) == 40
+    && offsetof(ilahrs_initial_alignment_t, initial_pitch) == 44
+    && offsetof(ilahrs_initial_alignment_t, usw) == 48
+    ? 1 : -1];
+typedef char ilahrs_check_ahrs_parameters_load[sizeof(ilahrs_ahrs_parameters_load_t) <= 255
+    && offsetof(ilahrs_ahrs_parameters_load_t, update_rate) == 0
+    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_time) == 2
+    && offsetof(ilahrs_ahrs_parameters_load_t, declination) == 4
+    && offsetof(ilahrs_ahrs_parameters_load_t, latitude) == 8
+    && offsetof(ilahrs_ahrs_parameters_load_t, longitude) == 12
+    && offsetof(ilahrs_ahrs_parameters_load_t, altitude) == 16
+    && offsetof(ilahrs_ahrs_parameters_load_t, date) == 20
+    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1) == 24
+    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2) == 28
+    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3) == 32
+    && offsetof(ilahrs_ahrs_parameters_load_t, reserved) == 36
+    ? 1 : -1];
+typedef char ilahrs_check_ahrs_parameters_read[sizeof(ilahrs_ahrs_parameters_read_t) <= 255
+    && offsetof(ilahrs_ahrs_parameters_read_t, update_rate) == 0
+    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_time) == 2
+    && offsetof(ilahrs_ahrs_parameters_read_t, declination) == 4
+    && offsetof(ilahrs_ahrs_parameters_read_t, latitude) == 8
+    && offsetof(ilahrs_ahrs_parameters_read_t, longitude) == 12
+    && offsetof(ilahrs_ahrs_parameters_read_t, altitude) == 16
+    && offsetof(ilahrs_ahrs_parameters_read_t, date) == 20
+    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1) == 24
+    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2) == 28
+    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3) == 32
+    && offsetof(ilahrs_ahrs_parameters_read_t, device_id) == 36
+    && offsetof(ilahrs_ahrs_parameters_read_t, reserved) == 45
+    ? 1 : -1];
+typedef char ilahrs_check_firmware_version[sizeof(ilahrs_firmware_version_t) <= 255
+    && offsetof(ilahrs_firmware_version_t, version) == 0
+    ? 1 : -1];
+typedef char ilahrs_check_bit_result[sizeof(ilahrs_bit_result_t) <= 255
+    && offsetof(ilahrs_bit_result_t, utermo100) == 0
+    && offsetof(ilahrs_bit_result_t, usw) == 2
+    ? 1 : -1];
+typedef char ilahrs_check_calibration_parameters[sizeof(ilahrs_calibration_parameters_t) <= 255
+    && offsetof(ilahrs_calibration_parameters_t, reference_azimuth) == 0
+    && offsetof(ilahrs_calibration_parameters_t, accumulation_time) == 4
+    && offsetof(ilahrs_calibration_parameters_t, latitude) == 8
+    && offsetof(ilahrs_calibration_parameters_t, longitude) == 12
+    && offsetof(ilahrs_calibration_parameters_t, altitude) == 16
+    && offsetof(ilahrs_calibration_parameters_t, date) == 20
+    ? 1 : -1];
+typedef char ilahrs_check_calibration_result[sizeof(ilahrs_calibration_result_t) <= 255
+    && offsetof(ilahrs_calibration_result_t, calibration_type) == 0
+    && offsetof(ilahrs_calibration_result_t, runs_used) == 1
+    && offsetof(ilahrs_calibration_result_t, data_used) == 2
+    && offsetof(ilahrs_calibration_result_t, success) == 3
+    && offsetof(ilahrs_calibration_result_t, tm_c_11) == 4
+    && offsetof(ilahrs_calibration_result_t, tm_c_12) == 8
+    && offsetof(ilahrs_calibration_result_t, tm_c_13) == 12
+    && offsetof(ilahrs_calibration_result_t, tm_c_21) == 16
+    && offsetof(ilahrs_calibration_result_t, tm_c_22) == 20
+    && offsetof(ilahrs_calibration_result_t, tm_c_23) == 24
+    && offsetof(ilahrs_calibration_result_t, tm_c_31) == 28
+    && offsetof(ilahrs_calibration_result_t, tm_c_32) == 32
+    && offsetof(ilahrs_calibration_result_t, tm_c_33) == 36
+    && offsetof(ilahrs_calibration_result_t, hm_0_x) == 40
+    && offsetof(ilahrs_calibration_result_t, hm_0_y) == 44
+    && offsetof(ilahrs_calibration_result_t, hm_0_z) == 48
+    ? 1 : -1];
+typedef char ilahrs_check_calibration_run_result[sizeof(ilahrs_calibration_run_result_t) <= 255
+    && offsetof(ilahrs_calibration_run_result_t, calibration_type) == 0
+    && offsetof(ilahrs_calibration_run_result_t, run) == 1
+    && offsetof(ilahrs_calibration_run_result_t, data_used) == 2
+    && offsetof(ilahrs_calibration_run_result_t, success) == 3
+    && offsetof(ilahrs_calibration_run_result_t, reserved_1) == 4
+    && offsetof(ilahrs_calibration_run_result_t, average_pitch) == 8
+    && offsetof(ilahrs_calibration_run_result_t, average_roll) == 12
+    && offsetof(ilahrs_calibration_run_result_t, reserved_2) == 16
+    && offsetof(ilahrs_calibration_run_result_t, usw) == 28
+    ? 1 : -1];
+typedef char ilahrs_check_calibration_run_parameters[sizeof(ilahrs_calibration_run_parameters_t) <= 255
+    && offsetof(ilahrs_calibration_run_parameters_t, reserved) == 0
+    ? 1 : -1];
+typedef char ilahrs_check_calibration_status[sizeof(ilahrs_calibration_status_t) <= 255
+    && offsetof(ilahrs_calibration_status_t, calibration_type) == 0
+    && offsetof(ilahrs_calibration_status_t, runs_used) == 1
+    && offsetof(ilahrs_calibration_status_t, reserved) == 2
+    && offsetof(ilahrs_calibration_status_t, success) == 3
+    && offsetof(ilahrs_calibration_status_t, tm_c_11) == 4
+    && offsetof(ilahrs_calibration_status_t, tm_c_12) == 8
+    && offsetof(ilahrs_calibration_status_t, tm_c_13) == 12
+    && offsetof(ilahrs_calibration_status_t, tm_c_21) == 16
+    && offsetof(ilahrs_calibration_status_t, tm_c_22) == 20
+    && offsetof(ilahrs_calibration_status_t, tm_c_23) == 24
+    && offsetof(ilahrs_calibration_status_t, tm_c_31) == 28
+    && offsetof(ilahrs_calibration_status_t, tm_c_32) == 32
+    && offsetof(ilahrs_calibration_status_t, tm_c_33) == 36
+    && offsetof(ilahrs_calibration_status_t, hm_0_x) == 40
+    && offsetof(ilahrs_calibration_status_t, hm_0_y) == 44
+    && offsetof(ilahrs_calibration_status_t, hm_0_z) == 48
+    ? 1 : -1];
+typedef char ilahrs_check_acknowledgement[sizeof(ilahrs_acknowledgement_t) <= 255
+    && offsetof(ilahrs_acknowledgement_t, checksum) == 0
+    ? 1 : -1];
 /* The stream decoder's counters fit its buffer. */
 typedef char ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MAX_SIZE <= ILAHRS_MAX_MESSAGE_SIZE ? 1 : -1];
 
@@ -1216,12 +1369,12 @@ const char *ilahrs_field_name(const ilahrs_field_info_t *field)
 
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field)
 {
-    return field->offset;
+    return FIELD_OFFSET(field);
 }
 
 size_t ilahrs_field_size(const ilahrs_field_info_t *field)
 {
-    return field->size;
+    return FIELD_SIZE(field);
 }
 
 ilahrs_kind_t ilahrs_field_kind(const ilahrs_field_info_t *field)
@@ -1231,12 +1384,12 @@ ilahrs_kind_t ilahrs_field_kind(const ilahrs_field_info_t *field)
 
 void *ilahrs_field_member(const ilahrs_field_info_t *field, void *payload)
 {
-    return (uint8_t *)payload + field->member;
+    return (uint8_t *)payload + FIELD_MEMBER(field);
 }
 
 const void *ilahrs_field_member_const(const ilahrs_field_info_t *field, const void *payload)
 {
-    return (const uint8_t *)payload + field->member;
+    return (const uint8_t *)payload + FIELD_MEMBER(field);
 }
 
 static bool is_integer(const ilahrs_field_info_t *field)
@@ -1257,8 +1410,8 @@ int64_t ilahrs_field_get_int(const ilahrs_field_info_t *field, const void *paylo
     if (!is_integer(field)) {
         return 0;
     }
-    bits = load_bits(ilahrs_field_member_const(field, payload), field->size);
-    return FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size) : (int64_t)bits;
+    bits = load_bits(ilahrs_field_member_const(field, payload), FIELD_NUMBER_SIZE(field));
+    return FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, FIELD_NUMBER_SIZE(field)) : (int64_t)bits;
 }
 
 float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *payload)
@@ -1273,19 +1426,20 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
 {
     /* The value fits the field if its low bytes, read back as the field's type, give it again. */
     uint32_t bits = (uint32_t)(uint64_t)value;
+    unsigned size = FIELD_NUMBER_SIZE(field);
     if (is_integer(field)
-        && value == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, field->size)
-                                                             : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * field->size))))) {
-        store_bits(ilahrs_field_member(field, payload), bits, field->size);
+        && value == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, size)
+                                                             : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * size))))) {
+        store_bits(ilahrs_field_member(field, payload), bits, size);
         return true;
     }
-    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, float value, ilahrs_error_t *err)
 {
     if (FIELD_KIND(field) != ILAHRS_KIND_FLOAT) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
     }
     memcpy(ilahrs_field_member(field, payload), &value, sizeof value);
     return true;
@@ -1313,13 +1467,13 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
         if (key < ilahrs_float_bounds[FIELD_BOUNDS(f)][0] || key > ilahrs_float_bounds[FIELD_BOUNDS(f)][1]) {
             return false;
         }
-        if (TYPE_ENCODING(FIELD_TYPE(f)) == ENCODING_DECLINATION) {
+        if (FIELD_ENCODING(f) == ENCODING_DECLINATION) {
             return (key >= DECLINATION_MIN_KEY && key <= DECLINATION_MAX_KEY) || key > DECLINATION_COMPUTE_ABOVE_KEY;
         }
         return true;
     }
     if (FIELD_BOUNDS(f) != 0) {
-        int32_t value = FIELD_KIND(f) == ILAHRS_KIND_SIGNED ? sign_extend(bits, f->size) : (int32_t)bits;
+        int32_t value = FIELD_KIND(f) == ILAHRS_KIND_SIGNED ? sign_extend(bits, FIELD_NUMBER_SIZE(f)) : (int32_t)bits;
         if (FIELD_KIND(f) == ILAHRS_KIND_UNSIGNED && bits > 0x7FFFFFFFu) {
             return false; /* above every int32 bound */
         }
@@ -1331,7 +1485,7 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
 bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier, int32_t *divisor)
 {
     int32_t d;
-    if (FIELD_SCALE(field) == 0) {
+    if (FIELD_IS_ARRAY(field) || FIELD_SCALE(field) == 0) {
         return false;
     }
     d = ilahrs_scales[FIELD_SCALE(field)].divisor;
@@ -1364,11 +1518,11 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
             const char *text = FIELD_NAME(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
-            for (n = 0; ilahrs_defaults[i].text != 0 && n < f->size && text[n] != '\0'; n++) {
+            for (n = 0; ilahrs_defaults[i].text != 0 && n < FIELD_ARRAY_SIZE(f) && text[n] != '\0'; n++) {
                 member[n] = text[n];
             }
         } else {
-            store_bits(ilahrs_field_member(f, out), ilahrs_defaults[i].bits, f->size);
+            store_bits(ilahrs_field_member(f, out), ilahrs_defaults[i].bits, FIELD_NUMBER_SIZE(f));
         }
     }
 }
@@ -1392,11 +1546,12 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     f = &ilahrs_fields[ilahrs_payloads[payload].first_field];
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
-        uint8_t *member = (uint8_t *)out + f->member;
-        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR || FIELD_KIND(f) == ILAHRS_KIND_RESERVED) {
-            copy_forward(member, data + f->offset, f->size);
+        uint8_t *member = (uint8_t *)out + FIELD_MEMBER(f);
+        const uint8_t *wire = data + FIELD_OFFSET(f);
+        if (FIELD_IS_ARRAY(f)) {
+            copy_forward(member, wire, FIELD_ARRAY_SIZE(f));
         } else {
-            store_bits(member, get_le(data + f->offset, f->size), f->size);
+            store_bits(member, get_le(wire, FIELD_NUMBER_SIZE(f)), FIELD_NUMBER_SIZE(f));
         }
     }
     return true;
@@ -1417,17 +1572,18 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     f = &ilahrs_fields[ilahrs_payloads[payload].first_field];
     end = f + ilahrs_payloads[payload].field_count;
     for (; f < end; f++) {
-        const uint8_t *member = (const uint8_t *)in + f->member;
-        if (FIELD_KIND(f) == ILAHRS_KIND_CHAR || FIELD_KIND(f) == ILAHRS_KIND_RESERVED) {
-            copy_forward(out + f->offset, member, f->size);
+        const uint8_t *member = (const uint8_t *)in + FIELD_MEMBER(f);
+        uint8_t *wire = out + FIELD_OFFSET(f);
+        if (FIELD_IS_ARRAY(f)) {
+            copy_forward(wire, member, FIELD_ARRAY_SIZE(f));
         } else {
-            uint32_t bits = load_bits(member, f->size);
+            uint32_t bits = load_bits(member, FIELD_NUMBER_SIZE(f));
             {
                 if (!stored_ok(f, bits)) {
-                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, f->offset, FIELD_NAME(FIELD_NAME_AT(f)));
+                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(f), FIELD_NAME(FIELD_NAME_AT(f)));
                 }
             }
-            put_le(out + f->offset, bits, f->size);
+            put_le(wire, bits, FIELD_NUMBER_SIZE(f));
         }
     }
     return size;
@@ -2059,7 +2215,7 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
         bool is_signed = FIELD_KIND(field) == ILAHRS_KIND_SIGNED;
-        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * field->size + is_signed); /* the C type's maximum */
+        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * FIELD_NUMBER_SIZE(field) + is_signed); /* the C type's maximum */
         low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
         high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
         low = int_key(low);
@@ -2067,13 +2223,13 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
         break;
     }
     default:
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
     }
     ok = key >= low && key <= high;
-    if (ok && TYPE_ENCODING(FIELD_TYPE(field)) == ENCODING_DECLINATION) {
+    if (ok && FIELD_ENCODING(field) == ENCODING_DECLINATION) {
         ok = (key >= DECLINATION_MIN_DKEY && key <= DECLINATION_MAX_DKEY) || key > DECLINATION_COMPUTE_ABOVE_DKEY;
     }
-    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 /* |value| * divisor rounded half away from zero, as the double code computed it: s = |value| *

@@ -684,11 +684,9 @@ typedef enum ilahrs_kind {
  * layout of this struct is not part of the interface.
  */
 typedef struct ilahrs_field_info {
-    uint16_t name_type;  /* offset in the field-name pool << 4 | ilahrs_kind_t | encoding << 3 */
-    uint8_t offset;  /* wire offset */
-    uint8_t size;    /* wire size */
-    uint8_t member;  /* offsetof() in the payload struct */
-    uint8_t checks;   /* scale << 4 | bounds: engineering scale and builder check (by kind), 0: none */
+    uint16_t name_type;  /* offset in the field-name pool << 6 | log2(size of a number) << 4 | encoding << 3 | ilahrs_kind_t */
+    uint8_t place;  /* struct padding before the member << 6 | wire offset */
+    uint8_t info;   /* char, reserved: wire size; numbers: scale << 4 | bounds (by kind), 0: none */
 } ilahrs_field_info_t;
 
 /** Spec name of a payload table ("full_output"); NULL if unknown. */

@@ -75,23 +75,23 @@ static bool ref_field_check(const ilahrs_field_info_t *field, double value, ilah
         break;
     case ILAHRS_KIND_UNSIGNED:
     case ILAHRS_KIND_SIGNED: {
-        int64_t top = (int64_t)((((uint64_t)1) << (8 * field->size - (FIELD_KIND(field) == ILAHRS_KIND_SIGNED))) - 1u);
+        int64_t top = (int64_t)((((uint64_t)1) << (8 * FIELD_NUMBER_SIZE(field) - (FIELD_KIND(field) == ILAHRS_KIND_SIGNED))) - 1u);
         low = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][0]
                                  : FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? -(double)top - 1.0 : 0.0;
         high = FIELD_BOUNDS(field) != 0 ? (double)ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (double)top;
         break;
     }
     default:
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
     }
     ok = value >= low && value <= high;
 #ifdef ILAHRS_DECLINATION_MIN
-    if (ok && TYPE_ENCODING(FIELD_TYPE(field)) == ENCODING_DECLINATION) {
+    if (ok && FIELD_ENCODING(field) == ENCODING_DECLINATION) {
         ok = (value >= (double)ILAHRS_DECLINATION_MIN && value <= (double)ILAHRS_DECLINATION_MAX)
           || value > (double)ILAHRS_DECLINATION_COMPUTE_ABOVE;
     }
 #endif
-    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, field->offset, FIELD_NAME(FIELD_NAME_AT(field)));
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
 }
 
 /* value * divisor rounded half away from zero, saturated far beyond every range. */
@@ -300,7 +300,7 @@ static bool ref_bounds(const ilahrs_field_info_t *f, double *low, double *high)
         *low = ilahrs_int_bounds[FIELD_BOUNDS(f)][0];
         *high = ilahrs_int_bounds[FIELD_BOUNDS(f)][1];
     } else {
-        int bits = 8 * f->size - (FIELD_KIND(f) == ILAHRS_KIND_SIGNED);
+        int bits = 8 * (int)FIELD_NUMBER_SIZE(f) - (FIELD_KIND(f) == ILAHRS_KIND_SIGNED);
         *high = ldexp(1.0, bits) - 1.0;
         *low = FIELD_KIND(f) == ILAHRS_KIND_SIGNED ? -*high - 1.0 : 0.0;
     }

@@ -112,6 +112,7 @@ class FieldRow:
     bounds: int  # index into the integer or float bounds table (by kind), 0 = no check
     scale: int  # index into the scale table, 0 = unscaled
     encoding: int  # index into ENCODINGS
+    member: int  # offset of the field's member in its C struct (natural alignment, checked in C)
 
 
 @dataclass(frozen=True)
@@ -245,7 +246,11 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     parameters = [p.name for p in spec.variant_parameters]
     for p in spec.payloads:
         first[p.name] = len(rows)
+        member = 0
         for f in p.fields:
+            # The header declares the members in wire order, each aligned to its own size (arrays: 1).
+            align = f.size if f.is_numeric else 1
+            member = -(-member // align) * align
             b = field_bounds(f)
             b_index = 0 if b is None else _index(float_bounds if f.kind == "float" else int_bounds, b)
             s_index = 0
@@ -272,8 +277,10 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
                     bounds=b_index,
                     scale=s_index,
                     encoding=ENCODINGS.index("declination" if f.encoding == "declination" else "none"),
+                    member=member,
                 )
             )
+            member += f.size + (1 if f.kind == "char" else 0)  # a char array holds a terminating NUL (filters.c_member)
     return Tables(
         pools=pools,
         name_sections=sections,

@@ -96,14 +96,19 @@ def date_tables(spec: Spec) -> DateTables | None:
 
 @dataclass(frozen=True)
 class FieldPacking:
-    """How ilahrs_field_info_t packs its small numbers: the type (kind, then encoding) below the
-    name's pool offset in one word, the bounds index below the scale index in another."""
+    """How ilahrs_field_info_t packs a field in three columns of small numbers:
+    - name_type: the name's pool offset above the type (kind, encoding, then log2 of a number's size);
+    - place: the member's distance from the wire offset (struct padding so far) above the wire offset;
+    - info: an array's size (char, reserved: the last kinds), else the scale index above the bounds index."""
 
     kind_bits: int
+    encoding_bits: int
     type_bits: int
     name_type: str  # C type of name << type_bits | type
+    offset_bits: int
+    place: str  # C type of (member - offset) << offset_bits | offset
     bounds_bits: int
-    checks: str  # C type of scale << bounds_bits | bounds
+    info: str  # C type of an array's size, or scale << bounds_bits | bounds
 
 
 def bits_for(count: int) -> int:
@@ -112,19 +117,36 @@ def bits_for(count: int) -> int:
 
 
 def packed_type(bits: int) -> str:
+    if bits > 32:
+        raise ValueError(f"a packed column of {bits} bits: no 32-bit C integer type holds it")
     return "uint8_t" if bits <= 8 else "uint16_t" if bits <= 16 else "uint32_t"
 
 
+ARRAY_KINDS = ("char", "reserved")
+
+
 def field_packing(t: tables.Tables) -> FieldPacking:
+    if t.kinds[-len(ARRAY_KINDS):] != ARRAY_KINDS:
+        raise ValueError("the C field table needs the array kinds (char, reserved) last")
     kind_bits = bits_for(len(t.kinds))
-    type_bits = kind_bits + bits_for(len(t.encodings))
+    encoding_bits = bits_for(len(t.encodings))
+    numbers = [r.field.size for r in t.fields if r.field.is_numeric]
+    if any(size & (size - 1) for size in numbers):
+        raise ValueError("the C field table holds sizes of numbers as powers of two")
+    type_bits = kind_bits + encoding_bits + bits_for(max(numbers, default=1).bit_length())
+    offset_bits = bits_for(max(r.field.offset for r in t.fields) + 1)
+    padding_bits = bits_for(max(r.member - r.field.offset for r in t.fields) + 1)
     bounds_bits = bits_for(max(len(t.int_bounds), len(t.float_bounds)))
+    arrays = [r.field.size for r in t.fields if not r.field.is_numeric]
     return FieldPacking(
         kind_bits=kind_bits,
+        encoding_bits=encoding_bits,
         type_bits=type_bits,
-        name_type=packed_type(max(16, bits_for(t.pools["field"].size) + type_bits)),
+        name_type=packed_type(bits_for(t.pools["field"].size) + type_bits),
+        offset_bits=offset_bits,
+        place=packed_type(offset_bits + padding_bits),
         bounds_bits=bounds_bits,
-        checks=packed_type(bounds_bits + bits_for(len(t.scales))),
+        info=packed_type(max(bounds_bits + bits_for(len(t.scales)), bits_for(max(arrays, default=0) + 1))),
     )
 
 
