@@ -1,8 +1,8 @@
 /*
- * ilahrs_date_decode() and ilahrs_date_encode() against a copy of the code they replace (the
- * decoder that tried every day of two years): every answer (return value, the date or float
- * written, error kind, offset and field) for every float from the year ILAHRS_DATE_YEAR_MIN - 2
- * to ILAHRS_DATE_YEAR_MAX + 3 and for a seeded sample of all other bit patterns; the encoder for
+ * ilahrs_date_decode() and ilahrs_date_encode() against a copy of the code as it was at 550522e
+ * (a rewrite must keep every answer): the return value, the date or float written, error kind,
+ * offset and field, for every float from the year ILAHRS_DATE_YEAR_MIN - 2 to
+ * ILAHRS_DATE_YEAR_MAX + 3 and for a seeded sample of all other bit patterns; the encoder for
  * every year, month and day around the valid ones. A mismatch prints the input.
  *
  * It includes ilahrs.c, to copy that code with the library's own helpers and the spec's
@@ -25,7 +25,7 @@
 static unsigned long compared;
 static unsigned long mismatches;
 
-/* ---- The code as it was (ilahrs.c.j2 before the direct decoder) ----------------------------- */
+/* ---- The code as it was (ilahrs.c.j2 at 550522e) ------------------------------------------- */
 
 static int ref_days_in_month(int year, int month)
 {
