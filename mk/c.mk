@@ -2,7 +2,8 @@
 #
 #   make build-c       library, conformance runner and example with gcc and clang, -Werror
 #   make lint-c        the header compiled as C++ (g++ and clang++), the library with extra warnings
-#   make test-c        unit tests under ASan+UBSan (gcc and clang), the sanitized conformance runner
+#   make test-c        unit tests under ASan+UBSan (gcc and clang), the date codec against its old
+#                      algorithm, the sanitized conformance runner
 #                      (chunked and byte at a time, and the frames-only decoder against the full one),
 #                      brief libFuzzer runs, CMake build, the example
 #   make test-c-be     the same tests on a big-endian host (s390x under qemu-user)
@@ -128,6 +129,16 @@ $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small: tests/c/test_values.c $
 	@mkdir -p $(@D)
 	$(if $(findstring _small,$@),$(CLANG) $(C_SMALL),gcc) $(C_STD) $(C_SAN) -I$(C_DIR) $< -lm -o $@
 
+# The date decoder and encoder against the code they replace (test_date.c includes ilahrs.c): every
+# float of the date range at -O2 without sanitizers, a sample under sanitizers on the size build.
+$(C_OUT)/test_date: tests/c/test_date.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) -O2 -I$(C_DIR) $< -o $@
+
+$(C_OUT)/san/test_date_small: tests/c/test_date.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) -I$(C_DIR) $< -o $@
+
 $(C_OUT)/fuzz/%_small: fuzz/c/%.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_FUZZ) $(C_SMALL) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
@@ -158,7 +169,7 @@ C_FUZZERS := $(C_OUT)/fuzz/fuzz_stream $(C_OUT)/fuzz/fuzz_parsers $(C_OUT)/fuzz/
              $(C_OUT)/fuzz/fuzz_parsers_small
 
 test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_OUT)/san/test_ilahrs_small \
-        $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small \
+        $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small $(C_OUT)/test_date $(C_OUT)/san/test_date_small \
         $(C_OUT)/san/ilahrs_conformance $(C_OUT)/san/ilahrs_conformance_small \
         $(C_OUT)/san/ilahrs_conformance_frames $(C_OUT)/san/ilahrs_conformance_frames_small \
         $(C_FUZZERS) $(C_OUT)/corpus/.stamp $(C_OUT)/capture $(C_OUT)/decode_capture $(C_OUT)/extended/test_ilahrs
@@ -167,6 +178,8 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	$(C_OUT)/san/test_ilahrs_small 0xC0DE
 	$(C_OUT)/san/test_values
 	$(C_OUT)/san/test_values_small 0xC0DE
+	$(C_OUT)/test_date
+	$(C_OUT)/san/test_date_small --sample 0xC0DE
 	$(C_OUT)/extended/test_ilahrs
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance" --name c-asan-ubsan
 	$(PY) conformance/harness.py --command "$(C_OUT)/san/ilahrs_conformance --bytewise" --name c-bytewise
@@ -208,15 +221,20 @@ $(C_BE)/test_values: tests/c/test_values.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static -I$(C_DIR) $< -lm -o $@
 
+$(C_BE)/test_date: tests/c/test_date.c $(C_LIB) | setup-c-be
+	@mkdir -p $(@D)
+	$(BE_CC) $(C_STD) -O2 -static $(C_SMALL) -I$(C_DIR) $< -o $@
+
 $(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static $(if $(findstring _small,$@),$(C_SMALL)) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-test-c-be: setup-c-be $(C_BE)/test_ilahrs $(C_BE)/test_ilahrs_small $(C_BE)/test_values \
+test-c-be: setup-c-be $(C_BE)/test_ilahrs $(C_BE)/test_ilahrs_small $(C_BE)/test_values $(C_BE)/test_date \
            $(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small $(C_OUT)/capture
 	$(BE_RUN) $(C_BE)/test_ilahrs
 	$(BE_RUN) $(C_BE)/test_ilahrs_small 0xC0DE
 	$(BE_RUN) $(C_BE)/test_values
+	$(BE_RUN) $(C_BE)/test_date --sample
 	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance" --name c-s390x
 	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance_small --bytewise" --name c-s390x-size-bytewise
 	$(PY) tests/c/differential.py $(C_OUT)/capture "$(BE_RUN) $(C_BE)/ilahrs_conformance" 4

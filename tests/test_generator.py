@@ -201,11 +201,16 @@ def test_c_date_decoder_integers_fit() -> None:
     whose values and dates would not fit (here years near 1, where a float32 has 23 fraction bits)."""
     from dataclasses import replace
 
+    from generator.targets.c import filters as c_filters
     from generator.targets.c import target as c_target
 
     spec = build_spec()
     assert spec.date is not None
-    assert c_target.date_tables(spec) is not None
+    tables = c_target.date_tables(spec)
+    assert tables is not None
+    # The decoder accepts the floats from year_min to just below year_max + 2.
+    assert tables.min_key == c_filters.float_key(float(spec.date.year_min))
+    assert tables.max_key == c_filters.float_key(float(spec.date.year_max + 2)) - 1
     early = replace(spec, date=replace(spec.date, year_min=2, year_max=3))
     with pytest.raises(ValueError, match="32-bit integers"):
         c_target.date_tables(early)

@@ -1610,11 +1610,14 @@ size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint
 
 /* ---- Date (Table 6.9, Table 6.10, Table 6.13) ---------------------------------------------------------------- */
 
+/* Month 1..12 of a year (Gregorian). Bit m of 0x15AA is set for the months of 31 days; a year
+ * divisible by 100 is leap when also by 16 (then by 400). */
 static int days_in_month(int year, int month)
 {
-    static const uint8_t days[12] = { 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31 };
-    bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-    return month == 2 && leap ? 29 : days[month - 1];
+    if (month == 2) {
+        return (year & 3) == 0 && (year % 100 != 0 || (year & 15) == 0) ? 29 : 28;
+    }
+    return 30 + (int)((0x15AAu >> month) & 1u);
 }
 
 /*
@@ -1664,10 +1667,11 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
     return true;
 }
 
-/* Date floats a decoder accepts: the years ILAHRS_DATE_YEAR_MIN - 1 .. ILAHRS_DATE_YEAR_MAX + 2,
- * as float keys; DATE_EXPONENT is the biased exponent of the smallest. */
-#define DATE_DECODE_MIN_KEY 1156407296
-#define DATE_DECODE_MAX_KEY 1158254592
+/* Date floats a decoder accepts, as float keys: from the year ILAHRS_DATE_YEAR_MIN to below
+ * ILAHRS_DATE_YEAR_MAX + 2, the floats whose candidate years (below) hold a valid date.
+ * DATE_EXPONENT is the biased exponent of the smallest. */
+#define DATE_DECODE_MIN_KEY 1156415488
+#define DATE_DECODE_MAX_KEY 1158254591
 #define DATE_EXPONENT 137u
 #define DATE_FRACTION_BITS (150u - DATE_EXPONENT)
 #define DATE_FRACTION_MASK ((1u << DATE_FRACTION_BITS) - 1u)
@@ -1709,9 +1713,6 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
                 }
             }
         }
-    }
-    if (best == 0xFFFFFFFFu) {
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NAME_DATE);
     }
     return true;
 }

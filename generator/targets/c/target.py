@@ -35,7 +35,7 @@ PAHR_SATURATED = 0x01000000
 class DateTables:
     scale: int  # least common multiple of the term divisors
     min_key: int  # float_key of the smallest date float a decoder accepts
-    max_key: int
+    max_key: int  # and of the largest
     exponent: int  # biased float32 exponent of the smallest
 
 
@@ -77,7 +77,10 @@ def date_tables(spec: Spec) -> DateTables | None:
                 if not 0 < scaled < 2**24 or nearest_float32(scaled, scale) != filters.float32(formula):
                     raise ValueError(f"date {ymd}: the C encoder's exact float32 division does not apply")
                 spread = max(spread, abs(scaled - year * scale), abs(scaled - (year + 1) * scale))
-    low, high = float(d.year_min - 1), float(d.year_max + 2)
+    # Accepted: the floats from year_min to below year_max + 2. Below year_min, and from year_max + 2,
+    # no date of year_min..year_max is among the decoder's candidates (the years floor(value) - 1
+    # and floor(value)); up to year_max + 2 the nearest is 30 or 31 December of year_max.
+    low, high = float(d.year_min), float(d.year_max + 2)
     exponent = (struct.unpack("<I", struct.pack("<f", low))[0] >> 23) & 0xFF
     top = (struct.unpack("<I", struct.pack("<f", high))[0] >> 23) & 0xFF
     # ilahrs_date_decode() holds the value in units of 2^-(150 - exponent) in a uint32 and its
@@ -91,7 +94,7 @@ def date_tables(spec: Spec) -> DateTables | None:
         or (d.year_max + 2) * scale >= 2**31
     ):
         raise ValueError("date floats outside what the C decoder's 32-bit integers hold")
-    return DateTables(scale, filters.float_key(low), filters.float_key(high), exponent)
+    return DateTables(scale, filters.float_key(low), filters.float_key(high) - 1, exponent)
 
 
 @dataclass(frozen=True)
