@@ -3,8 +3,9 @@
  */
 /*
  * The library is table-driven where that keeps it small: one payload codec walks the field
- * table below, one sentence codec walks the $PAHR field table, and every name is stored once
- * in one string pool. All tables are const; nothing here is mutable after start-up.
+ * table below, one sentence codec walks the $PAHR field table, and names live in string pools
+ * (one for every name that only the name functions use, one per kind for the names errors
+ * report). All tables are const; nothing here is mutable after start-up.
  */
 #include "ilahrs.h"
 
