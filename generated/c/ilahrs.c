@@ -865,6 +865,14 @@ typedef char ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MA
 #define OPAQUE(x) ((void)0)
 #endif
 
+/* NOINLINE keeps a small helper out of line in the size build, where one call is smaller than
+ * the copies the compiler would inline at each use. */
+#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
 /* Copy n bytes front to back: right for separate buffers and for moves to a lower address
  * within one buffer. */
 static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
@@ -915,11 +923,6 @@ static void zero_bytes(void *dst, size_t n)
 
 /* Optimized for size, every error path calls one copy of fail() rather than inline its three
  * stores (over a dozen bytes at each of some fifty call sites). */
-#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
-#define NOINLINE __attribute__((noinline))
-#else
-#define NOINLINE
-#endif
 
 static NOINLINE bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
 {
@@ -1017,11 +1020,6 @@ static bool equal_name(const char *name, size_t len, const char *known)
 
 /* Out of line in the size build: a call is smaller than the copy the compiler would inline into
  * each name accessor. */
-#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
-#define NOINLINE __attribute__((noinline))
-#else
-#define NOINLINE
-#endif
 
 /* Entry `index` of the `count` names of the section at `first` of ilahrs_name_offsets, NULL
  * when out of range. Every name accessor but the error kind's is this one call. */
