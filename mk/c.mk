@@ -73,7 +73,7 @@ $(C_OUT)/clang/decode_capture: $(C_DIR)/examples/decode_capture.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
 
-# --- lint: C++ use of the header, stricter warnings on the library -------------------------
+# --- lint: C++ use of the header, stricter warnings on the library (and without names) -----
 
 C_CXX := -std=c++11 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
 
@@ -85,6 +85,12 @@ lint-c: setup-c $(C_LIB) tests/c/cpp_check.cpp
 	clang++ $(C_CXX) -I$(C_DIR) tests/c/cpp_check.cpp $(C_OUT)/lint/ilahrs.clang.o -o $(C_OUT)/lint/cpp_check_clang
 	$(C_OUT)/lint/cpp_check_gcc
 	$(C_OUT)/lint/cpp_check_clang
+	gcc $(C_STD) $(C_EXTRA) -O2 -DILAHRS_NAMES=0 -c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs_names_off.gcc.o
+	$(CLANG) $(C_STD) $(C_EXTRA) -Os -DILAHRS_NAMES=0 -DILAHRS_OPTIMIZE_SIZE=1 -DILAHRS_STREAM_SENTENCES=0 \
+		-c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs_names_off.clang.o
+	g++ $(C_CXX) -DILAHRS_NAMES=0 -I$(C_DIR) tests/c/cpp_check.cpp $(C_OUT)/lint/ilahrs_names_off.gcc.o \
+		-o $(C_OUT)/lint/cpp_check_names_off
+	$(C_OUT)/lint/cpp_check_names_off
 
 # --- test ------------------------------------------------------------------------------------
 
@@ -197,6 +203,11 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake/install >/dev/null
 	cmake --build $(C_OUT)/cmake >/dev/null && cmake --install $(C_OUT)/cmake >/dev/null
 	test -f $(C_OUT)/cmake/install/lib/pkgconfig/ilahrs.pc -o -f $(C_OUT)/cmake/install/lib64/pkgconfig/ilahrs.pc
+	rm -rf $(C_OUT)/cmake-names-off && cmake -S $(C_DIR) -B $(C_OUT)/cmake-names-off -DILAHRS_NAMES=OFF \
+		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake-names-off/install >/dev/null
+	cmake --build $(C_OUT)/cmake-names-off >/dev/null && cmake --install $(C_OUT)/cmake-names-off >/dev/null
+	grep -q '^Cflags: .* -DILAHRS_NAMES=0$$' $(C_OUT)/cmake-names-off/install/lib*/pkgconfig/ilahrs.pc
+	! nm $(C_OUT)/cmake-names-off/libilahrs.a | grep -q ilahrs_command_name
 	$(C_OUT)/capture --size 200000 --seed 7 --out $(C_OUT)/example-capture.bin >/dev/null
 	$(C_OUT)/decode_capture $(C_OUT)/example-capture.bin | tail -1
 

@@ -101,11 +101,24 @@ def test_c_tables_fit_their_packing() -> None:
 
     t = tables.build_tables(spec)
     for pool in t.pools.values():
+        if not pool.strings:
+            assert pool.size == 0
+            continue
         text = "\0".join(pool.strings) + "\0"
         assert len(text) == pool.size
         for name, offset in pool.offsets.items():
             assert text[offset:].split("\0", 1)[0] == name
     assert t.pools["field"].offsets["gyro_x"] == t.pools["field"].offsets["ugyro_x"] + 1
+    # Strings that stay without names: part numbers and char defaults, in pools of their own.
+    assert list(t.pools["part"].offsets) == [v.part_number for v in spec.variants]
+    assert all(v.part_number not in t.pools["name"].offsets for v in spec.variants)
+    assert not t.pools["text"].strings and all(r.text < 0 for r in t.defaults)
+    payload = next(p for p in spec.payloads if any(f.kind == "char" for f in p.fields))
+    char = next(f for f in payload.fields if f.kind == "char")
+    texted = replace(payload, fields=tuple(replace(f, default="X1") if f is char else f for f in payload.fields))
+    t2 = tables.build_tables(replace(spec, payloads=tuple(texted if p is payload else p for p in spec.payloads)))
+    assert t2.pools["text"].strings == ["X1"] and "X1" not in t2.pools["field"].offsets
+    assert [r.text for r in t2.defaults if r.text >= 0] == [0]
 
     # One pool for the names of the accessors: each section lists its kind in enum order, the event
     # section continues the command section, and a USW bit without a flag has the empty name.

@@ -39,8 +39,8 @@
 
 /* ---- Tables --------------------------------------------------------------------------- */
 
-/* Names (NUL-separated pools; tables hold offsets into them). The names errors report have a
- * pool per kind, so that a firmware links only the ones it reports. */
+/* Strings (NUL-separated pools; tables hold offsets into them). Error kind names, the text
+ * defaults of char fields and the variants' part numbers are there in every build. */
 static const char ilahrs_error_names[159] =
     "truncated\000"
     "bad_header\000"
@@ -55,6 +55,43 @@ static const char ilahrs_error_names[159] =
     "unexpected_message\000"
     "timeout";
 
+static const char ilahrs_text_names[1] =
+    "";
+
+static const char ilahrs_part_names[106] =
+    "AHRS-G300-A2-TMGA-C1-V1.1\000"
+    "AHRS-G300-A6-TMGA-C1-V1.1\000"
+    "AHRS s/n 11AC0001 - 11AC0009\000"
+    "AHRS-G300-A2-TGA-C1-V1.1";
+
+#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
+#define TEXT(offset) (ilahrs_text_names + (offset))
+
+static const uint8_t ilahrs_error_offsets[] = {
+    0, /* truncated */
+    10, /* bad_header */
+    21, /* bad_message_type */
+    38, /* bad_length */
+    49, /* bad_checksum */
+    62, /* trailing_data */
+    76, /* unknown_command */
+    92, /* out_of_range */
+    105, /* malformed */
+    115, /* buffer_too_small */
+    132, /* unexpected_message */
+    151, /* timeout */
+};
+
+static const uint8_t ilahrs_part_offsets[ILAHRS_VARIANT_COUNT] = {
+    0, /* g300_a2_tmga */
+    26, /* g300_a6_tmga */
+    52, /* sn_11ac0001_0009 */
+    81, /* g300_a2_tga */
+};
+
+#if ILAHRS_NAMES
+/* The names errors report have a pool per kind, so that a firmware links only the ones it
+ * reports. */
 static const char ilahrs_frame_names[61] =
     "header\000"
     "payload\000"
@@ -142,39 +179,16 @@ static const char ilahrs_sentence_names[39] =
 static const char ilahrs_date_names[5] =
     "date";
 
-
-#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
 #define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
 #define FIELD_NAME(offset) (ilahrs_field_names + (offset))
 #define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
-#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
-#define NAME_FRAME_RESERVED FRAME_NAME(28)
-#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
-#define NAME_FRAME_HEADER FRAME_NAME(0)
-#define NAME_FRAME_PAYLOAD FRAME_NAME(7)
-#define NAME_FRAME_CHECKSUM FRAME_NAME(52)
 #define NAME_DATE (ilahrs_date_names + 0)
-
-static const uint8_t ilahrs_error_offsets[] = {
-    0, /* truncated */
-    10, /* bad_header */
-    21, /* bad_message_type */
-    38, /* bad_length */
-    49, /* bad_checksum */
-    62, /* trailing_data */
-    76, /* unknown_command */
-    92, /* out_of_range */
-    105, /* malformed */
-    115, /* buffer_too_small */
-    132, /* unexpected_message */
-    151, /* timeout */
-};
 
 /* Every other name, for the name accessors and by-name lookups, in one pool (a name that ends
  * another is stored once, as its tail), and their offsets in one table: one section per kind, in
  * the order of the kind's enum, starting at NAMES_<kind>. A USW bit without a flag has the empty
  * name. Event names are the command names, then those of the other events. */
-static const char ilahrs_name_names[1314] =
+static const char ilahrs_name_names[1208] =
     "AHRScont1\000"
     "AHRScont2\000"
     "AHRScont3\000"
@@ -212,10 +226,6 @@ static const char ilahrs_name_names[1314] =
     "g300_a6_tmga\000"
     "sn_11ac0001_0009\000"
     "g300_a2_tga\000"
-    "AHRS-G300-A2-TMGA-C1-V1.1\000"
-    "AHRS-G300-A6-TMGA-C1-V1.1\000"
-    "AHRS s/n 11AC0001 - 11AC0009\000"
-    "AHRS-G300-A2-TGA-C1-V1.1\000"
     "idle\000"
     "calibration\000"
     "full_output\000"
@@ -260,28 +270,40 @@ static const char ilahrs_name_names[1314] =
     "ack\000"
     "output_sleep";
 
-static const uint16_t ilahrs_name_offsets[101] = {
+static const uint16_t ilahrs_name_offsets[97] = {
     /* command */ 0, 10, 20, 30, 39, 48, 57, 66, 74, 85, 90, 102, 114, 125, 137, 152, 159, 170, 183, 194, 206, 217, 227, 237, 245, 254,
     /* event */ 264, 280, 294, 302, 316, 331, 349,
     /* variant */ 360, 373, 386, 403,
-    /* part_number */ 415, 441, 467, 496,
-    /* mode */ 521, 1077, 1097, 526, 1308,
-    /* payload */ 538, 550, 561, 581, 599, 620, 641, 658, 669, 692, 711, 734, 761, 780,
-    /* flag */ 796, 821, 842, 855, 877, 898, 918, 9, 935, 954, 974, 990, 1006, 1022, 1043,
-    /* state */ 521, 1120, 1068, 1077, 1088, 1097, 1308, 1108, 1140, 1161, 1186, 1207, 1232, 1243, 1267, 1280,
-    /* answer */ 1297, 620, 641, 658, 761, 581, 543, 1301, 692, 711,
+    /* mode */ 415, 971, 991, 420, 1202,
+    /* payload */ 432, 444, 455, 475, 493, 514, 535, 552, 563, 586, 605, 628, 655, 674,
+    /* flag */ 690, 715, 736, 749, 771, 792, 812, 9, 829, 848, 868, 884, 900, 916, 937,
+    /* state */ 415, 1014, 962, 971, 982, 991, 1202, 1002, 1034, 1055, 1080, 1101, 1126, 1137, 1161, 1174,
+    /* answer */ 1191, 514, 535, 552, 655, 475, 437, 1195, 586, 605,
 };
 #define NAMES_COMMAND 0u
 #define NAMES_EVENT 26u
 #define NAMES_VARIANT 33u
-#define NAMES_PART_NUMBER 37u
-#define NAMES_MODE 41u
-#define NAMES_PAYLOAD 46u
-#define NAMES_FLAG 60u
-#define NAMES_STATE 75u
-#define NAMES_ANSWER 91u
+#define NAMES_MODE 37u
+#define NAMES_PAYLOAD 42u
+#define NAMES_FLAG 56u
+#define NAMES_STATE 71u
+#define NAMES_ANSWER 87u
 #define NAMES_FLAG_COUNT 15u /* one per USW bit up to the last flag */
 typedef char ilahrs_check_event_names[NAMES_EVENT == NAMES_COMMAND + ILAHRS_COMMAND_COUNT ? 1 : -1];
+#else
+/* Without names, errors name no field. */
+#define NO_NAME ((const char *)NULL)
+#define FRAME_NAME(offset) NO_NAME
+#define FIELD_NAME(offset) NO_NAME
+#define SENTENCE_NAME(offset) NO_NAME
+#define NAME_DATE NO_NAME
+#endif
+#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
+#define NAME_FRAME_RESERVED FRAME_NAME(28)
+#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
+#define NAME_FRAME_HEADER FRAME_NAME(0)
+#define NAME_FRAME_PAYLOAD FRAME_NAME(7)
+#define NAME_FRAME_CHECKSUM FRAME_NAME(52)
 
 /* Command table (Table C.1), one array per column so that a firmware links only the columns it
  * uses: code, modes it is valid in, response, parameter block, payload tables of a data
@@ -669,7 +691,7 @@ static const struct {
 };
 
 /* Builder defaults other than zero (the spec default, else the lowest value the range allows):
- * the field's row, the field-name pool offset of a char field's text (0: none, numeric), or the
+ * the field's row, the text pool offset of a char field's text (0 for a number), or the
  * bits of a numeric field's member. Each column has the smallest type that holds it. */
 static const struct {
     uint32_t bits;
@@ -1004,6 +1026,7 @@ static int32_t sign_extend(uint32_t bits, size_t size)
     return (int32_t)bits;
 }
 
+#if ILAHRS_NAMES
 static bool equal_name(const char *name, size_t len, const char *known)
 {
     size_t i;
@@ -1040,6 +1063,7 @@ static int name_index(const char *name, size_t len, unsigned first, unsigned cou
     }
     return -1;
 }
+#endif
 
 /* ---- Errors ---------------------------------------------------------------------------- */
 
@@ -1178,6 +1202,7 @@ size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap,
 
 /* ---- Commands -------------------------------------------------------------------------- */
 
+#if ILAHRS_NAMES
 const char *ilahrs_mode_name(ilahrs_mode_t mode)
 {
     return name_at((unsigned)mode, NAMES_MODE, ILAHRS_MODE_COUNT);
@@ -1187,12 +1212,14 @@ const char *ilahrs_command_name(ilahrs_command_t command)
 {
     return name_at((unsigned)command, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
 }
+#endif
 
 uint8_t ilahrs_command_code(ilahrs_command_t command)
 {
     return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_codes[command] : 0;
 }
 
+#if ILAHRS_NAMES
 bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *command, ilahrs_error_t *err)
 {
     int i = name_index(name, len, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
@@ -1202,6 +1229,7 @@ bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *comm
     *command = (ilahrs_command_t)i;
     return true;
 }
+#endif
 
 uint8_t ilahrs_command_valid_in(ilahrs_command_t command)
 {
@@ -1301,16 +1329,19 @@ int32_t ilahrs_variant_parameter(ilahrs_variant_t variant, ilahrs_variant_parame
     return ilahrs_variant_values[variant][parameter];
 }
 
+#if ILAHRS_NAMES
 const char *ilahrs_variant_name(ilahrs_variant_t variant)
 {
     return name_at((unsigned)variant, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
 }
+#endif
 
 const char *ilahrs_variant_part_number(ilahrs_variant_t variant)
 {
-    return name_at((unsigned)variant, NAMES_PART_NUMBER, ILAHRS_VARIANT_COUNT);
+    return (unsigned)variant < ILAHRS_VARIANT_COUNT ? ilahrs_part_names + ilahrs_part_offsets[variant] : NULL;
 }
 
+#if ILAHRS_NAMES
 bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *variant)
 {
     int i = name_index(name, len, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
@@ -1320,13 +1351,16 @@ bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *vari
     *variant = (ilahrs_variant_t)i;
     return true;
 }
+#endif
 
 /* ---- Payloads -------------------------------------------------------------------------- */
 
+#if ILAHRS_NAMES
 const char *ilahrs_payload_name(ilahrs_payload_t payload)
 {
     return name_at((unsigned)payload, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT); /* ILAHRS_PAYLOAD_NONE: out of range */
 }
+#endif
 
 size_t ilahrs_payload_size(ilahrs_payload_t payload)
 {
@@ -1351,6 +1385,7 @@ const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t
     return &ilahrs_fields[ilahrs_payloads[payload].first_field + index];
 }
 
+#if ILAHRS_NAMES
 bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload)
 {
     int i = name_index(name, len, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT);
@@ -1365,6 +1400,7 @@ const char *ilahrs_field_name(const ilahrs_field_info_t *field)
 {
     return FIELD_NAME(FIELD_NAME_AT(field));
 }
+#endif
 
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field)
 {
@@ -1514,10 +1550,10 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
             continue;
         }
         if (FIELD_KIND(f) == ILAHRS_KIND_CHAR) {
-            const char *text = FIELD_NAME(ilahrs_defaults[i].text);
+            const char *text = TEXT(ilahrs_defaults[i].text);
             char *member = (char *)ilahrs_field_member(f, out);
             size_t n;
-            for (n = 0; ilahrs_defaults[i].text != 0 && n < FIELD_ARRAY_SIZE(f) && text[n] != '\0'; n++) {
+            for (n = 0; n < FIELD_ARRAY_SIZE(f) && text[n] != '\0'; n++) {
                 member[n] = text[n];
             }
         } else {
@@ -1718,11 +1754,13 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
 
 /* ---- Unit Status Word ------------------------------------------------------------------ */
 
+#if ILAHRS_NAMES
 const char *ilahrs_usw_flag_name(unsigned bit)
 {
     const char *name = name_at(bit, NAMES_FLAG, NAMES_FLAG_COUNT);
     return name != NULL && name[0] != '\0' ? name : NULL; /* empty: a bit without a flag */
 }
+#endif
 
 /* ---- $PAHR sentences (Table 6.7, section 6.2) ---------------------------------------------------- */
 
@@ -1771,10 +1809,12 @@ static uint32_t pahr_divisor(size_t k)
     return divisor;
 }
 
+#if ILAHRS_NAMES
 const char *ilahrs_pahr_field_name(size_t index)
 {
     return index < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[index].name) : NULL;
 }
+#endif
 
 bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max)
 {
@@ -2991,6 +3031,7 @@ static const struct {
     { ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_STOP_CLB_RUN, 21, 0 }, /* E29 */
 };
 
+#if ILAHRS_NAMES
 const char *ilahrs_state_name(ilahrs_state_t state)
 {
     return name_at((unsigned)state, NAMES_STATE, ILAHRS_STATE_COUNT);
@@ -3005,6 +3046,7 @@ bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state)
     *state = (ilahrs_state_t)i;
     return true;
 }
+#endif
 
 ilahrs_mode_t ilahrs_state_mode(ilahrs_state_t state)
 {
@@ -3025,6 +3067,7 @@ bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event)
     return true;
 }
 
+#if ILAHRS_NAMES
 const char *ilahrs_event_name(ilahrs_event_t event)
 {
     return name_at((unsigned)event, NAMES_COMMAND, ILAHRS_EVENT_COUNT); /* commands, then the other events */
@@ -3044,6 +3087,7 @@ const char *ilahrs_answer_name(ilahrs_answer_t answer)
 {
     return name_at((unsigned)answer, NAMES_ANSWER, ILAHRS_ANSWER_COUNT);
 }
+#endif
 
 ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer)
 {

@@ -29,6 +29,13 @@
  *   zero-copy stream decoding, a fast path for sentences in the layout builders write); on
  *   32-bit targets it takes the smallest code. Answers are identical. To choose, compile
  *   ilahrs.c with -DILAHRS_OPTIMIZE_SIZE=1 (small) or 0 (fast).
+ * - Names: by default the library knows the spec name of every command, payload, field, flag,
+ *   state and event, and errors name the field at fault. A firmware short of flash can define
+ *   ILAHRS_NAMES to 0 (for every file that includes this header, and for ilahrs.c): the name
+ *   accessors and by-name lookups are then not declared, errors report their field as NULL
+ *   (their kind and byte offset are unchanged, and the offset locates the field), and no name
+ *   string is linked. ilahrs_error_kind_name() and ilahrs_variant_part_number() stay.
+ *   Everything else answers exactly as in the default build.
  *
  * Decoding a byte stream (serial port, capture file):
  * @code
@@ -75,6 +82,11 @@ extern "C" {
 #define ILAHRS_SPEC_HASH "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
+
+/** 1 (the default): names and by-name lookups; 0: none (see "Names" above). */
+#ifndef ILAHRS_NAMES
+#define ILAHRS_NAMES 1
+#endif
 
 /* ======================================================================================== */
 /* Errors                                                                                   */
@@ -124,7 +136,8 @@ typedef enum ilahrs_error_kind {
 typedef struct ilahrs_error {
     ilahrs_error_kind_t kind; /**< What went wrong. */
     size_t offset;            /**< Byte offset into the input, or ILAHRS_NO_OFFSET. */
-    const char *field;        /**< Field at fault (spec name, e.g. "heading"), or NULL. */
+    const char *field;        /**< Field at fault (spec name, e.g. "heading"), or NULL (always
+                                   NULL when ILAHRS_NAMES is 0). */
 } ilahrs_error_t;
 
 /**
@@ -303,8 +316,10 @@ typedef enum ilahrs_mode {
 /** Number of operating modes. */
 #define ILAHRS_MODE_COUNT 5
 
+#if ILAHRS_NAMES
 /** The spec name of a mode ("idle"); NULL for a value outside ilahrs_mode_t. */
 const char *ilahrs_mode_name(ilahrs_mode_t mode);
+#endif
 /** The bit of `mode` in a mode set (ilahrs_command_valid_in()). */
 #define ILAHRS_MODE_BIT(mode) (1u << (unsigned)(mode))
 
@@ -440,17 +455,21 @@ typedef struct ilahrs_command_match {
     ilahrs_command_t commands[ILAHRS_COMMANDS_PER_CODE_MAX];    /**< Sorted by ICD name. */
 } ilahrs_command_match_t;
 
+#if ILAHRS_NAMES
 /** The ICD name of a command ("AHRScont1"); NULL for a value outside ilahrs_command_t. */
 const char *ilahrs_command_name(ilahrs_command_t command);
+#endif
 
 /** The code of a command; 0 for a value outside ilahrs_command_t. */
 uint8_t ilahrs_command_code(ilahrs_command_t command);
 
+#if ILAHRS_NAMES
 /**
  * Find a command by its ICD name (exact spelling, e.g. "GetBIT"), `len` characters at `name`.
  * @return true and `*command` set if found; false (`unknown_command`) otherwise
  */
 bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *command, ilahrs_error_t *err);
+#endif
 
 /** The modes in which the AHRS accepts a command, as ILAHRS_MODE_BIT()s; 0 for an unknown command. */
 uint8_t ilahrs_command_valid_in(ilahrs_command_t command);
@@ -655,14 +674,18 @@ typedef enum ilahrs_variant_parameter {
 /** The value of a variant parameter; 0 for an unknown variant or parameter. */
 int32_t ilahrs_variant_parameter(ilahrs_variant_t variant, ilahrs_variant_parameter_t parameter);
 
+#if ILAHRS_NAMES
 /** The spec name of a variant ("g300_a2_tmga"); NULL if unknown. */
 const char *ilahrs_variant_name(ilahrs_variant_t variant);
+#endif
 
 /** The part number of a variant ("AHRS-G300-A2-TMGA-C1-V1.1"); NULL if unknown. */
 const char *ilahrs_variant_part_number(ilahrs_variant_t variant);
 
+#if ILAHRS_NAMES
 /** Find a variant by its spec name, `len` characters at `name`. */
 bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *variant);
+#endif
 
 /* ======================================================================================== */
 /* Payload tables: generic interface                                                        */
@@ -689,8 +712,10 @@ typedef struct ilahrs_field_info {
     uint8_t info;   /* char, reserved: wire size; numbers: scale << 4 | bounds (by kind), 0: none */
 } ilahrs_field_info_t;
 
+#if ILAHRS_NAMES
 /** Spec name of a payload table ("full_output"); NULL if unknown. */
 const char *ilahrs_payload_name(ilahrs_payload_t payload);
+#endif
 /** Wire size of a payload table; 0 if unknown. */
 size_t ilahrs_payload_size(ilahrs_payload_t payload);
 /** sizeof the C struct of a payload table; 0 if unknown. */
@@ -699,11 +724,13 @@ size_t ilahrs_payload_struct_size(ilahrs_payload_t payload);
 size_t ilahrs_payload_field_count(ilahrs_payload_t payload);
 /** Field `index` of a payload table, in wire order; NULL if out of range. */
 const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t index);
+#if ILAHRS_NAMES
 /** Find a payload table by its spec name, `len` characters at `name`. */
 bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload);
 
 /** Spec name of a field ("heading"). */
 const char *ilahrs_field_name(const ilahrs_field_info_t *field);
+#endif
 /** Wire offset of a field in its payload. */
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field);
 /** Wire size of a field. */
@@ -2230,8 +2257,10 @@ static inline bool ilahrs_usw_has_failure(uint16_t usw)
     return (usw & ILAHRS_USW_FLAGS_MASK & ILAHRS_USW_FAILURE_MASK) != 0;
 }
 
+#if ILAHRS_NAMES
 /** The spec name of the flag at bit `bit` ("gyro_failure"); NULL for a bit that is no flag. */
 const char *ilahrs_usw_flag_name(unsigned bit);
+#endif
 
 /* ======================================================================================== */
 /* $PAHR sentences (Table 6.7, section 6.2): $PAHR,RRRR.rr,PPP.pp,HHH.hh,TTT.t,V.vv,SSSS*CC<CR><LF> */
@@ -2337,8 +2366,10 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
  */
 bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err);
 
+#if ILAHRS_NAMES
 /** The spec name of sentence field `index` (0..ILAHRS_PAHR_FIELD_COUNT-1); NULL otherwise. */
 const char *ilahrs_pahr_field_name(size_t index);
+#endif
 
 /** The range of sentence field `index` (scaled values); false if `index` is out of range. */
 bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max);
@@ -2632,10 +2663,12 @@ typedef struct ilahrs_step {
     ilahrs_answer_t send[ILAHRS_STEP_SEND_MAX]; /**< What the device sends. */
 } ilahrs_step_t;
 
+#if ILAHRS_NAMES
 /** The spec name of a state ("idle"); NULL for a value outside ilahrs_state_t. */
 const char *ilahrs_state_name(ilahrs_state_t state);
 /** Find a state by its spec name, `len` characters at `name`. */
 bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state);
+#endif
 /** The operating mode of a state; ILAHRS_MODE_COUNT for a value outside ilahrs_state_t. */
 ilahrs_mode_t ilahrs_state_mode(ilahrs_state_t state);
 /** The payload table of the parameter block a state waits for (E34), or ILAHRS_PAYLOAD_NONE. */
@@ -2646,6 +2679,7 @@ ilahrs_payload_t ilahrs_state_expects(ilahrs_state_t state);
  */
 bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event);
 
+#if ILAHRS_NAMES
 /** The name of an event: the ICD name of a command ("AHRScont1"), else the spec name ("unknown"); NULL if out of range. */
 const char *ilahrs_event_name(ilahrs_event_t event);
 /** Find an event by its name (a command's ICD name or an event's spec name). */
@@ -2653,6 +2687,7 @@ bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event);
 
 /** The spec name of an answer ("ack"); NULL for a value outside ilahrs_answer_t. */
 const char *ilahrs_answer_name(ilahrs_answer_t answer);
+#endif
 /** The payload table an answer sends, or ILAHRS_PAYLOAD_NONE (ack and the output answers). */
 ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer);
 /**

@@ -40,7 +40,7 @@ PAYLOAD = {
          "range": [-400, 850]},
         {"name": "flags", "icd_name": "F", "type": "u8", "default": 7},
         {"name": "gain", "icd_name": "G", "type": "f32", "range": [0.5, 2]},
-        {"name": "label", "icd_name": "L", "type": "char", "length": 4},
+        {"name": "label", "icd_name": "L", "type": "char", "length": 4, "default": "T1"},
     ],
 }
 

@@ -462,6 +462,15 @@ static void test_payloads(void)
         CHECK(ilahrs_payload_build(ILAHRS_PAYLOAD_NONE, NULL, NULL, 0, &err) == 0);
         CHECK(ilahrs_payload_name(ILAHRS_PAYLOAD_NONE) == NULL);
     }
+#ifdef ILAHRS_TEMPERATURE_BLOCK_SIZE
+    {
+        /* The extended spec (tests/c/extend_spec.py): a char field's text default and a number's. */
+        ilahrs_temperature_block_t t;
+        memset(&t, 0x55, sizeof t);
+        ilahrs_payload_defaults(ILAHRS_PAYLOAD_TEMPERATURE_BLOCK, &t);
+        CHECK(strcmp(t.label, "T1") == 0 && t.flags == 7 && t.temp_a == 0 && t.gain == 0.5f);
+    }
+#endif
 }
 
 /* ---- Named values ----------------------------------------------------------------------------- */

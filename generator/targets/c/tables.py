@@ -5,7 +5,9 @@ payload parser/builder walks a compact field table, one $PAHR codec walks a fiel
 names live in string pools. The names a firmware reports in errors (fields, frame parts, $PAHR
 fields, error kinds, the date) have a pool per kind, so that a firmware image links only the
 pools it uses; every other name (what the name accessors and by-name lookups return) shares one
-pool, `name`, whose offsets form one table of sections, one per kind. This module turns the
+pool, `name`, whose offsets form one table of sections, one per kind. Strings that are protocol
+data rather than names (the text defaults of char fields, the variants' part numbers) have pools
+of their own, which stay when the library is compiled without names. This module turns the
 model into those tables (deduplicated, in first-use order, so the output is stable); the
 templates only print them. Nothing here computes a wire
 offset: offsets come from `field.offset` (generator/layout.py).
@@ -121,7 +123,7 @@ class DefaultRow:
 
     field: int  # index into the flat field table
     number: float  # numeric default
-    text: int  # field-name pool offset of a char default, or -1
+    text: int  # text pool offset of a char default, or -1
 
 
 @dataclass(frozen=True)
@@ -193,7 +195,7 @@ def build_tables(spec: Spec) -> Tables:
 
 
 def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
-    kinds = ("error", "frame", "field", "sentence", "date", "name")
+    kinds = ("error", "frame", "field", "sentence", "date", "text", "part", "name")
     pools = {name: StringPool(name, None if known is None else known[name]) for name in kinds}
     for e in spec.errors:
         pools["error"].add(e.name)
@@ -208,6 +210,8 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
             pools["sentence"].add(nf.name)
     if spec.date is not None:
         pools["date"].add("date")
+    for v in spec.variants:
+        pools["part"].add(v.part_number)
     sections: list[NameSection] = []
 
     def section(kind: str, entries: list[str]) -> None:
@@ -223,7 +227,6 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     if m is not None:
         section("event", m.extra_events)
     section("variant", [v.name for v in spec.variants])
-    section("part_number", [v.part_number for v in spec.variants])
     section("mode", [mode.name for mode in spec.modes])
     section("payload", [p.name for p in spec.payloads])
     if spec.status_word is not None:
@@ -264,7 +267,7 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
                 s_index = scales.index(entry)
             number = builder_default(f) if f.is_numeric else None
             if isinstance(f.default, str) and f.default:
-                defaults.append(DefaultRow(len(rows), 0.0, names.add(f.default)))
+                defaults.append(DefaultRow(len(rows), 0.0, pools["text"].add(f.default)))
             elif number is not None:
                 defaults.append(DefaultRow(len(rows), number, -1))
             rows.append(

@@ -170,7 +170,7 @@ def scale_members(t: tables.Tables) -> list[tuple[str, str]]:
 
 
 def default_members(t: tables.Tables) -> list[tuple[str, str]]:
-    """ilahrs_defaults: the field's row, the field-name pool offset of a char default (0: none), the
+    """ilahrs_defaults: the field's row, the text pool offset of a char default (0 for a number), the
     bits of a numeric field's member."""
     return row_members({
         "field": [r.field for r in t.defaults],
