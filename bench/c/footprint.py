@@ -16,7 +16,9 @@ libgcc's soft-float helpers included, since a firmware image needs them too):
   build,
 - a firmware core: that plus frame, command and sentence decoding and sentence encoding,
 - the whole library without the host conveniences that take doubles (ilahrs_field_check,
-  ilahrs_pahr_from_array/from_values), and the whole library (every public function).
+  ilahrs_pahr_from_array/from_values), and the whole library (every public function),
+- the firmware closure and the whole library again with the library compiled with ILAHRS_NAMES=0
+  (no name strings, no name accessors or by-name lookups, errors without field names).
 
 Prints the flash size (text: code and const tables) of each next to the targets, split into the
 library's own code, its const tables and what newlib-nano/libgcc add, the decoder state size, and whether anything
@@ -45,7 +47,8 @@ DOUBLE_HELPERS = {"ilahrs_field_check", "ilahrs_pahr_from_array", "ilahrs_pahr_f
 TARGETS = {"stream decoder": 512, "stream decoder, frames only": 512, "sentence parser": None,
            "frame and command builders": None, "payload builder": None, "state machine": None, "firmware": None,
            "firmware core": None,
-           "whole library without the double helpers": 8 * 1024, "whole library": 8 * 1024}
+           "whole library without the double helpers": 8 * 1024, "whole library": 8 * 1024,
+           "firmware, names off": None, "whole library, names off": 8 * 1024}
 STATE_TARGET = 128
 HEAP_SYMBOLS = {"malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r", "_free_r"}
 
@@ -99,15 +102,20 @@ def main() -> int:
     out.mkdir(parents=True, exist_ok=True)
     obj = out / "ilahrs.o"
     run([args.cc, *flags, f"-I{args.include}", "-c", str(args.source), "-o", str(obj)])
-    frames_obj = out / "ilahrs_frames_only.o"
-    run([args.cc, *flags, "-DILAHRS_STREAM_SENTENCES=0", f"-I{args.include}", "-c", str(args.source), "-o",
-         str(frames_obj)])
+    variants = {"": obj, "frames only": out / "ilahrs_frames_only.o", "names off": out / "ilahrs_names_off.o"}
+    for variant, define in (("frames only", "-DILAHRS_STREAM_SENTENCES=0"), ("names off", "-DILAHRS_NAMES=0")):
+        run([args.cc, *flags, define, f"-I{args.include}", "-c", str(args.source), "-o", str(variants[variant])])
 
-    # Static RAM and heap use of the library itself.
-    obj_text, obj_data, obj_bss = size_of(args.cc, obj)
-    undefined = set(run([tool(args.cc, "nm"), "-u", str(obj)]).split()) - {"U"}
-    defined = run([tool(args.cc, "nm"), "-g", "--defined-only", str(obj)]).splitlines()
-    public = sorted(parts[2] for parts in (line.split() for line in defined) if len(parts) == 3 and parts[1] == "T")
+    # Static RAM and heap use of the library itself, in every variant.
+    obj_text, _, _ = size_of(args.cc, obj)
+    static_ram = max(sum(size_of(args.cc, o)[1:]) for o in variants.values())
+    undefined = set().union(*(set(run([tool(args.cc, "nm"), "-u", str(o)]).split()) for o in variants.values())) - {"U"}
+
+    def public_of(o: Path) -> list[str]:
+        defined = run([tool(args.cc, "nm"), "-g", "--defined-only", str(o)]).splitlines()
+        return sorted(parts[2] for parts in (line.split() for line in defined) if len(parts) == 3 and parts[1] == "T")
+
+    public = public_of(obj)
 
     # Decoder state and message sizes, from the compiler.
     probe = out / "sizes.c"
@@ -127,18 +135,21 @@ def main() -> int:
 
     print(f"compiler: {run([args.cc, '--version']).splitlines()[0]}")
     print(f"flags: {args.flags}")
-    print(f"library object: text {obj_text} (code and const tables), data {obj_data}, bss {obj_bss}")
+    print(f"library object: text {obj_text} (code and const tables)")
     linked: dict[str, set[tuple[str, int]]] = {}
-    own = {line.split()[-1] for line in run([tool(args.cc, "nm"), "--defined-only", str(obj)]).splitlines()}
+    own = {line.split()[-1] for o in variants.values()
+           for line in run([tool(args.cc, "nm"), "--defined-only", str(o)]).splitlines()}
     groups = {"stream decoder": STREAM, "stream decoder, frames only": STREAM,
               "sentence parser": ["ilahrs_pahr_parse"],
               "frame and command builders": BUILDERS, "payload builder": BLOCKS, "state machine": MACHINE,
               "firmware": FIRMWARE, "firmware core": CORE,
               "whole library without the double helpers": [p for p in public if p not in DOUBLE_HELPERS],
-              "whole library": public}
+              "whole library": public,
+              "firmware, names off": FIRMWARE, "whole library, names off": public_of(variants["names off"])}
     for name, entries in groups.items():
         elf = out / (name.replace(",", "").replace(" ", "_") + ".elf")
-        link(args.cc, flags, frames_obj if name.endswith("frames only") else obj, entries, elf)
+        variant = name.split(", ")[-1] if ", " in name else ""
+        link(args.cc, flags, variants[variant], entries, elf)
         text, _data, _bss = size_of(args.cc, elf)
         rows = symbols(args.cc, elf)
         code = sum(size for _, size, sym, is_code in rows if sym in own and is_code)
@@ -158,7 +169,7 @@ def main() -> int:
     print(f"message (ilahrs_message_t, on the caller's stack): {sizes['ilahrs_sizeof_message']} bytes")
     heap = sorted(undefined & HEAP_SYMBOLS)
     print(f"heap: {'none' if not heap else 'uses ' + ', '.join(heap)} (target: none)")
-    print(f"static RAM (data + bss of the library): {obj_data + obj_bss} bytes (target: 0)")
+    print(f"static RAM (data + bss of the library, any variant): {static_ram} bytes (target: 0)")
     print(f"library calls: {', '.join(sorted(undefined)) or 'none'}")
     return 0
 
