@@ -129,6 +129,22 @@ $(C_OUT)/san/ilahrs_conformance_frames_small: tests/c/conformance_runner.c $(C_L
 	@mkdir -p $(@D)
 	gcc $(C_STD) $(C_SAN) $(C_SMALL) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
+# The library without name strings (ILAHRS_NAMES=0, header and ilahrs.c): tests/c/names_off.py checks
+# that the names_off driver prints the same as in the default build, in pairs that differ in
+# ILAHRS_NAMES only: gcc, and clang on the size-optimized variant.
+C_NAMES_OFF := $(C_OUT)/san/names_off $(C_OUT)/san/names_off_0 \
+               $(C_OUT)/san/names_off_small $(C_OUT)/san/names_off_0_small
+
+$(C_OUT)/san/names_off $(C_OUT)/san/names_off_0: tests/c/names_off.c $(C_LIB)
+	@mkdir -p $(@D)
+	gcc $(C_STD) $(C_SAN) $(if $(findstring names_off_0,$@),-DILAHRS_NAMES=0) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_OUT)/san/names_off_small $(C_OUT)/san/names_off_0_small: tests/c/names_off.c $(C_LIB)
+	@mkdir -p $(@D)
+	$(CLANG) $(C_STD) $(C_SAN) $(C_SMALL) $(if $(findstring names_off_0,$@),-DILAHRS_NAMES=0) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
+
+test-c: $(C_NAMES_OFF)
+
 # The integer helpers that take doubles against the double code they replace (test_values.c
 # includes ilahrs.c): gcc, and clang on the size-optimized variant.
 $(C_OUT)/san/test_values $(C_OUT)/san/test_values_small: tests/c/test_values.c $(C_LIB)
@@ -193,6 +209,7 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	$(PY) tests/c/differential.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance 16
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance_frames
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(C_OUT)/san/ilahrs_conformance_frames_small --bytewise"
+	$(PY) tests/c/names_off.py $(C_OUT)/capture $(C_NAMES_OFF)
 	@for f in $(C_FUZZERS); do \
 		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
 		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \
