@@ -7,12 +7,13 @@
 #                      (chunked and byte at a time, and the frames-only decoder against the full one),
 #                      brief libFuzzer runs, CMake build, the example
 #   make test-c-be     the same tests on a big-endian host (s390x under qemu-user)
+#   make test-c-m4     the size build's tests on an emulated Cortex-M4 (qemu-system-arm, MPS2 AN386)
 #   make bench-c       stream decoder throughput next to a byte-summing loop; writes build/bench/capture.bin
 #   make footprint-c   Cortex-M4 code and RAM sizes (arm-none-eabi-gcc)
 #   make fuzz-c        longer libFuzzer runs (FUZZ_SECONDS per target, default 60)
 #
 # Tools missing on a fresh machine (clang, its libFuzzer runtime, cmake, arm-none-eabi-gcc, the
-# s390x cross compiler and qemu-user) are installed with apt when needed.
+# s390x cross compiler, qemu-user and qemu-system-arm) are installed with apt when needed.
 
 C_DIR := generated/c
 C_OUT := $(BUILD)/c
@@ -31,12 +32,12 @@ ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sec
 SETUP_TARGETS += setup-c
 BUILD_TARGETS += build-c
 LINT_TARGETS += lint-c
-TEST_TARGETS += test-c test-c-be
+TEST_TARGETS += test-c test-c-be test-c-m4
 BENCH_TARGETS += bench-c
 FOOTPRINT_TARGETS += footprint-c
 FUZZ_TARGETS += fuzz-c
 
-.PHONY: setup-c build-c lint-c test-c test-c-be bench-c footprint-c fuzz-c setup-c-arm setup-c-be
+.PHONY: setup-c build-c lint-c test-c test-c-be test-c-m4 bench-c footprint-c fuzz-c setup-c-arm setup-c-be setup-c-m4
 
 APT_INSTALL = (apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(1) >/dev/null)
 
@@ -266,6 +267,46 @@ test-c-be: setup-c-be $(C_BE)/test_ilahrs $(C_BE)/test_ilahrs_small $(C_BE)/test
 	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance" --name c-s390x
 	$(PY) conformance/harness.py --command "$(BE_RUN) $(C_BE)/ilahrs_conformance_small --bytewise" --name c-s390x-size-bytewise
 	$(PY) tests/c/differential.py $(C_OUT)/capture "$(BE_RUN) $(C_BE)/ilahrs_conformance" 4
+
+# --- Cortex-M4: the size build on an emulated microcontroller ---------------------------------
+# The build `make footprint-c` measures (arm-none-eabi-gcc, $(ARM_FLAGS)), linked with newlib's
+# semihosting runtime and run on qemu-system-arm's MPS2 AN386 board (a Cortex-M4, which faults on
+# the unaligned multi-word accesses a desktop forgives): the unit tests, test_values, the date
+# sample and the conformance runner (default and frames-only decoders, chunked and byte at a time).
+
+M4_FLAGS := $(C_STD) $(ARM_FLAGS) --specs=rdimon.specs -T tests/c/m4/mps2-an386.ld -Wl,--gc-sections
+M4_RUN := timeout 900 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+          -semihosting-config enable=on,target=native
+C_M4 := $(C_OUT)/m4
+M4_DEPS := tests/c/m4/startup.c tests/c/m4/mps2-an386.ld $(C_LIB)
+
+setup-c-m4: setup-c-arm
+	@command -v qemu-system-arm >/dev/null || $(call APT_INSTALL,qemu-system-arm)
+
+$(C_M4)/test_ilahrs.elf: tests/c/test_ilahrs.c $(M4_DEPS) | setup-c-m4
+	@mkdir -p $(@D)
+	$(ARM_CC) $(M4_FLAGS) -I$(C_DIR) tests/c/m4/startup.c $< $(C_DIR)/ilahrs.c -lm -o $@
+
+$(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf: tests/c/conformance_runner.c $(M4_DEPS) | setup-c-m4
+	@mkdir -p $(@D)
+	$(ARM_CC) $(M4_FLAGS) $(if $(findstring _frames,$@),$(C_FRAMES)) -I$(C_DIR) tests/c/m4/startup.c $< \
+		$(C_DIR)/ilahrs.c -lm -o $@
+
+# test_values.c and test_date.c include ilahrs.c.
+$(C_M4)/test_values.elf $(C_M4)/test_date.elf: $(C_M4)/%.elf: tests/c/%.c $(M4_DEPS) | setup-c-m4
+	@mkdir -p $(@D)
+	$(ARM_CC) $(M4_FLAGS) -I$(C_DIR) tests/c/m4/startup.c $< -lm -o $@
+
+test-c-m4: setup-c-m4 $(C_M4)/test_ilahrs.elf $(C_M4)/test_values.elf $(C_M4)/test_date.elf \
+           $(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf $(C_OUT)/capture
+	$(M4_RUN),arg=test_ilahrs,arg=0xC0DE -kernel $(C_M4)/test_ilahrs.elf
+	$(M4_RUN),arg=test_values,arg=0xC0DE -kernel $(C_M4)/test_values.elf
+	$(M4_RUN),arg=test_date,arg=--sample,arg=0xC0DE -kernel $(C_M4)/test_date.elf
+	$(PY) conformance/harness.py --command "$(M4_RUN) -kernel $(C_M4)/ilahrs_conformance.elf" --name c-cortex-m4
+	$(PY) conformance/harness.py --command "$(M4_RUN),arg=runner,arg=--bytewise -kernel $(C_M4)/ilahrs_conformance.elf" \
+		--name c-cortex-m4-bytewise
+	$(PY) tests/c/differential.py $(C_OUT)/capture "$(M4_RUN) -kernel $(C_M4)/ilahrs_conformance.elf" 4
+	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(M4_RUN),arg=runner,arg=--bytewise -kernel $(C_M4)/ilahrs_conformance_frames.elf" 2
 
 # --- bench, footprint, fuzz ----------------------------------------------------------------
 
