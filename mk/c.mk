@@ -210,7 +210,7 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	$(PY) tests/c/differential.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance 16
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance_frames
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(C_OUT)/san/ilahrs_conformance_frames_small --bytewise"
-	$(PY) tests/c/names_off.py $(C_OUT)/capture $(C_NAMES_OFF)
+	C_STD="$(C_STD)" $(PY) tests/c/names_off.py $(C_OUT)/capture $(C_NAMES_OFF)
 	@for f in $(C_FUZZERS); do \
 		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
 		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \
