@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 
 from . import DEFAULT_SPEC, ROOT, build_spec
+from .formatting import FormatterError
 from .load import SpecError
 from .render import derived_files, render, target_names
 
@@ -61,7 +62,11 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{spec.file}: valid (spec hash {spec.sha256})")
         return 0
     targets = args.target or target_names()
-    files = render(spec, targets)
+    try:
+        files = render(spec, targets)
+    except FormatterError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     # A target's outputs live under generated/<target-folder>/; a target may write more than one folder.
     folders = sorted({path.split("/", 1)[0] for path in files})
     existing = _on_disk(args.out, folders)

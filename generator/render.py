@@ -1,9 +1,10 @@
 """Step 5 of the pipeline: turn the laid-out model into files, one target at a time.
 
-A target is a folder under generator/targets/ with a `target.py` that lists its outputs
-(path, template, extra context) and may define FILTERS, and a `templates/` folder.
-Targets are discovered, so adding one touches no shared file. Templates run under
-StrictUndefined; the model they read is immutable.
+A target is a folder under generator/targets/ with a `target.py` that lists its outputs and may
+define FILTERS, GLOBALS and a `format(files)` hook, a `templates/` folder for what the spec decides
+(tables, typed API, constants) and a `runtime/` folder of hand-written source files that are copied
+into generated/ as they are, behind the notice line. Targets are discovered, so adding one touches
+no shared file. Templates run under StrictUndefined; the model they read is immutable.
 """
 
 from __future__ import annotations
@@ -32,8 +33,23 @@ class Output:
     context: dict[str, Any] = field(default_factory=dict)
 
 
+@dataclass(frozen=True)
+class Runtime:
+    """One hand-written file: `source` relative to the target's runtime/ folder, copied to `path`.
+
+    The copy starts with the notice lines in the file's comment syntax and is otherwise unchanged.
+    """
+
+    path: str
+    source: str
+
+
+# Line comment syntax per suffix, for the notice put in front of a copied runtime file.
+COMMENT = {".py": "# ", ".rs": "// ", ".c": "// ", ".h": "// ", ".lua": "-- ", ".toml": "# ", ".cmake": "# "}
+
+
 class TargetModule(Protocol):
-    def outputs(self, spec: Spec) -> list[Output]: ...
+    def outputs(self, spec: Spec) -> list[Output | Runtime]: ...
 
 
 def target_names() -> list[str]:
@@ -82,6 +98,31 @@ def _environment(target: str, module: Any) -> jinja2.Environment:
     return env
 
 
+def runtime_text(target: str, source: str) -> str:
+    """The text of a hand-written runtime file of `target`."""
+    return (TARGETS_DIR / target / "runtime" / source).read_text(encoding="utf-8")
+
+
+def runtime_notice(spec: Spec, target: str, source: str) -> list[str]:
+    """The notice lines of a copied runtime file."""
+    return [
+        f"Copied from generator/targets/{target}/runtime/{source}; spec {spec.file}, hash {spec.sha256}.",
+        "Do not edit: change the runtime source and run `make generate`.",
+    ]
+
+
+def _copy_runtime(spec: Spec, target: str, out: Runtime) -> str:
+    suffix = Path(out.path).suffix
+    if suffix not in COMMENT:
+        raise ValueError(f"no comment syntax for runtime file {out.path}")
+    text = runtime_text(target, out.source)
+    lines = [f"{COMMENT[suffix]}{line}" for line in runtime_notice(spec, target, out.source)]
+    if text.startswith("#!"):
+        first, _, rest = text.partition("\n")
+        return "\n".join([first, *lines, rest])
+    return "\n".join([*lines, text])
+
+
 def _tidy(text: str) -> str:
     """Strip trailing white space on each line and end with exactly one newline."""
     lines = [line.rstrip() for line in text.splitlines()]
@@ -96,10 +137,18 @@ def render(spec: Spec, targets: list[str] | None = None) -> dict[str, str]:
     for target in targets if targets is not None else target_names():
         module = importlib.import_module(f"generator.targets.{target}.target")
         env = _environment(target, module)
+        env.globals["runtime_text"] = lambda source, _target=target: runtime_text(_target, source)
+        mine: dict[str, str] = {}
         for out in module.outputs(spec):
-            template = env.get_template(out.template)
-            text = template.render(spec=spec, notice=notice(spec), **out.context)
-            if out.path in files:
+            if isinstance(out, Runtime):
+                text = _copy_runtime(spec, target, out)
+            else:
+                text = env.get_template(out.template).render(spec=spec, notice=notice(spec), **out.context)
+            if out.path in files or out.path in mine:
                 raise ValueError(f"two outputs write {out.path}")
-            files[out.path] = _tidy(text) if not out.path.endswith((".svg", ".png")) else text
+            mine[out.path] = _tidy(text) if not out.path.endswith((".svg", ".png")) else text
+        hook = getattr(module, "format", None)
+        if hook is not None:
+            mine = hook(mine)
+        files.update(mine)
     return files
