@@ -459,6 +459,39 @@ class SmTimer:
 
 TIMER_EVENTS = {"alignment": "alignment_done", "accumulation": "accumulation_done", "output": "output_due"}
 
+# The words a transition's `send` list is made of (spec/README.md): the acknowledgement, one block of
+# the current output format, one output block whose USW reports a given mode (OUTPUT_MODE_PREFIX +
+# the mode's name), or a payload table's name. Every target reads them from here.
+ANSWER_ACK = "ack"
+ANSWER_OUTPUT = "output"
+OUTPUT_MODE_PREFIX = "output_"
+
+
+@dataclass(frozen=True)
+class Answer:
+    """One kind of answer the state machine sends: `kind` is "ack", "output", "output_mode" (`mode`
+    set) or "payload" (`payload` set)."""
+
+    name: str
+    kind: str
+    doc: str
+    payload: str | None = None
+    mode: str | None = None
+
+
+def answer_kind(name: str, payloads: set[str], usw_modes: set[str]) -> Answer | None:
+    """What a `send` word means, or None if it is none of the words above."""
+    if name in payloads:
+        return Answer(name, "payload", f"One {name} data block.", payload=name)
+    if name == ANSWER_ACK:
+        return Answer(name, "ack", "The acknowledgement of the message just received.")
+    if name == ANSWER_OUTPUT:
+        return Answer(name, "output", "One block of the output format chosen by the start command.")
+    mode = name.removeprefix(OUTPUT_MODE_PREFIX)
+    if name.startswith(OUTPUT_MODE_PREFIX) and mode in usw_modes:
+        return Answer(name, "output_mode", f"One output block whose USW reports mode {mode} (E35).", mode=mode)
+    return None
+
 
 @dataclass(frozen=True)
 class StateMachine:
@@ -473,6 +506,7 @@ class StateMachine:
     result_delay_s: float
     timers: tuple[SmTimer, ...] = ()
     min_successful_runs: int | None = None
+    answers: tuple[Answer, ...] = ()  # every answer the table sends, in first-use order (`sends`)
 
     def timer(self, name: str) -> SmTimer:
         for t in self.timers:
@@ -880,7 +914,12 @@ def build(loaded: LoadedSpec) -> Spec:
             Erratum(e["id"], _doc(e["where"]), _doc(e["says"]), _doc(e["chosen"]), _doc(e["why"]))
             for e in d.get("errata", [])
         ),
-        state_machine=_state_machine(d["state_machine"], [c["name"] for c in d["commands"]])
+        state_machine=_state_machine(
+            d["state_machine"],
+            [c["name"] for c in d["commands"]],
+            {p["name"] for p in d["payloads"]},
+            {m.name for m in status_word.modes} if status_word is not None else set(),
+        )
         if "state_machine" in d
         else None,
         serial_line=SerialLine(
@@ -894,7 +933,21 @@ def build(loaded: LoadedSpec) -> Spec:
     )
 
 
-def _state_machine(raw: dict[str, Any], commands: list[str]) -> StateMachine:
+def _answers(transitions: list[Transition], payloads: set[str], usw_modes: set[str]) -> tuple[Answer, ...]:
+    """Every answer the transitions send, in first-use order (validate has checked each word)."""
+    seen: dict[str, Answer] = {}
+    for t in transitions:
+        for item in t.send:
+            answer = answer_kind(item, payloads, usw_modes)
+            if answer is None:
+                raise ValueError(f"the state machine sends {item!r}: neither ack, output, output_MODE nor a payload")
+            seen.setdefault(item, answer)
+    return tuple(seen.values())
+
+
+def _state_machine(
+    raw: dict[str, Any], commands: list[str], payloads: set[str], usw_modes: set[str]
+) -> StateMachine:
     """Expand the rows of the spec into one transition per (state, event)."""
     explicit: list[Transition] = []
     wildcards: list[tuple[str, dict[str, Any]]] = []
@@ -954,4 +1007,5 @@ def _state_machine(raw: dict[str, Any], commands: list[str]) -> StateMachine:
         result_delay_s=float(timing["result_delay_s"]),
         timers=tuple(SmTimer(t["name"], t["payload"], t["field"]) for t in raw.get("timers", ())),
         min_successful_runs=raw["calibration"]["min_successful_runs"] if "calibration" in raw else None,
+        answers=_answers(expanded, payloads, usw_modes),
     )

@@ -17,7 +17,7 @@ from typing import Any
 import jsonschema
 
 from .load import LoadedSpec, PathKey
-from .model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS
+from .model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
 
 SCHEMA_PATH = Path(__file__).resolve().parent.parent / "spec" / "schema.json"
 
@@ -387,7 +387,7 @@ def _check_state_machine(
             raise spec.error((*path, "mode"), f"unknown mode {st['mode']!r}")
         if "expects" in st and st["expects"] not in payload_names:
             raise spec.error((*path, "expects"), f"unknown payload {st['expects']!r}")
-    answers = {"ack", "output", "output_sleep", *payload_names}
+    usw_modes = {m["name"] for m in d["status_word"]["mode"]["values"]} if d.get("status_word") else set()
     explicit: dict[tuple[str, str, str | None], PathKey] = {}
     for i, row in enumerate(sm["transitions"]):
         path = (*base, "transitions", i)
@@ -397,9 +397,9 @@ def _check_state_machine(
         if row["to"] != "same" and row["to"] not in states:
             raise spec.error((*path, "to"), f"unknown state {row['to']!r}")
         for j, item in enumerate(row["send"]):
-            if item not in answers:
+            if answer_kind(item, set(payload_names), usw_modes) is None:
                 raise spec.error(
-                    (*path, "send", j), f"unknown answer {item!r} (ack, output, output_sleep or a payload)"
+                    (*path, "send", j), f"unknown answer {item!r} (ack, output, output_ + a USW mode, or a payload)"
                 )
         for j, event in enumerate(row["when"]):
             if event != "*" and event not in commands and event not in events:

@@ -451,7 +451,7 @@ pub enum Answer {
     InitialAlignment,
     /// `output`: One block of the output format chosen by the start command.
     Output,
-    /// `output_sleep`: One block of the output format with the USW mode bits of `sleep`.
+    /// `output_sleep`: One output block whose USW reports mode sleep (E35).
     OutputSleep,
     /// `calibration_result`: One calibration_result block (Table 6.14, Calibration result).
     CalibrationResult,

@@ -20,10 +20,7 @@ from generator.model import TIMER_EVENTS, Spec
 IGNORED = 0
 """Cell value of a (state, event) pair without a transition (E33)."""
 
-# Answers that are not payload tables (generator/validate.py names the same three).
-ACK = "ack"
-OUTPUT = "output"
-OUTPUT_PREFIX = "output_"
+# The C documentation of the answers that are not payload tables (the model defines the words).
 ACK_DOC = "The acknowledgement of the message just received (ilahrs_ack_build(), E12)."
 OUTPUT_DOC = "One block of the output format the start command chose (a frame, or a $PAHR sentence)."
 
@@ -128,22 +125,14 @@ def build_machine(spec: Spec) -> Machine | None:
         states.insert(0, sm.initial)
     extra = [e.name for e in sm.events]
     events = [c.name for c in spec.commands] + extra
-    payload_names = {p.name for p in spec.payloads}
-    usw_modes = {m.name for m in spec.status_word.modes} if spec.status_word is not None else set()
     answers: list[Answer] = []
-    for name in sm.sends:
-        if name in payload_names:
-            p = spec.payload(name)
-            answers.append(Answer(name, name, None, f"One {p.name} data block ({p.title}, {p.icd})."))
-        elif name == ACK:
-            answers.append(Answer(name, None, None, ACK_DOC))
-        elif name == OUTPUT:
-            answers.append(Answer(name, None, None, OUTPUT_DOC))
-        elif name.startswith(OUTPUT_PREFIX) and name[len(OUTPUT_PREFIX):] in usw_modes:
-            mode = name[len(OUTPUT_PREFIX):]
-            answers.append(Answer(name, None, mode, f"One output block whose USW reports mode {mode} (E35)."))
+    for a in sm.answers:
+        if a.payload is not None:
+            p = spec.payload(a.payload)
+            answers.append(Answer(a.name, a.payload, None, f"One {p.name} data block ({p.title}, {p.icd})."))
         else:
-            raise ValueError(f"state machine answer {name!r} has no C meaning")
+            doc = {"ack": ACK_DOC, "output": OUTPUT_DOC}.get(a.kind, a.doc)
+            answers.append(Answer(a.name, None, a.mode, doc))
     answer_index = {a.name: k for k, a in enumerate(answers)}
     sequences: list[tuple[int, ...]] = []
     outcomes: list[Outcome] = []

@@ -373,10 +373,8 @@ def format_pair(name: str) -> str:
 
 
 # The device state machine. Events are the commands (by their `id`) and the spec's other events;
-# answers are `ack`, `output`, `output_` + a USW mode name, or a payload table (spec/README.md).
-ACK_ANSWER = "ack"
+# answers come from the model (`spec.state_machine.answers`).
 UNKNOWN_EVENT = "unknown"
-OUTPUT_ANSWER = "output"
 
 
 def _machine(spec: Spec) -> StateMachine:
@@ -427,30 +425,11 @@ def sm_timer_event(spec: Spec, timer: str) -> str:
 def sm_answers(spec: Spec) -> list[dict[str, Any]]:
     """Every answer the table sends, in first-use order: the Rust variant, the spec name, the payload
     table (or None), the USW mode (or None) and a doc line."""
-    modes = {m.name for m in spec.status_word.modes} if spec.status_word else set()
     answers: list[dict[str, Any]] = []
-    for name in _machine(spec).sends:
-        payload = next((p for p in spec.payloads if p.name == name), None)
-        mode = name.removeprefix(OUTPUT_ANSWER + "_")
-        if payload is not None:
-            doc = f"One {payload.name} block ({payload.icd}, {payload.title})."
-        elif name == ACK_ANSWER:
-            doc = "The acknowledgement of the message just received."
-        elif name == OUTPUT_ANSWER:
-            doc = "One block of the output format chosen by the start command."
-        elif name.startswith(OUTPUT_ANSWER + "_") and mode in modes:
-            doc = f"One block of the output format with the USW mode bits of `{mode}`."
-        else:
-            raise ValueError(f"the state machine sends {name!r}: neither ack, output, output_MODE nor a payload")
-        answers.append(
-            {
-                "variant": type_name(name),
-                "name": name,
-                "payload": payload,
-                "mode": None if payload is not None or name in (ACK_ANSWER, OUTPUT_ANSWER) else mode,
-                "doc": doc,
-            }
-        )
+    for a in _machine(spec).answers:
+        payload = next((p for p in spec.payloads if p.name == a.payload), None)
+        doc = f"One {payload.name} block ({payload.icd}, {payload.title})." if payload is not None else a.doc
+        answers.append({"variant": type_name(a.name), "name": a.name, "payload": payload, "mode": a.mode, "doc": doc})
     _unique([a["variant"] for a in answers], "answer")
     return answers
 
