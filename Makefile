@@ -1,7 +1,9 @@
 # ilahrs: the one entry point.
 #
 #   make              set up, regenerate, build every binding, run the conformance suite
-#   make test         every test (on a fresh clone: sets up and builds first)
+#   make test         every test (on a fresh clone: sets up and builds first); one line per stage with
+#                     its duration, each stage's output in build/logs/STAGE.log (shown on failure);
+#                     VERBOSE=1 prints everything as it runs
 #   make generate     regenerate generated/ from spec/ilahrs.yaml
 #   make check        fail if generated/ differs from what the spec produces, or lint fails
 #   make conformance  run every binding against conformance/vectors (VECTORS=dir BINDINGS=a,b)
@@ -62,7 +64,19 @@ check: setup
 	$(PY) -m generator --check
 	$(MAKE) --no-print-directory lint $(CHECK_TARGETS)
 
+STAGE := tools/stage
+VERBOSE ?= 0
+
+ifeq ($(VERBOSE),1)
 test: setup build check conformance $(TEST_TARGETS) $(FINAL_TEST_TARGETS)
+else
+test:
+	@echo "make test: one line per stage, its output in $(BUILD)/logs/ (VERBOSE=1 prints all of it)"
+	@for t in setup build check; do $(STAGE) $$t $(MAKE) --no-print-directory $$t || exit 1; done; \
+	$(STAGE) conformance --show 4 $(MAKE) --no-print-directory conformance || exit 1; \
+	for t in $(TEST_TARGETS); do $(STAGE) $$t $(MAKE) --no-print-directory $$t || exit 1; done; \
+	for t in $(FINAL_TEST_TARGETS); do $(STAGE) $$t --show 1 $(MAKE) --no-print-directory $$t || exit 1; done
+endif
 
 bench: setup build $(BENCH_TARGETS)
 
