@@ -4,7 +4,8 @@ against it.
 
 cases/streams.json: "messages" names frames and sentences (suites/messages.py); a sweep feeds one
 input in every chunk size; a case gives its chunks, the events it means to produce and the number
-of bytes discarded; a soak is a seeded random mix of thousands of messages.
+of bytes discarded; a soak is a seeded random mix of thousands of messages. Every note ends with
+the rule ("phrases").
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ Event = tuple[str, bytes]
 def _stream_vec(
     id_: str, chunks: list[bytes], note: str, intended: list[Event], discarded: int, *, compact: bool = False
 ) -> Vector:
+    """A stream vector: the oracle's scan of the whole input must give the intended events and count."""
     events, scanned = o.scan(b"".join(chunks))
     assert events == intended, (id_, events, intended)  # the intended answer, cross-checked against the oracle
     assert scanned == discarded, (id_, scanned, discarded)
@@ -48,7 +50,7 @@ def _sweeps(data: dict[str, Any], messages: Messages, names: dict[str, str]) -> 
         whole = messages.build(sweep["input"])
         events = _events(messages, sweep["events"])
         for size in range(1, len(whole) + 1):
-            text = expand(sweep["note"], {**names, "size": size})
+            text = f"{expand(sweep['note'], {**names, 'size': size})}; {names['rule']}"
             out.append(_stream_vec(f"stream/{sweep['name']}-{size}", _split(whole, size), text, events, 0))
     return out
 
