@@ -4,6 +4,7 @@
 #   make conformance VECTORS=dir             any directory of suites in the same format
 #   make conformance BINDINGS=python,c       some bindings
 #   make vectors                             rewrite conformance/vectors from conformance/tools/make_vectors.py
+#                                            (conformance/tools/suites/: a module and a case file per suite)
 #
 # The harness is stdlib-only Python; it starts each runner once and prints a binding x suite table.
 # tests/test_conformance*.py run under the root pytest run (test-python).

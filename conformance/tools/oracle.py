@@ -267,6 +267,8 @@ def _matrices() -> list[Field]:
     return [*soft, *_xyz("hm_0_", "f32", 40, 4)]  # E1, E2: bytes 40-51
 
 
+# Laid out as the ICD prints the tables, fields in byte order (kept out of the formatter).
+# fmt: off
 TABLES: dict[str, tuple[str, int, list[Field]]] = {
     "full_output": ("Table 6.4", 34, [
         *_angles(0),
@@ -341,6 +343,7 @@ TABLES: dict[str, tuple[str, int, list[Field]]] = {
     ]),
     "acknowledgement": ("6.3.1 (Table 6.2, one-word payload)", 2, [Field("checksum", "u16", 0)]),
 }
+# fmt: on
 
 
 def _check_tables() -> None:
@@ -354,6 +357,7 @@ def _check_tables() -> None:
 
 _check_tables()
 
+
 def decode_payload(table: str, data: bytes) -> dict[str, Raw]:
     _, size, fields = TABLES[table]
     if len(data) < size:
@@ -363,7 +367,7 @@ def decode_payload(table: str, data: bytes) -> dict[str, Raw]:
     out: dict[str, Raw] = {}
     offset = 0
     for f in fields:
-        chunk = data[offset:offset + f.size]
+        chunk = data[offset : offset + f.size]
         if f.type == "f32":
             out[f.name] = struct.unpack("<f", chunk)[0]
         elif f.type == "char":
@@ -480,7 +484,7 @@ def format_field(f: NmeaField, value: int) -> str:
     if f.decimals == 0:
         return f"{value:04X}"
     sign = "-" if value < 0 else ""
-    whole, frac = divmod(abs(value), 10 ** f.decimals)
+    whole, frac = divmod(abs(value), 10**f.decimals)
     return f"{sign}{str(whole).zfill(f.width - len(sign))}.{str(frac).zfill(f.decimals)}"
 
 
@@ -507,6 +511,21 @@ _HEXDIGITS = b"0123456789ABCDEFabcdef"
 
 def decode_sentence(data: bytes) -> dict[str, int]:
     """The checks of spec/README.md ($PAHR sentences), in order; returns the scaled integers."""
+    star = _sentence_frame(data)
+    parts = data[6:star].split(b",")
+    if len(parts) != len(NMEA_FIELDS):
+        raise OracleError("malformed")
+    out: dict[str, int] = {}
+    for f, text in zip(NMEA_FIELDS, parts, strict=True):
+        value = _sentence_field(f, text)
+        if not f.lo <= value <= f.hi:
+            raise OracleError("out_of_range", None, f.name)
+        out[f.name] = value
+    return out
+
+
+def _sentence_frame(data: bytes) -> int:
+    """Header, end, length and checksum of a sentence, in that order; returns the index of the *."""
     if data[:1] != b"$":
         raise OracleError("bad_header", 0)
     if data[1:6] != b"PAHR,":
@@ -522,36 +541,30 @@ def decode_sentence(data: bytes) -> dict[str, int]:
     if end < len(data):
         raise OracleError("trailing_data", end)
     star = crlf - 3
-    if star < 6 or data[star] != ord("*") or any(b not in _HEXDIGITS for b in data[star + 1:crlf]):
+    if star < 6 or data[star] != ord("*") or any(b not in _HEXDIGITS for b in data[star + 1 : crlf]):
         raise OracleError("malformed")
-    if nmea_xor(data[1:star]) != int(data[star + 1:crlf], 16):
+    if nmea_xor(data[1:star]) != int(data[star + 1 : crlf], 16):
         raise OracleError("bad_checksum", star + 1)
-    parts = data[6:star].split(b",")
-    if len(parts) != len(NMEA_FIELDS):
-        raise OracleError("malformed")
-    out: dict[str, int] = {}
-    for f, text in zip(NMEA_FIELDS, parts, strict=True):
-        if f.decimals == 0:
-            if not _HEX.fullmatch(text):
-                raise OracleError("malformed", None, f.name)
-            value = int(text, 16)
-        else:
-            m = _DECIMAL[f.decimals].fullmatch(text)
-            if m is None:
-                raise OracleError("malformed", None, f.name)
-            frac = (m.group(3) or b"").ljust(f.decimals, b"0")
-            value = int(m.group(2)) * 10 ** f.decimals + int(frac)
-            if m.group(1):
-                value = -value
-        if not f.lo <= value <= f.hi:
-            raise OracleError("out_of_range", None, f.name)
-        out[f.name] = value
-    return out
+    return star
+
+
+def _sentence_field(f: NmeaField, text: bytes) -> int:
+    """One field's text as its scaled integer, by the E16 grammar (the range is checked by the caller)."""
+    if f.decimals == 0:
+        if not _HEX.fullmatch(text):
+            raise OracleError("malformed", None, f.name)
+        return int(text, 16)
+    m = _DECIMAL[f.decimals].fullmatch(text)
+    if m is None:
+        raise OracleError("malformed", None, f.name)
+    frac = (m.group(3) or b"").ljust(f.decimals, b"0")
+    value: int = int(m.group(2)) * 10**f.decimals + int(frac)
+    return -value if m.group(1) else value
 
 
 def sentence_values(raw: dict[str, int]) -> dict[str, float | int]:
     """Engineering values of a decoded sentence (degrees, degrees Celsius, volts; USW as is)."""
-    return {f.name: raw[f.name] if f.decimals == 0 else raw[f.name] / 10 ** f.decimals for f in NMEA_FIELDS}
+    return {f.name: raw[f.name] if f.decimals == 0 else raw[f.name] / 10**f.decimals for f in NMEA_FIELDS}
 
 
 # --- The stream decoder: leftmost valid message (spec/README.md) ---------------------------------
@@ -569,7 +582,7 @@ def scan(data: bytes) -> tuple[list[tuple[str, bytes]], int]:
     while pos < len(data):
         size = _frame_at(data, pos) if data[pos] == HEADER[0] else _sentence_at(data, pos) if data[pos] == 0x24 else 0
         if size:
-            events.append(("frame" if data[pos] == HEADER[0] else "nmea", data[pos:pos + size]))
+            events.append(("frame" if data[pos] == HEADER[0] else "nmea", data[pos : pos + size]))
             pos += size
         else:
             discarded += 1
@@ -582,19 +595,19 @@ def _frame_at(data: bytes, pos: int) -> int:
         return 0
     length: int = struct.unpack_from("<H", data, pos + 4)[0]
     try:
-        decode_frame(data[pos:pos + length + 2])
+        decode_frame(data[pos : pos + length + 2])
     except OracleError:
         return 0
     return length + 2
 
 
 def _sentence_at(data: bytes, pos: int) -> int:
-    window = data[pos:pos + MAX_SENTENCE]
+    window = data[pos : pos + MAX_SENTENCE]
     lf = window.find(b"\n")
     if lf < 0:
         return 0
     try:
-        decode_sentence(window[:lf + 1])
+        decode_sentence(window[: lf + 1])
     except OracleError:
         return 0
     return lf + 1

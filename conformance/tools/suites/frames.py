@@ -1,0 +1,47 @@
+"""frames: whole frames decoded (each check of spec/README.md in order) and built."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import oracle as o
+
+from .common import Vector, attempt, cases, expand, hx, phrases, vec
+from .messages import Messages
+
+SUITE = "frames"
+
+
+def _decoded(data: bytes) -> Any:
+    def run() -> dict[str, Any]:
+        mtype, reserved, payload = o.decode_frame(data)
+        return {"message_type": mtype, "reserved": reserved, "payload": hx(payload)}
+
+    return attempt(run)
+
+
+def _built(input_: dict[str, Any]) -> Any:
+    def run() -> str:
+        payload = bytes.fromhex(input_["payload"])
+        return hx(o.frame(input_["message_type"], payload, input_.get("reserved", 0)))
+
+    return attempt(run)
+
+
+def vectors() -> list[Vector]:
+    """Decode inputs are messages (suites/messages.py); an encode input is the request as sent,
+    its payload written as a message."""
+    data = cases(SUITE)
+    names = phrases(SUITE)
+    messages = Messages(data["messages"])
+    out: list[Vector] = []
+    for case in data["decode"]:
+        frame = messages.build(case["bytes"])
+        out.append(
+            vec(f"frame_decode/{case['name']}", "frame_decode", hx(frame), _decoded(frame), expand(case["note"], names))
+        )
+    for case in data["encode"]:
+        input_ = {**case["input"], "payload": hx(messages.build(case["input"]["payload"]))}
+        text = f"{expand(case['note'], names)}; spec/README.md, frame encode"
+        out.append(vec(f"frame_encode/{case['name']}", "frame_encode", input_, _built(input_), text))
+    return out
