@@ -81,3 +81,5 @@ pub const SPEC_VERSION: &str = "1.0.0";
 pub const SPEC_HASH: &str = "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
+/// True when numbers are sent most significant byte first (the spec's `byte_order`).
+const BIG_ENDIAN: bool = false;
