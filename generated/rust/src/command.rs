@@ -148,6 +148,13 @@ impl Command {
         Command::GetClbRes,
     ];
 
+    /// The command whose ICD name is `name`, if any.
+    pub fn from_name(name: &str) -> Option<Command> {
+        Command::ALL
+            .into_iter()
+            .find(|command| command.name() == name)
+    }
+
     /// The ICD's name of the command (`AHRScont1`).
     pub const fn name(self) -> &'static str {
         match self {
@@ -210,13 +217,6 @@ impl Command {
             Command::ClearClb => 0x2F,
             Command::GetClbRes => 0x2A,
         }
-    }
-
-    /// The command whose ICD name is `name`, if any.
-    pub fn from_name(name: &str) -> Option<Command> {
-        Command::ALL
-            .into_iter()
-            .find(|command| command.name() == name)
     }
 
     /// Every command with code `code`, sorted by ICD name (empty for an unknown code).

@@ -9,6 +9,13 @@ mod kind;
 
 pub use kind::ErrorKind;
 
+impl ErrorKind {
+    /// The kind whose spec name is `name`, if any.
+    pub fn from_name(name: &str) -> Option<ErrorKind> {
+        ErrorKind::ALL.into_iter().find(|kind| kind.name() == name)
+    }
+}
+
 impl fmt::Display for ErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())

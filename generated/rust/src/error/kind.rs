@@ -74,26 +74,21 @@ impl ErrorKind {
         }
     }
 
-    /// The kind whose spec name is `name`, if any.
-    pub fn from_name(name: &str) -> Option<ErrorKind> {
-        ErrorKind::ALL.into_iter().find(|kind| kind.name() == name)
-    }
-
     /// One sentence saying what the kind means.
     pub const fn doc(self) -> &'static str {
         match self {
-            ErrorKind::Truncated => "The input ends before the frame, payload or sentence does.",
-            ErrorKind::BadHeader => "The frame does not start with AA 55, or a sentence does not start with the $PAHR identifier.",
-            ErrorKind::BadMessageType => "The message type byte is neither 0 (command) nor 1 (data) (Table 6.2).",
-            ErrorKind::BadLength => "The message length is outside the bounds the spec accepts, or a payload is not the size its table defines.",
-            ErrorKind::BadChecksum => "The transmitted checksum does not match the one computed over the received bytes.",
-            ErrorKind::TrailingData => "Bytes follow the end of a complete frame, payload or sentence where none are allowed.",
-            ErrorKind::UnknownCommand => "A command code or command name that Table C.1 does not define.",
-            ErrorKind::OutOfRange => "A value outside the range the spec allows for its field (refused by builders, never wrapped or truncated).",
-            ErrorKind::Malformed => "Text that does not follow the sentence grammar (missing or extra fields, a bad number).",
-            ErrorKind::BufferTooSmall => "The caller's output buffer cannot hold the message being built.",
-            ErrorKind::UnexpectedMessage => "The peer sent a message that the protocol state does not allow (host session and device model).",
-            ErrorKind::Timeout => "An answer the protocol requires did not arrive in time (host session).",
-        }
+ErrorKind::Truncated => "The input ends before the frame, payload or sentence does.",
+ErrorKind::BadHeader => "The frame does not start with AA 55, or a sentence does not start with the $PAHR identifier.",
+ErrorKind::BadMessageType => "The message type byte is neither 0 (command) nor 1 (data) (Table 6.2).",
+ErrorKind::BadLength => "The message length is outside the bounds the spec accepts, or a payload is not the size its table defines.",
+ErrorKind::BadChecksum => "The transmitted checksum does not match the one computed over the received bytes.",
+ErrorKind::TrailingData => "Bytes follow the end of a complete frame, payload or sentence where none are allowed.",
+ErrorKind::UnknownCommand => "A command code or command name that Table C.1 does not define.",
+ErrorKind::OutOfRange => "A value outside the range the spec allows for its field (refused by builders, never wrapped or truncated).",
+ErrorKind::Malformed => "Text that does not follow the sentence grammar (missing or extra fields, a bad number).",
+ErrorKind::BufferTooSmall => "The caller's output buffer cannot hold the message being built.",
+ErrorKind::UnexpectedMessage => "The peer sent a message that the protocol state does not allow (host session and device model).",
+ErrorKind::Timeout => "An answer the protocol requires did not arrive in time (host session).",
+}
     }
 }

@@ -26,8 +26,6 @@ pub mod info {
     /// Check sum, `u16`.
     pub const CHECKSUM: FieldInfo = FieldInfo {
         icd_name: "Check sum",
-        min: 0.0,
-        max: 65535.0,
         doc: "Checksum of the acknowledged message, message type through payload.",
         ..FieldInfo::new("checksum", field::CHECKSUM, FieldKind::Unsigned)
     };

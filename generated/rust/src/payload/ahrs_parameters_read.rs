@@ -20,37 +20,26 @@ pub mod field {
 
     /// Measurement rate, `u16`, hertz.
     pub const UPDATE_RATE: Field = 0..2;
-
     /// Initial alignment time, `u16`, seconds.
     pub const ALIGNMENT_TIME: Field = 2..4;
-
     /// Magnetic declination, `f32`, degrees.
     pub const DECLINATION: Field = 4..8;
-
     /// Latitude, `f32`, degrees.
     pub const LATITUDE: Field = 8..12;
-
     /// Longitude, `f32`, degrees.
     pub const LONGITUDE: Field = 12..16;
-
     /// Altitude, `f32`, metres.
     pub const ALTITUDE: Field = 16..20;
-
     /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: Field = 20..24;
-
     /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: Field = 24..28;
-
     /// Alignment angle A2, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A2: Field = 28..32;
-
     /// Alignment angle A3, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A3: Field = 32..36;
-
     /// Device ID, `char[8]`.
     pub const DEVICE_ID: Field = 36..44;
-
     /// Reserved, `reserved[6]`.
     pub const RESERVED: Field = 44..50;
 }

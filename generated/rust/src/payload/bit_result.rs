@@ -19,7 +19,6 @@ pub mod field {
 
     /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius.
     pub const UTERMO100: Field = 0..2;
-
     /// USW, `u16`.
     pub const USW: Field = 2..4;
 }
@@ -31,8 +30,6 @@ pub mod info {
     /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius.
     pub const UTERMO100: FieldInfo = FieldInfo {
         icd_name: "Utermo100",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(100),
@@ -45,8 +42,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word (section 6.5).",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)

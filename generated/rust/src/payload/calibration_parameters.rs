@@ -20,19 +20,14 @@ pub mod field {
 
     /// Reserved, `f32`, degrees.
     pub const REFERENCE_AZIMUTH: Field = 0..4;
-
     /// Time of data accumulation in one run, `u16`, seconds.
     pub const ACCUMULATION_TIME: Field = 4..6;
-
     /// Latitude, `f32`, degrees.
     pub const LATITUDE: Field = 6..10;
-
     /// Longitude, `f32`, degrees.
     pub const LONGITUDE: Field = 10..14;
-
     /// Altitude, `f32`, metres.
     pub const ALTITUDE: Field = 14..18;
-
     /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
     pub const DATE: Field = 18..22;
 }

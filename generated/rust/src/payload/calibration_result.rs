@@ -19,49 +19,34 @@ pub mod field {
 
     /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: Field = 0..1;
-
     /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: Field = 1..2;
-
     /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: Field = 2..3;
-
     /// Calibration success, `u8`.
     pub const SUCCESS: Field = 3..4;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_11: Field = 4..8;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_12: Field = 8..12;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_13: Field = 12..16;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_21: Field = 16..20;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_22: Field = 20..24;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_23: Field = 24..28;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_31: Field = 28..32;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_32: Field = 32..36;
-
     /// Matrix for soft iron correction, `f32`, dimensionless.
     pub const TM_C_33: Field = 36..40;
-
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_X: Field = 40..44;
-
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Y: Field = 44..48;
-
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
     pub const HM_0_Z: Field = 48..52;
 }
@@ -87,8 +72,6 @@ pub mod info {
     /// Number of used calibration runs, `u8`.
     pub const RUNS_USED: FieldInfo = FieldInfo {
         icd_name: "Number of used calibration runs",
-        min: 0.0,
-        max: 255.0,
         doc: "Number of calibration runs used.",
         ..FieldInfo::new("runs_used", field::RUNS_USED, FieldKind::Unsigned)
     };
@@ -106,8 +89,6 @@ pub mod info {
     /// Calibration success, `u8`.
     pub const SUCCESS: FieldInfo = FieldInfo {
         icd_name: "Calibration success",
-        min: 0.0,
-        max: 255.0,
         encoding: Some(Encoding::CalibrationSuccess),
         doc: "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.",
         ..FieldInfo::new("success", field::SUCCESS, FieldKind::Unsigned)

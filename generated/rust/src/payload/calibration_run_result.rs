@@ -20,28 +20,20 @@ pub mod field {
 
     /// Type of calibration, `u8`.
     pub const CALIBRATION_TYPE: Field = 0..1;
-
     /// Calibration run, `u8`.
     pub const RUN: Field = 1..2;
-
     /// Percent of used data points, `u8`, percent.
     pub const DATA_USED: Field = 2..3;
-
     /// Calibration success, `u8`.
     pub const SUCCESS: Field = 3..4;
-
     /// Reserved, `reserved[4]`.
     pub const RESERVED_1: Field = 4..8;
-
     /// Average pitch, deg, `f32`, degrees.
     pub const AVERAGE_PITCH: Field = 8..12;
-
     /// Average roll, deg, `f32`, degrees.
     pub const AVERAGE_ROLL: Field = 12..16;
-
     /// Reserved, `reserved[12]`.
     pub const RESERVED_2: Field = 16..28;
-
     /// USW, `u16`.
     pub const USW: Field = 28..30;
 }
@@ -87,8 +79,6 @@ pub mod info {
     /// Calibration success, `u8`.
     pub const SUCCESS: FieldInfo = FieldInfo {
         icd_name: "Calibration success",
-        min: 0.0,
-        max: 255.0,
         encoding: Some(Encoding::CalibrationSuccess),
         doc: "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.",
         ..FieldInfo::new("success", field::SUCCESS, FieldKind::Unsigned)
@@ -131,8 +121,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word (section 6.5).",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)

@@ -116,21 +116,32 @@ pub struct FieldInfo {
 }
 
 impl FieldInfo {
-    /// The field `name` of `kind` at `position`, with nothing else said: the float32 range
-    /// (float fields; no range otherwise), a zero default, no scale, unit, encoding or doc.
-    /// Each table starts its fields from here and fills in what the spec says.
+    /// The field `name` of `kind` at `position`, with nothing else said: the range of its type
+    /// (numbers), a zero default, no scale, unit, encoding or doc. Each table starts its fields
+    /// from here and fills in what the spec says.
     pub(crate) const fn new(name: &'static str, position: Field, kind: FieldKind) -> FieldInfo {
         let Range { start, end } = position;
-        let (min, max, default) = match kind {
-            FieldKind::Float => (F32_LOWEST, F32_MAX, Value::Float(0.0)),
-            FieldKind::Unsigned | FieldKind::Signed => (0.0, 0.0, Value::Int(0)),
-            FieldKind::Char | FieldKind::Reserved => (0.0, 0.0, Value::Bytes(&[])),
+        let size = end.saturating_sub(start);
+        let (min, max) = match (kind, size) {
+            (FieldKind::Unsigned, 1) => (0.0, 255.0),
+            (FieldKind::Unsigned, 2) => (0.0, 65535.0),
+            (FieldKind::Unsigned, 4) => (0.0, 4294967295.0),
+            (FieldKind::Signed, 1) => (-128.0, 127.0),
+            (FieldKind::Signed, 2) => (-32768.0, 32767.0),
+            (FieldKind::Signed, 4) => (-2147483648.0, 2147483647.0),
+            (FieldKind::Float, _) => (F32_LOWEST, F32_MAX),
+            _ => (0.0, 0.0),
+        };
+        let default = match kind {
+            FieldKind::Float => Value::Float(0.0),
+            FieldKind::Unsigned | FieldKind::Signed => Value::Int(0),
+            FieldKind::Char | FieldKind::Reserved => Value::Bytes(&[]),
         };
         FieldInfo {
             name,
             icd_name: "",
             offset: start,
-            size: end.saturating_sub(start),
+            size,
             kind,
             min,
             max,

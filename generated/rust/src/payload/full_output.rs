@@ -19,49 +19,34 @@ pub mod field {
 
     /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
-
     /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
-
     /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
-
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_X: Field = 6..8;
-
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Y: Field = 8..10;
-
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Z: Field = 10..12;
-
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_X: Field = 12..14;
-
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Y: Field = 14..16;
-
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Z: Field = 16..18;
-
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_X: Field = 18..20;
-
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Y: Field = 20..22;
-
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Z: Field = 22..24;
-
     /// Reserved, `reserved[4]`.
     pub const RESERVED: Field = 24..28;
-
     /// USW, `u16`.
     pub const USW: Field = 28..30;
-
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
-
     /// Utermo, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UTERMO: Field = 32..34;
 }
@@ -115,8 +100,6 @@ pub mod info {
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_X: FieldInfo = FieldInfo {
         icd_name: "Ugyro",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw gyro X sensor data.",
         ..FieldInfo::new("ugyro_x", field::UGYRO_X, FieldKind::Signed)
@@ -125,8 +108,6 @@ pub mod info {
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Y: FieldInfo = FieldInfo {
         icd_name: "Ugyro",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw gyro Y sensor data.",
         ..FieldInfo::new("ugyro_y", field::UGYRO_Y, FieldKind::Signed)
@@ -135,8 +116,6 @@ pub mod info {
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UGYRO_Z: FieldInfo = FieldInfo {
         icd_name: "Ugyro",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw gyro Z sensor data.",
         ..FieldInfo::new("ugyro_z", field::UGYRO_Z, FieldKind::Signed)
@@ -145,8 +124,6 @@ pub mod info {
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_X: FieldInfo = FieldInfo {
         icd_name: "Uacc",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw accelerometer X sensor data.",
         ..FieldInfo::new("uacc_x", field::UACC_X, FieldKind::Signed)
@@ -155,8 +132,6 @@ pub mod info {
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Y: FieldInfo = FieldInfo {
         icd_name: "Uacc",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw accelerometer Y sensor data.",
         ..FieldInfo::new("uacc_y", field::UACC_Y, FieldKind::Signed)
@@ -165,8 +140,6 @@ pub mod info {
     /// Uacc, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UACC_Z: FieldInfo = FieldInfo {
         icd_name: "Uacc",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw accelerometer Z sensor data.",
         ..FieldInfo::new("uacc_z", field::UACC_Z, FieldKind::Signed)
@@ -175,8 +148,6 @@ pub mod info {
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_X: FieldInfo = FieldInfo {
         icd_name: "Umag",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw magnetometer X sensor data.",
         ..FieldInfo::new("umag_x", field::UMAG_X, FieldKind::Signed)
@@ -185,8 +156,6 @@ pub mod info {
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Y: FieldInfo = FieldInfo {
         icd_name: "Umag",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw magnetometer Y sensor data.",
         ..FieldInfo::new("umag_y", field::UMAG_Y, FieldKind::Signed)
@@ -195,8 +164,6 @@ pub mod info {
     /// Umag, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UMAG_Z: FieldInfo = FieldInfo {
         icd_name: "Umag",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "Raw magnetometer Z sensor data.",
         ..FieldInfo::new("umag_z", field::UMAG_Z, FieldKind::Signed)
@@ -212,8 +179,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word (section 6.5).",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
@@ -222,8 +187,6 @@ pub mod info {
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         icd_name: "Vdd",
-        min: 0.0,
-        max: 65535.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(1000),
@@ -236,8 +199,6 @@ pub mod info {
     /// Utermo, `s16`, ADC codes (no physical scale given by the ICD).
     pub const UTERMO: FieldInfo = FieldInfo {
         icd_name: "Utermo",
-        min: -32768.0,
-        max: 32767.0,
         unit: Some(Unit::Adc),
         doc: "ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.",
         ..FieldInfo::new("utermo", field::UTERMO, FieldKind::Signed)

@@ -19,40 +19,28 @@ pub mod field {
 
     /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_X: Field = 0..4;
-
     /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Y: Field = 4..8;
-
     /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD).
     pub const GYRO_BIAS_Z: Field = 8..12;
-
     /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_X: Field = 12..16;
-
     /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Y: Field = 16..20;
-
     /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_ACC_Z: Field = 20..24;
-
     /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_X: Field = 24..28;
-
     /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Y: Field = 28..32;
-
     /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD).
     pub const AVERAGE_MAG_Z: Field = 32..36;
-
     /// Initial Heading, `f32`, degrees.
     pub const INITIAL_HEADING: Field = 36..40;
-
     /// Initial Roll, `f32`, degrees.
     pub const INITIAL_ROLL: Field = 40..44;
-
     /// Initial Pitch, `f32`, degrees.
     pub const INITIAL_PITCH: Field = 44..48;
-
     /// USW, `u16`.
     pub const USW: Field = 48..50;
 }
@@ -166,8 +154,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word: 0 after a successful alignment, non-zero otherwise.",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)

@@ -346,44 +346,44 @@ impl AnyPayload {
 
     /// Decodes `data` as table `kind` (see the table's `Repr::parse`).
     pub fn parse(kind: PayloadKind, data: &[u8]) -> Result<AnyPayload> {
-        Ok(match kind {
-            PayloadKind::FullOutput => AnyPayload::FullOutput(FullOutputRepr::parse(data)?),
-            PayloadKind::Quaternion => AnyPayload::Quaternion(QuaternionRepr::parse(data)?),
+        match kind {
+            PayloadKind::FullOutput => FullOutputRepr::parse(data).map(AnyPayload::FullOutput),
+            PayloadKind::Quaternion => QuaternionRepr::parse(data).map(AnyPayload::Quaternion),
             PayloadKind::OrientationSensors => {
-                AnyPayload::OrientationSensors(OrientationSensorsRepr::parse(data)?)
+                OrientationSensorsRepr::parse(data).map(AnyPayload::OrientationSensors)
             }
             PayloadKind::InitialAlignment => {
-                AnyPayload::InitialAlignment(InitialAlignmentRepr::parse(data)?)
+                InitialAlignmentRepr::parse(data).map(AnyPayload::InitialAlignment)
             }
             PayloadKind::AhrsParametersLoad => {
-                AnyPayload::AhrsParametersLoad(AhrsParametersLoadRepr::parse(data)?)
+                AhrsParametersLoadRepr::parse(data).map(AnyPayload::AhrsParametersLoad)
             }
             PayloadKind::AhrsParametersRead => {
-                AnyPayload::AhrsParametersRead(AhrsParametersReadRepr::parse(data)?)
+                AhrsParametersReadRepr::parse(data).map(AnyPayload::AhrsParametersRead)
             }
             PayloadKind::FirmwareVersion => {
-                AnyPayload::FirmwareVersion(FirmwareVersionRepr::parse(data)?)
+                FirmwareVersionRepr::parse(data).map(AnyPayload::FirmwareVersion)
             }
-            PayloadKind::BitResult => AnyPayload::BitResult(BitResultRepr::parse(data)?),
+            PayloadKind::BitResult => BitResultRepr::parse(data).map(AnyPayload::BitResult),
             PayloadKind::CalibrationParameters => {
-                AnyPayload::CalibrationParameters(CalibrationParametersRepr::parse(data)?)
+                CalibrationParametersRepr::parse(data).map(AnyPayload::CalibrationParameters)
             }
             PayloadKind::CalibrationResult => {
-                AnyPayload::CalibrationResult(CalibrationResultRepr::parse(data)?)
+                CalibrationResultRepr::parse(data).map(AnyPayload::CalibrationResult)
             }
             PayloadKind::CalibrationRunResult => {
-                AnyPayload::CalibrationRunResult(CalibrationRunResultRepr::parse(data)?)
+                CalibrationRunResultRepr::parse(data).map(AnyPayload::CalibrationRunResult)
             }
             PayloadKind::CalibrationRunParameters => {
-                AnyPayload::CalibrationRunParameters(CalibrationRunParametersRepr::parse(data)?)
+                CalibrationRunParametersRepr::parse(data).map(AnyPayload::CalibrationRunParameters)
             }
             PayloadKind::CalibrationStatus => {
-                AnyPayload::CalibrationStatus(CalibrationStatusRepr::parse(data)?)
+                CalibrationStatusRepr::parse(data).map(AnyPayload::CalibrationStatus)
             }
             PayloadKind::Acknowledgement => {
-                AnyPayload::Acknowledgement(AcknowledgementRepr::parse(data)?)
+                AcknowledgementRepr::parse(data).map(AnyPayload::Acknowledgement)
             }
-        })
+        }
     }
 
     /// The value's table.

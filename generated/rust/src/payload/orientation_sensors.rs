@@ -20,49 +20,34 @@ pub mod field {
 
     /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
-
     /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
-
     /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
-
     /// GyroX, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_X: Field = 6..8;
-
     /// GyroY, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Y: Field = 8..10;
-
     /// GyroZ, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Z: Field = 10..12;
-
     /// AccX, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_X: Field = 12..14;
-
     /// AccY, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Y: Field = 14..16;
-
     /// AccZ, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Z: Field = 16..18;
-
     /// MagX, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_X: Field = 18..20;
-
     /// MagY, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Y: Field = 20..22;
-
     /// MagZ, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Z: Field = 22..24;
-
     /// Reserved, `reserved[4]`.
     pub const RESERVED: Field = 24..28;
-
     /// USW, `u16`.
     pub const USW: Field = 28..30;
-
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
-
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: Field = 32..34;
 }
@@ -116,8 +101,6 @@ pub mod info {
     /// GyroX, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_X: FieldInfo = FieldInfo {
         icd_name: "GyroX",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Kg),
@@ -130,8 +113,6 @@ pub mod info {
     /// GyroY, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Y: FieldInfo = FieldInfo {
         icd_name: "GyroY",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Kg),
@@ -144,8 +125,6 @@ pub mod info {
     /// GyroZ, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_Z: FieldInfo = FieldInfo {
         icd_name: "GyroZ",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Kg),
@@ -158,8 +137,6 @@ pub mod info {
     /// AccX, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_X: FieldInfo = FieldInfo {
         icd_name: "AccX",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Ka),
@@ -172,8 +149,6 @@ pub mod info {
     /// AccY, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Y: FieldInfo = FieldInfo {
         icd_name: "AccY",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Ka),
@@ -186,8 +161,6 @@ pub mod info {
     /// AccZ, `s16`, raw x 1 / KA = standard gravity.
     pub const ACC_Z: FieldInfo = FieldInfo {
         icd_name: "AccZ",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Parameter(VariantParameter::Ka),
@@ -200,8 +173,6 @@ pub mod info {
     /// MagX, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_X: FieldInfo = FieldInfo {
         icd_name: "MagX",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 10,
             divisor: Divisor::Fixed(1),
@@ -214,8 +185,6 @@ pub mod info {
     /// MagY, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Y: FieldInfo = FieldInfo {
         icd_name: "MagY",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 10,
             divisor: Divisor::Fixed(1),
@@ -228,8 +197,6 @@ pub mod info {
     /// MagZ, `s16`, raw x 10 / 1 = nanotesla.
     pub const MAG_Z: FieldInfo = FieldInfo {
         icd_name: "MagZ",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 10,
             divisor: Divisor::Fixed(1),
@@ -249,8 +216,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word (section 6.5).",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
@@ -259,8 +224,6 @@ pub mod info {
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         icd_name: "Vdd",
-        min: 0.0,
-        max: 65535.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(1000),
@@ -273,8 +236,6 @@ pub mod info {
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: FieldInfo = FieldInfo {
         icd_name: "Utermo",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(10),

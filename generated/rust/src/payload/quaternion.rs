@@ -19,34 +19,24 @@ pub mod field {
 
     /// Heading, `u16`, raw x 1 / 100 = degrees.
     pub const HEADING: Field = 0..2;
-
     /// Pitch, `s16`, raw x 1 / 100 = degrees.
     pub const PITCH: Field = 2..4;
-
     /// Roll, `s16`, raw x 1 / 100 = degrees.
     pub const ROLL: Field = 4..6;
-
     /// Lk0, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK0: Field = 6..8;
-
     /// Lk1, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK1: Field = 8..10;
-
     /// Lk2, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK2: Field = 10..12;
-
     /// Lk3, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK3: Field = 12..14;
-
     /// Reserved, `reserved[14]`.
     pub const RESERVED: Field = 14..28;
-
     /// USW, `u16`.
     pub const USW: Field = 28..30;
-
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: Field = 30..32;
-
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: Field = 32..34;
 }
@@ -163,8 +153,6 @@ pub mod info {
     /// USW, `u16`.
     pub const USW: FieldInfo = FieldInfo {
         icd_name: "USW",
-        min: 0.0,
-        max: 65535.0,
         encoding: Some(Encoding::Usw),
         doc: "Unit Status Word (section 6.5).",
         ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
@@ -173,8 +161,6 @@ pub mod info {
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         icd_name: "Vdd",
-        min: 0.0,
-        max: 65535.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(1000),
@@ -187,8 +173,6 @@ pub mod info {
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: FieldInfo = FieldInfo {
         icd_name: "Utermo",
-        min: -32768.0,
-        max: 32767.0,
         scale: Some(Scale {
             multiplier: 1,
             divisor: Divisor::Fixed(10),
