@@ -321,8 +321,8 @@ def decoded_setter(field: Field) -> dict[str, Any] | None:
 
 
 def has_extras(payload: Payload) -> bool:
-    """True if a table has accessors beyond its rows: text, engineering or decoded ones."""
-    return any(f.kind == "char" or f.scale is not None or decoded(f) is not None for f in payload.fields)
+    """True if a table has accessors beyond its rows: text or decoded ones."""
+    return any(f.kind == "char" or decoded(f) is not None for f in payload.fields)
 
 
 def payload_uses(payload: Payload) -> list[str]:
@@ -330,14 +330,14 @@ def payload_uses(payload: Payload) -> list[str]:
     fields = payload.fields
     names = {"FieldInfo", "FieldKind"}
     names |= {"Value"} if any(default_value(f) or f.kind == "char" for f in fields) else set()
-    names |= {"Scale", "Divisor"} if any(f.scale for f in fields) else set()
+    names |= {"Scale"} if any(f.scale for f in fields) else set()
     names |= {"Unit"} if any(f.unit for f in fields) else set()
     names |= {"Encoding"} if any(f.encoding for f in fields) else set()
     uses = ["crate::payload::codec::payload_table", "crate::payload::{" + ", ".join(sorted(names)) + "}"]
-    if any(f.kind == "char" or f.scale or (decoded_setter(f) or {}).get("fallible") for f in fields):
+    if any(f.kind == "char" or (decoded_setter(f) or {}).get("fallible") for f in fields):
         uses.append("crate::error::Result")
     if payload.variant_dependent:
-        uses += ["crate::variant::{Variant, VariantParameter}"]
+        uses.append("crate::variant::VariantParameter")
     for field in fields:
         found = decoded(field)
         if found is not None:

@@ -5,9 +5,8 @@
 //!
 //! The AHRS answer to GetBIT (6.3.11).
 
-use crate::error::Result;
 use crate::payload::codec::payload_table;
-use crate::payload::{Divisor, Encoding, FieldInfo, FieldKind, Scale, Unit};
+use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit};
 use crate::status::StatusWord;
 
 /// Size of the payload (bytes).
@@ -30,10 +29,7 @@ pub mod info {
     /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius.
     pub const UTERMO100: FieldInfo = FieldInfo {
         icd_name: "Utermo100",
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Degc),
         doc: "AHRS temperature in 1/100 degC.",
         ..FieldInfo::new("utermo100", field::UTERMO100, FieldKind::Signed)
@@ -65,17 +61,13 @@ payload_table! {
     repr BitResultRepr;
     count 2;
     /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
-    0 number utermo100 set_utermo100 UTERMO100: i16;
+    0 number utermo100 set_utermo100 UTERMO100: i16,
+        in utermo100_degc set_utermo100_degc "Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.";
     /// USW, `u16`: Unit Status Word (section 6.5).
     1 number usw set_usw USW: u16;
 }
 
 impl<T: AsRef<[u8]>> BitResult<T> {
-    /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
-    pub fn utermo100_degc(&self) -> f64 {
-        f64::from(self.utermo100()) / 100.0
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
@@ -83,19 +75,6 @@ impl<T: AsRef<[u8]>> BitResult<T> {
 }
 
 impl BitResultRepr {
-    /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
-    pub fn utermo100_degc(&self) -> f64 {
-        f64::from(self.utermo100) / 100.0
-    }
-
-    /// Sets Utermo100 from an engineering value (degrees Celsius), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_utermo100_degc(&mut self, value: f64) -> Result<()> {
-        let raw = info::UTERMO100.raw_from(value, None)?;
-        self.utermo100 = info::UTERMO100.int(raw)?;
-        Ok(())
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)

@@ -5,9 +5,8 @@
 //!
 //! Output block after AHRScont1 / AHRSreq1.
 
-use crate::error::Result;
 use crate::payload::codec::payload_table;
-use crate::payload::{Divisor, Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
+use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
 
 /// Size of the payload (bytes).
@@ -60,10 +59,7 @@ pub mod info {
         icd_name: "Heading",
         min: 0.0,
         max: 35999.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Heading angle.",
         ..FieldInfo::new("heading", field::HEADING, FieldKind::Unsigned)
@@ -74,10 +70,7 @@ pub mod info {
         icd_name: "Pitch",
         min: -9000.0,
         max: 9000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Pitch angle.",
         ..FieldInfo::new("pitch", field::PITCH, FieldKind::Signed)
@@ -88,10 +81,7 @@ pub mod info {
         icd_name: "Roll",
         min: -18000.0,
         max: 18000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Roll angle.",
         ..FieldInfo::new("roll", field::ROLL, FieldKind::Signed)
@@ -187,10 +177,7 @@ pub mod info {
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         icd_name: "Vdd",
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(1000),
-        }),
+        scale: Some(Scale::fixed(1, 1000)),
         unit: Some(Unit::V),
         doc: "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.",
         ..FieldInfo::new("vdd", field::VDD, FieldKind::Unsigned)
@@ -239,11 +226,14 @@ payload_table! {
     repr FullOutputRepr;
     count 16;
     /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
-    0 number heading set_heading HEADING: u16;
+    0 number heading set_heading HEADING: u16,
+        in heading_deg set_heading_deg "Heading (degrees): Heading angle.";
     /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
-    1 number pitch set_pitch PITCH: i16;
+    1 number pitch set_pitch PITCH: i16,
+        in pitch_deg set_pitch_deg "Pitch (degrees): Pitch angle.";
     /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
-    2 number roll set_roll ROLL: i16;
+    2 number roll set_roll ROLL: i16,
+        in roll_deg set_roll_deg "Roll (degrees): Roll angle.";
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
     3 number ugyro_x set_ugyro_x UGYRO_X: i16;
     /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
@@ -267,93 +257,22 @@ payload_table! {
     /// USW, `u16`: Unit Status Word (section 6.5).
     13 number usw set_usw USW: u16;
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
-    14 number vdd set_vdd VDD: u16;
+    14 number vdd set_vdd VDD: u16,
+        in vdd_v set_vdd_v "Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.";
     /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
     15 number utermo set_utermo UTERMO: i16;
 }
 
 impl<T: AsRef<[u8]>> FullOutput<T> {
-    /// Heading (degrees): Heading angle.
-    pub fn heading_deg(&self) -> f64 {
-        f64::from(self.heading()) / 100.0
-    }
-
-    /// Pitch (degrees): Pitch angle.
-    pub fn pitch_deg(&self) -> f64 {
-        f64::from(self.pitch()) / 100.0
-    }
-
-    /// Roll (degrees): Roll angle.
-    pub fn roll_deg(&self) -> f64 {
-        f64::from(self.roll()) / 100.0
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
     }
-
-    /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
-    pub fn vdd_v(&self) -> f64 {
-        f64::from(self.vdd()) / 1000.0
-    }
 }
 
 impl FullOutputRepr {
-    /// Heading (degrees): Heading angle.
-    pub fn heading_deg(&self) -> f64 {
-        f64::from(self.heading) / 100.0
-    }
-
-    /// Sets Heading from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_heading_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::HEADING.raw_from(value, None)?;
-        self.heading = info::HEADING.int(raw)?;
-        Ok(())
-    }
-
-    /// Pitch (degrees): Pitch angle.
-    pub fn pitch_deg(&self) -> f64 {
-        f64::from(self.pitch) / 100.0
-    }
-
-    /// Sets Pitch from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_pitch_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::PITCH.raw_from(value, None)?;
-        self.pitch = info::PITCH.int(raw)?;
-        Ok(())
-    }
-
-    /// Roll (degrees): Roll angle.
-    pub fn roll_deg(&self) -> f64 {
-        f64::from(self.roll) / 100.0
-    }
-
-    /// Sets Roll from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_roll_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::ROLL.raw_from(value, None)?;
-        self.roll = info::ROLL.int(raw)?;
-        Ok(())
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
-    }
-
-    /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
-    pub fn vdd_v(&self) -> f64 {
-        f64::from(self.vdd) / 1000.0
-    }
-
-    /// Sets Vdd from an engineering value (volts DC), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_vdd_v(&mut self, value: f64) -> Result<()> {
-        let raw = info::VDD.raw_from(value, None)?;
-        self.vdd = info::VDD.int(raw)?;
-        Ok(())
     }
 }

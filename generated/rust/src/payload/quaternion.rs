@@ -5,9 +5,8 @@
 //!
 //! Output block after AHRScont2 / AHRSreq2.
 
-use crate::error::Result;
 use crate::payload::codec::payload_table;
-use crate::payload::{Divisor, Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
+use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
 
 /// Size of the payload (bytes).
@@ -50,10 +49,7 @@ pub mod info {
         icd_name: "Heading",
         min: 0.0,
         max: 35999.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Heading angle.",
         ..FieldInfo::new("heading", field::HEADING, FieldKind::Unsigned)
@@ -64,10 +60,7 @@ pub mod info {
         icd_name: "Pitch",
         min: -9000.0,
         max: 9000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Pitch angle.",
         ..FieldInfo::new("pitch", field::PITCH, FieldKind::Signed)
@@ -78,10 +71,7 @@ pub mod info {
         icd_name: "Roll",
         min: -18000.0,
         max: 18000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(100),
-        }),
+        scale: Some(Scale::fixed(1, 100)),
         unit: Some(Unit::Deg),
         doc: "Roll angle.",
         ..FieldInfo::new("roll", field::ROLL, FieldKind::Signed)
@@ -92,10 +82,7 @@ pub mod info {
         icd_name: "Lk0",
         min: -10000.0,
         max: 10000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(10000),
-        }),
+        scale: Some(Scale::fixed(1, 10000)),
         unit: Some(Unit::One),
         doc: "Quaternion of orientation, scalar component.",
         ..FieldInfo::new("lk0", field::LK0, FieldKind::Signed)
@@ -106,10 +93,7 @@ pub mod info {
         icd_name: "Lk1",
         min: -10000.0,
         max: 10000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(10000),
-        }),
+        scale: Some(Scale::fixed(1, 10000)),
         unit: Some(Unit::One),
         doc: "Quaternion of orientation, first vector component.",
         ..FieldInfo::new("lk1", field::LK1, FieldKind::Signed)
@@ -120,10 +104,7 @@ pub mod info {
         icd_name: "Lk2",
         min: -10000.0,
         max: 10000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(10000),
-        }),
+        scale: Some(Scale::fixed(1, 10000)),
         unit: Some(Unit::One),
         doc: "Quaternion of orientation, second vector component.",
         ..FieldInfo::new("lk2", field::LK2, FieldKind::Signed)
@@ -134,10 +115,7 @@ pub mod info {
         icd_name: "Lk3",
         min: -10000.0,
         max: 10000.0,
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(10000),
-        }),
+        scale: Some(Scale::fixed(1, 10000)),
         unit: Some(Unit::One),
         doc: "Quaternion of orientation, third vector component.",
         ..FieldInfo::new("lk3", field::LK3, FieldKind::Signed)
@@ -161,10 +139,7 @@ pub mod info {
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
         icd_name: "Vdd",
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(1000),
-        }),
+        scale: Some(Scale::fixed(1, 1000)),
         unit: Some(Unit::V),
         doc: "AHRS input voltage.",
         ..FieldInfo::new("vdd", field::VDD, FieldKind::Unsigned)
@@ -173,10 +148,7 @@ pub mod info {
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
     pub const UTERMO: FieldInfo = FieldInfo {
         icd_name: "Utermo",
-        scale: Some(Scale {
-            multiplier: 1,
-            divisor: Divisor::Fixed(10),
-        }),
+        scale: Some(Scale::fixed(1, 10)),
         unit: Some(Unit::Degc),
         doc: "Average temperature of the 3 accelerometers.",
         ..FieldInfo::new("utermo", field::UTERMO, FieldKind::Signed)
@@ -212,201 +184,48 @@ payload_table! {
     repr QuaternionRepr;
     count 11;
     /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
-    0 number heading set_heading HEADING: u16;
+    0 number heading set_heading HEADING: u16,
+        in heading_deg set_heading_deg "Heading (degrees): Heading angle.";
     /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
-    1 number pitch set_pitch PITCH: i16;
+    1 number pitch set_pitch PITCH: i16,
+        in pitch_deg set_pitch_deg "Pitch (degrees): Pitch angle.";
     /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
-    2 number roll set_roll ROLL: i16;
+    2 number roll set_roll ROLL: i16,
+        in roll_deg set_roll_deg "Roll (degrees): Roll angle.";
     /// Lk0, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
-    3 number lk0 set_lk0 LK0: i16;
+    3 number lk0 set_lk0 LK0: i16,
+        in lk0_value set_lk0_value "Lk0 (dimensionless): Quaternion of orientation, scalar component.";
     /// Lk1, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
-    4 number lk1 set_lk1 LK1: i16;
+    4 number lk1 set_lk1 LK1: i16,
+        in lk1_value set_lk1_value "Lk1 (dimensionless): Quaternion of orientation, first vector component.";
     /// Lk2, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
-    5 number lk2 set_lk2 LK2: i16;
+    5 number lk2 set_lk2 LK2: i16,
+        in lk2_value set_lk2_value "Lk2 (dimensionless): Quaternion of orientation, second vector component.";
     /// Lk3, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
-    6 number lk3 set_lk3 LK3: i16;
+    6 number lk3 set_lk3 LK3: i16,
+        in lk3_value set_lk3_value "Lk3 (dimensionless): Quaternion of orientation, third vector component.";
     /// Reserved, `reserved\[14\]`:
     7 reserved reserved set_reserved RESERVED: [u8; 14];
     /// USW, `u16`: Unit Status Word (section 6.5).
     8 number usw set_usw USW: u16;
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
-    9 number vdd set_vdd VDD: u16;
+    9 number vdd set_vdd VDD: u16,
+        in vdd_v set_vdd_v "Vdd (volts DC): AHRS input voltage.";
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
-    10 number utermo set_utermo UTERMO: i16;
+    10 number utermo set_utermo UTERMO: i16,
+        in utermo_degc set_utermo_degc "Utermo (degrees Celsius): Average temperature of the 3 accelerometers.";
 }
 
 impl<T: AsRef<[u8]>> Quaternion<T> {
-    /// Heading (degrees): Heading angle.
-    pub fn heading_deg(&self) -> f64 {
-        f64::from(self.heading()) / 100.0
-    }
-
-    /// Pitch (degrees): Pitch angle.
-    pub fn pitch_deg(&self) -> f64 {
-        f64::from(self.pitch()) / 100.0
-    }
-
-    /// Roll (degrees): Roll angle.
-    pub fn roll_deg(&self) -> f64 {
-        f64::from(self.roll()) / 100.0
-    }
-
-    /// Lk0 (dimensionless): Quaternion of orientation, scalar component.
-    pub fn lk0_value(&self) -> f64 {
-        f64::from(self.lk0()) / 10000.0
-    }
-
-    /// Lk1 (dimensionless): Quaternion of orientation, first vector component.
-    pub fn lk1_value(&self) -> f64 {
-        f64::from(self.lk1()) / 10000.0
-    }
-
-    /// Lk2 (dimensionless): Quaternion of orientation, second vector component.
-    pub fn lk2_value(&self) -> f64 {
-        f64::from(self.lk2()) / 10000.0
-    }
-
-    /// Lk3 (dimensionless): Quaternion of orientation, third vector component.
-    pub fn lk3_value(&self) -> f64 {
-        f64::from(self.lk3()) / 10000.0
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
     }
-
-    /// Vdd (volts DC): AHRS input voltage.
-    pub fn vdd_v(&self) -> f64 {
-        f64::from(self.vdd()) / 1000.0
-    }
-
-    /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
-    pub fn utermo_degc(&self) -> f64 {
-        f64::from(self.utermo()) / 10.0
-    }
 }
 
 impl QuaternionRepr {
-    /// Heading (degrees): Heading angle.
-    pub fn heading_deg(&self) -> f64 {
-        f64::from(self.heading) / 100.0
-    }
-
-    /// Sets Heading from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_heading_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::HEADING.raw_from(value, None)?;
-        self.heading = info::HEADING.int(raw)?;
-        Ok(())
-    }
-
-    /// Pitch (degrees): Pitch angle.
-    pub fn pitch_deg(&self) -> f64 {
-        f64::from(self.pitch) / 100.0
-    }
-
-    /// Sets Pitch from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_pitch_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::PITCH.raw_from(value, None)?;
-        self.pitch = info::PITCH.int(raw)?;
-        Ok(())
-    }
-
-    /// Roll (degrees): Roll angle.
-    pub fn roll_deg(&self) -> f64 {
-        f64::from(self.roll) / 100.0
-    }
-
-    /// Sets Roll from an engineering value (degrees), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_roll_deg(&mut self, value: f64) -> Result<()> {
-        let raw = info::ROLL.raw_from(value, None)?;
-        self.roll = info::ROLL.int(raw)?;
-        Ok(())
-    }
-
-    /// Lk0 (dimensionless): Quaternion of orientation, scalar component.
-    pub fn lk0_value(&self) -> f64 {
-        f64::from(self.lk0) / 10000.0
-    }
-
-    /// Sets Lk0 from an engineering value (dimensionless), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_lk0_value(&mut self, value: f64) -> Result<()> {
-        let raw = info::LK0.raw_from(value, None)?;
-        self.lk0 = info::LK0.int(raw)?;
-        Ok(())
-    }
-
-    /// Lk1 (dimensionless): Quaternion of orientation, first vector component.
-    pub fn lk1_value(&self) -> f64 {
-        f64::from(self.lk1) / 10000.0
-    }
-
-    /// Sets Lk1 from an engineering value (dimensionless), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_lk1_value(&mut self, value: f64) -> Result<()> {
-        let raw = info::LK1.raw_from(value, None)?;
-        self.lk1 = info::LK1.int(raw)?;
-        Ok(())
-    }
-
-    /// Lk2 (dimensionless): Quaternion of orientation, second vector component.
-    pub fn lk2_value(&self) -> f64 {
-        f64::from(self.lk2) / 10000.0
-    }
-
-    /// Sets Lk2 from an engineering value (dimensionless), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_lk2_value(&mut self, value: f64) -> Result<()> {
-        let raw = info::LK2.raw_from(value, None)?;
-        self.lk2 = info::LK2.int(raw)?;
-        Ok(())
-    }
-
-    /// Lk3 (dimensionless): Quaternion of orientation, third vector component.
-    pub fn lk3_value(&self) -> f64 {
-        f64::from(self.lk3) / 10000.0
-    }
-
-    /// Sets Lk3 from an engineering value (dimensionless), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_lk3_value(&mut self, value: f64) -> Result<()> {
-        let raw = info::LK3.raw_from(value, None)?;
-        self.lk3 = info::LK3.int(raw)?;
-        Ok(())
-    }
-
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
-    }
-
-    /// Vdd (volts DC): AHRS input voltage.
-    pub fn vdd_v(&self) -> f64 {
-        f64::from(self.vdd) / 1000.0
-    }
-
-    /// Sets Vdd from an engineering value (volts DC), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_vdd_v(&mut self, value: f64) -> Result<()> {
-        let raw = info::VDD.raw_from(value, None)?;
-        self.vdd = info::VDD.int(raw)?;
-        Ok(())
-    }
-
-    /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
-    pub fn utermo_degc(&self) -> f64 {
-        f64::from(self.utermo) / 10.0
-    }
-
-    /// Sets Utermo from an engineering value (degrees Celsius), rounded half away
-    /// from zero. Error: `out_of_range` naming the field.
-    pub fn set_utermo_degc(&mut self, value: f64) -> Result<()> {
-        let raw = info::UTERMO.raw_from(value, None)?;
-        self.utermo = info::UTERMO.int(raw)?;
-        Ok(())
     }
 }

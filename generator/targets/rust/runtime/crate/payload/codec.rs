@@ -49,6 +49,24 @@ pub struct Scale {
 }
 
 impl Scale {
+    /// raw x `multiplier` / `divisor`.
+    pub(crate) const fn fixed(multiplier: i32, divisor: i32) -> Scale {
+        let divisor = Divisor::Fixed(divisor);
+        Scale {
+            multiplier,
+            divisor,
+        }
+    }
+
+    /// raw x `multiplier` / the value of `parameter` for the device variant.
+    pub(crate) const fn by(multiplier: i32, parameter: VariantParameter) -> Scale {
+        let divisor = Divisor::Parameter(parameter);
+        Scale {
+            multiplier,
+            divisor,
+        }
+    }
+
     /// The divisor for `variant`, or `None` when it depends on the variant and none is given.
     pub const fn divisor(&self, variant: Option<Variant>) -> Option<i32> {
         match (self.divisor, variant) {
@@ -276,6 +294,28 @@ impl FieldInfo {
         Ok(raw)
     }
 
+    /// The engineering value of the raw value `raw` of this scaled field, the divisor taken from
+    /// `variant` when it depends on one (what a table's engineering getters return).
+    pub(crate) fn scaled(&self, raw: f64, variant: Option<Variant>) -> f64 {
+        match self.scale {
+            Some(scale) => scale.engineering(raw, variant).unwrap_or(f64::NAN),
+            None => raw,
+        }
+    }
+
+    /// Sets `slot` from the engineering value `value`: scaled, rounded and checked as
+    /// [`FieldInfo::raw_from`] does (what a table's engineering setters do).
+    pub(crate) fn set_scaled<T: Raw>(
+        &self,
+        slot: &mut T,
+        value: f64,
+        variant: Option<Variant>,
+    ) -> Result<()> {
+        let raw = self.raw_from(value, variant)?;
+        *slot = T::from_value(self, raw)?;
+        Ok(())
+    }
+
     /// The engineering value of `value` (in the field's unit), or `None` for a field without a
     /// scale, a non-numeric value, or a variant-dependent scale without a variant.
     pub fn engineering(&self, value: Value<'_>, variant: Option<Variant>) -> Option<f64> {
@@ -422,7 +462,9 @@ impl AnyPayload {
 /// Expanded inside a table's module, next to its `SIZE`, `field`, `info` and `FIELDS`. Each row
 /// is `INDEX KIND name set_name CONST: TYPE;` with the field's doc comment in front; `KIND` is
 /// `number` (an integer or float32), `text` (Latin-1 padded with NULs) or `reserved` (bytes
-/// kept verbatim).
+/// kept verbatim). A scaled field's row adds `, in name_unit set_name_unit "doc"` (and `by
+/// variant` when the divisor is a parameter of the device variant): engineering getters on the
+/// view and the value, and a setter on the value.
 macro_rules! payload_table {
     (
         $(#[$view_doc:meta])*
@@ -432,7 +474,8 @@ macro_rules! payload_table {
         count $count:literal;
         $(
             $(#[$doc:meta])*
-            $index:literal $kind:ident $name:ident $set:ident $CONST:ident: $type:ty;
+            $index:literal $kind:ident $name:ident $set:ident $CONST:ident: $type:ty
+            $(, in $unit:ident $set_unit:ident $unit_doc:literal $(by $variant:ident)?)?;
         )*
     ) => {
         $(#[$view_doc])*
@@ -465,6 +508,11 @@ macro_rules! payload_table {
             }
 
             $($crate::payload::codec::payload_table!(@get $kind $(#[$doc])* $name $CONST $type);)*
+            $($(
+                $crate::payload::codec::payload_table!(
+                    @get_unit [$($variant)?] $unit_doc $unit $CONST self.$name()
+                );
+            )?)*
         }
 
         impl<T: AsRef<[u8]> + AsMut<[u8]>> $View<T> {
@@ -557,6 +605,14 @@ macro_rules! payload_table {
                 }
                 Ok(())
             }
+            $($(
+                $crate::payload::codec::payload_table!(
+                    @get_unit [$($variant)?] $unit_doc $unit $CONST self.$name
+                );
+                $crate::payload::codec::payload_table!(
+                    @set_unit [$($variant)?] $name $unit $set_unit $CONST
+                );
+            )?)*
         }
 
         impl $crate::payload::codec::Table for $Repr {
@@ -605,6 +661,40 @@ macro_rules! payload_table {
         $(#[$doc])*
         pub fn $name(&self) -> &[u8] {
             $crate::wire::bytes(self.buffer.as_ref(), field::$CONST)
+        }
+    };
+
+    (@get_unit [] $doc:literal $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        #[doc = $doc]
+        pub fn $unit(&$self) -> f64 {
+            info::$CONST.scaled(f64::from($self.$($raw)+), None)
+        }
+    };
+    (@get_unit [$variant:ident] $doc:literal $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        #[doc = $doc]
+        pub fn $unit(&$self, $variant: $crate::variant::Variant) -> f64 {
+            info::$CONST.scaled(f64::from($self.$($raw)+), Some($variant))
+        }
+    };
+
+    (@set_unit [] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
+        #[doc = concat!("[`Self::", stringify!($unit), "`]), rounded half away from zero. Error:")]
+        /// `out_of_range` naming the field.
+        pub fn $set_unit(&mut self, value: f64) -> $crate::error::Result<()> {
+            info::$CONST.set_scaled(&mut self.$name, value, None)
+        }
+    };
+    (@set_unit [$variant:ident] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
+        #[doc = concat!("[`Self::", stringify!($unit), "`]) for the device `variant`, rounded half")]
+        /// away from zero. Error: `out_of_range` naming the field.
+        pub fn $set_unit(
+            &mut self,
+            $variant: $crate::variant::Variant,
+            value: f64,
+        ) -> $crate::error::Result<()> {
+            info::$CONST.set_scaled(&mut self.$name, value, Some($variant))
         }
     };
 
