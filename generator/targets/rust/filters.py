@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 from generator import naming
@@ -220,20 +221,6 @@ def usw_type(spec: Spec) -> str:
     return encoding_type(spec, "usw")
 
 
-def scale_expr(field: Field, raw: str) -> str:
-    """The engineering value of `raw` (a Rust f64 expression) in the order raw x multiplier / divisor."""
-    if field.scale is None:
-        raise ValueError(f"field {field.name} has no scale")
-    text = raw
-    if field.scale.multiplier != 1:
-        text += f" * {f64_literal(field.scale.multiplier)}"
-    if field.scale.divisor_parameter is not None:
-        text += f" / f64::from(variant.{ident(field.scale.divisor_parameter)}())"
-    elif field.scale.divisor not in (None, 1):
-        text += f" / {f64_literal(field.scale.divisor)}"
-    return text
-
-
 def _number(value: float | str | None) -> float:
     if isinstance(value, str):
         raise ValueError(f"a numeric field has the default {value!r}")
@@ -320,23 +307,34 @@ def decoded_setter(field: Field) -> dict[str, Any] | None:
     return {"doc": text, "parameter": parameter, "type": rust, "fallible": fallible}
 
 
+def same_field(spec: Spec, field: Field) -> Payload | None:
+    """The first table that holds the same field (name, position, type, range, scale, unit,
+    encoding and text all equal), when that is not the field's own: its description is shared."""
+    key = replace(field, path=(), erratum=None)
+    for payload in spec.payloads:
+        if any(replace(f, path=(), erratum=None) == key for f in payload.fields):
+            return None if field in payload.fields else payload
+    return None
+
+
 def has_extras(payload: Payload) -> bool:
     """True if a table has accessors beyond its rows: text or decoded ones."""
     return any(f.kind == "char" or decoded(f) is not None for f in payload.fields)
 
 
-def payload_uses(payload: Payload) -> list[str]:
+def payload_uses(spec: Spec, payload: Payload) -> list[str]:
     """The `use` paths a table file needs."""
     fields = payload.fields
-    names = {"FieldInfo", "FieldKind"}
-    names |= {"Value"} if any(default_value(f) or f.kind == "char" for f in fields) else set()
-    names |= {"Scale"} if any(f.scale for f in fields) else set()
-    names |= {"Unit"} if any(f.unit for f in fields) else set()
-    names |= {"Encoding"} if any(f.encoding for f in fields) else set()
+    own = [f for f in fields if same_field(spec, f) is None]  # the descriptions written out here
+    names = {"FieldInfo"} | ({"FieldKind"} if own else set())
+    names |= {"Value"} if any(default_value(f) for f in own) or any(f.kind == "char" for f in fields) else set()
+    names |= {"Scale"} if any(f.scale for f in own) else set()
+    names |= {"Unit"} if any(f.unit for f in own) else set()
+    names |= {"Encoding"} if any(f.encoding for f in own) else set()
     uses = ["crate::payload::codec::payload_table", "crate::payload::{" + ", ".join(sorted(names)) + "}"]
     if any(f.kind == "char" or (decoded_setter(f) or {}).get("fallible") for f in fields):
         uses.append("crate::error::Result")
-    if payload.variant_dependent:
+    if any(f.scale is not None and f.scale.divisor_parameter for f in own):
         uses.append("crate::variant::VariantParameter")
     for field in fields:
         found = decoded(field)
@@ -372,17 +370,17 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "nmea_type": nmea_type,
     "power_of_ten": power_of_ten,
     "first_with": first_with,
-    "scale_expr": scale_expr,
     "default_literal": default_literal,
     "default_value": default_value,
     "derivable_default": derivable_default,
     "decoded": decoded,
     "decoded_setter": decoded_setter,
     "has_extras": has_extras,
-    "payload_uses": payload_uses,
 }
 
 GLOBALS: dict[str, Any] = {
+    "same_field": same_field,
+    "payload_uses": payload_uses,
     "ack_field": ack_field,
     "encodings_used": encodings_used,
     "max_fields": max_fields,

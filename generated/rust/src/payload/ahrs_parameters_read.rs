@@ -80,46 +80,16 @@ pub mod info {
     };
 
     /// Latitude, `f32`, degrees.
-    pub const LATITUDE: FieldInfo = FieldInfo {
-        icd_name: "Latitude",
-        min: -90.0,
-        max: 90.0,
-        unit: Some(Unit::Deg),
-        doc: "Latitude.",
-        ..FieldInfo::new("latitude", field::LATITUDE, FieldKind::Float)
-    };
+    pub const LATITUDE: FieldInfo = crate::payload::ahrs_parameters_load::info::LATITUDE;
 
     /// Longitude, `f32`, degrees.
-    pub const LONGITUDE: FieldInfo = FieldInfo {
-        icd_name: "Longitude",
-        min: -180.0,
-        max: 180.0,
-        unit: Some(Unit::Deg),
-        doc: "Longitude.",
-        ..FieldInfo::new("longitude", field::LONGITUDE, FieldKind::Float)
-    };
+    pub const LONGITUDE: FieldInfo = crate::payload::ahrs_parameters_load::info::LONGITUDE;
 
     /// Altitude, `f32`, metres.
-    pub const ALTITUDE: FieldInfo = FieldInfo {
-        icd_name: "Altitude",
-        min: -20000.0,
-        max: 100000.0,
-        unit: Some(Unit::M),
-        doc: "Altitude.",
-        ..FieldInfo::new("altitude", field::ALTITUDE, FieldKind::Float)
-    };
+    pub const ALTITUDE: FieldInfo = crate::payload::ahrs_parameters_load::info::ALTITUDE;
 
     /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`.
-    pub const DATE: FieldInfo = FieldInfo {
-        icd_name: "Date (Year, Month, Day)",
-        min: 1900.002685546875,
-        max: 2200.001708984375,
-        default: Value::Float(1900.002685546875),
-        unit: Some(Unit::Year),
-        encoding: Some(Encoding::Date),
-        doc: "Date as Year + (Month - 1)/12 + Day/365.",
-        ..FieldInfo::new("date", field::DATE, FieldKind::Float)
-    };
+    pub const DATE: FieldInfo = crate::payload::ahrs_parameters_load::info::DATE;
 
     /// Alignment angle A1, `f32`, degrees.
     pub const ALIGNMENT_ANGLE_A1: FieldInfo = FieldInfo {

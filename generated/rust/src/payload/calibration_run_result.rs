@@ -119,12 +119,7 @@ pub mod info {
     };
 
     /// USW, `u16`.
-    pub const USW: FieldInfo = FieldInfo {
-        icd_name: "USW",
-        encoding: Some(Encoding::Usw),
-        doc: "Unit Status Word (section 6.5).",
-        ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
-    };
+    pub const USW: FieldInfo = crate::payload::full_output::info::USW;
 }
 
 /// Every field, in wire order.

@@ -8,7 +8,7 @@
 use crate::encoding::CalibrationStatusType;
 use crate::encoding::CalibrationSuccess;
 use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Unit, Value};
+use crate::payload::{Encoding, FieldInfo, FieldKind, Value};
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 52;
@@ -63,11 +63,7 @@ pub mod info {
     };
 
     /// Number of used calibration runs, `u8`.
-    pub const RUNS_USED: FieldInfo = FieldInfo {
-        icd_name: "Number of used calibration runs",
-        doc: "Number of calibration runs used.",
-        ..FieldInfo::new("runs_used", field::RUNS_USED, FieldKind::Unsigned)
-    };
+    pub const RUNS_USED: FieldInfo = crate::payload::calibration_result::info::RUNS_USED;
 
     /// Reserved, `reserved[1]`.
     pub const RESERVED: FieldInfo = FieldInfo {
@@ -85,100 +81,40 @@ pub mod info {
     };
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_11: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 1 column 1.",
-        ..FieldInfo::new("tm_c_11", field::TM_C_11, FieldKind::Float)
-    };
+    pub const TM_C_11: FieldInfo = crate::payload::calibration_result::info::TM_C_11;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_12: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 1 column 2.",
-        ..FieldInfo::new("tm_c_12", field::TM_C_12, FieldKind::Float)
-    };
+    pub const TM_C_12: FieldInfo = crate::payload::calibration_result::info::TM_C_12;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_13: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 1 column 3.",
-        ..FieldInfo::new("tm_c_13", field::TM_C_13, FieldKind::Float)
-    };
+    pub const TM_C_13: FieldInfo = crate::payload::calibration_result::info::TM_C_13;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_21: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 2 column 1.",
-        ..FieldInfo::new("tm_c_21", field::TM_C_21, FieldKind::Float)
-    };
+    pub const TM_C_21: FieldInfo = crate::payload::calibration_result::info::TM_C_21;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_22: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 2 column 2.",
-        ..FieldInfo::new("tm_c_22", field::TM_C_22, FieldKind::Float)
-    };
+    pub const TM_C_22: FieldInfo = crate::payload::calibration_result::info::TM_C_22;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_23: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 2 column 3.",
-        ..FieldInfo::new("tm_c_23", field::TM_C_23, FieldKind::Float)
-    };
+    pub const TM_C_23: FieldInfo = crate::payload::calibration_result::info::TM_C_23;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_31: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 3 column 1.",
-        ..FieldInfo::new("tm_c_31", field::TM_C_31, FieldKind::Float)
-    };
+    pub const TM_C_31: FieldInfo = crate::payload::calibration_result::info::TM_C_31;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_32: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 3 column 2.",
-        ..FieldInfo::new("tm_c_32", field::TM_C_32, FieldKind::Float)
-    };
+    pub const TM_C_32: FieldInfo = crate::payload::calibration_result::info::TM_C_32;
 
     /// Matrix for soft iron correction, `f32`, dimensionless.
-    pub const TM_C_33: FieldInfo = FieldInfo {
-        icd_name: "Matrix for soft iron correction",
-        unit: Some(Unit::One),
-        doc: "Soft-iron matrix Tm_c row 3 column 3.",
-        ..FieldInfo::new("tm_c_33", field::TM_C_33, FieldKind::Float)
-    };
+    pub const TM_C_33: FieldInfo = crate::payload::calibration_result::info::TM_C_33;
 
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
-    pub const HM_0_X: FieldInfo = FieldInfo {
-        icd_name: "Matrix for hard iron correction",
-        unit: Some(Unit::Adc),
-        doc: "Hard-iron vector Hm_0 component 1.",
-        ..FieldInfo::new("hm_0_x", field::HM_0_X, FieldKind::Float)
-    };
+    pub const HM_0_X: FieldInfo = crate::payload::calibration_result::info::HM_0_X;
 
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
-    pub const HM_0_Y: FieldInfo = FieldInfo {
-        icd_name: "Matrix for hard iron correction",
-        unit: Some(Unit::Adc),
-        doc: "Hard-iron vector Hm_0 component 2.",
-        ..FieldInfo::new("hm_0_y", field::HM_0_Y, FieldKind::Float)
-    };
+    pub const HM_0_Y: FieldInfo = crate::payload::calibration_result::info::HM_0_Y;
 
     /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD).
-    pub const HM_0_Z: FieldInfo = FieldInfo {
-        icd_name: "Matrix for hard iron correction",
-        unit: Some(Unit::Adc),
-        doc: "Hard-iron vector Hm_0 component 3.",
-        ..FieldInfo::new("hm_0_z", field::HM_0_Z, FieldKind::Float)
-    };
+    pub const HM_0_Z: FieldInfo = crate::payload::calibration_result::info::HM_0_Z;
 }
 
 /// Every field, in wire order.

@@ -6,7 +6,7 @@
 //! Output block after AHRScont3 / AHRSreq3 (the default format, section 6.2).
 
 use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
+use crate::payload::{FieldInfo, FieldKind, Scale, Unit};
 use crate::status::StatusWord;
 use crate::variant::VariantParameter;
 
@@ -56,37 +56,13 @@ pub mod info {
     use super::*;
 
     /// Heading, `u16`, raw x 1 / 100 = degrees.
-    pub const HEADING: FieldInfo = FieldInfo {
-        icd_name: "Heading",
-        min: 0.0,
-        max: 35999.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Heading angle.",
-        ..FieldInfo::new("heading", field::HEADING, FieldKind::Unsigned)
-    };
+    pub const HEADING: FieldInfo = crate::payload::full_output::info::HEADING;
 
     /// Pitch, `s16`, raw x 1 / 100 = degrees.
-    pub const PITCH: FieldInfo = FieldInfo {
-        icd_name: "Pitch",
-        min: -9000.0,
-        max: 9000.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Pitch angle.",
-        ..FieldInfo::new("pitch", field::PITCH, FieldKind::Signed)
-    };
+    pub const PITCH: FieldInfo = crate::payload::full_output::info::PITCH;
 
     /// Roll, `s16`, raw x 1 / 100 = degrees.
-    pub const ROLL: FieldInfo = FieldInfo {
-        icd_name: "Roll",
-        min: -18000.0,
-        max: 18000.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Roll angle.",
-        ..FieldInfo::new("roll", field::ROLL, FieldKind::Signed)
-    };
+    pub const ROLL: FieldInfo = crate::payload::full_output::info::ROLL;
 
     /// GyroX, `s16`, raw x 1 / KG = degrees per second.
     pub const GYRO_X: FieldInfo = FieldInfo {
@@ -170,37 +146,16 @@ pub mod info {
     };
 
     /// Reserved, `reserved[4]`.
-    pub const RESERVED: FieldInfo = FieldInfo {
-        icd_name: "Reserved",
-        default: Value::Bytes(&[0; 4]),
-        ..FieldInfo::new("reserved", field::RESERVED, FieldKind::Reserved)
-    };
+    pub const RESERVED: FieldInfo = crate::payload::full_output::info::RESERVED;
 
     /// USW, `u16`.
-    pub const USW: FieldInfo = FieldInfo {
-        icd_name: "USW",
-        encoding: Some(Encoding::Usw),
-        doc: "Unit Status Word (section 6.5).",
-        ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
-    };
+    pub const USW: FieldInfo = crate::payload::full_output::info::USW;
 
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
-    pub const VDD: FieldInfo = FieldInfo {
-        icd_name: "Vdd",
-        scale: Some(Scale::fixed(1, 1000)),
-        unit: Some(Unit::V),
-        doc: "AHRS input voltage.",
-        ..FieldInfo::new("vdd", field::VDD, FieldKind::Unsigned)
-    };
+    pub const VDD: FieldInfo = crate::payload::quaternion::info::VDD;
 
     /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius.
-    pub const UTERMO: FieldInfo = FieldInfo {
-        icd_name: "Utermo",
-        scale: Some(Scale::fixed(1, 10)),
-        unit: Some(Unit::Degc),
-        doc: "Average temperature of the 3 accelerometers.",
-        ..FieldInfo::new("utermo", field::UTERMO, FieldKind::Signed)
-    };
+    pub const UTERMO: FieldInfo = crate::payload::quaternion::info::UTERMO;
 }
 
 /// Every field, in wire order.

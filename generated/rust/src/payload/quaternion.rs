@@ -6,7 +6,7 @@
 //! Output block after AHRScont2 / AHRSreq2.
 
 use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
+use crate::payload::{FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
 
 /// Size of the payload (bytes).
@@ -45,37 +45,13 @@ pub mod info {
     use super::*;
 
     /// Heading, `u16`, raw x 1 / 100 = degrees.
-    pub const HEADING: FieldInfo = FieldInfo {
-        icd_name: "Heading",
-        min: 0.0,
-        max: 35999.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Heading angle.",
-        ..FieldInfo::new("heading", field::HEADING, FieldKind::Unsigned)
-    };
+    pub const HEADING: FieldInfo = crate::payload::full_output::info::HEADING;
 
     /// Pitch, `s16`, raw x 1 / 100 = degrees.
-    pub const PITCH: FieldInfo = FieldInfo {
-        icd_name: "Pitch",
-        min: -9000.0,
-        max: 9000.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Pitch angle.",
-        ..FieldInfo::new("pitch", field::PITCH, FieldKind::Signed)
-    };
+    pub const PITCH: FieldInfo = crate::payload::full_output::info::PITCH;
 
     /// Roll, `s16`, raw x 1 / 100 = degrees.
-    pub const ROLL: FieldInfo = FieldInfo {
-        icd_name: "Roll",
-        min: -18000.0,
-        max: 18000.0,
-        scale: Some(Scale::fixed(1, 100)),
-        unit: Some(Unit::Deg),
-        doc: "Roll angle.",
-        ..FieldInfo::new("roll", field::ROLL, FieldKind::Signed)
-    };
+    pub const ROLL: FieldInfo = crate::payload::full_output::info::ROLL;
 
     /// Lk0, `s16`, raw x 1 / 10000 = dimensionless.
     pub const LK0: FieldInfo = FieldInfo {
@@ -129,12 +105,7 @@ pub mod info {
     };
 
     /// USW, `u16`.
-    pub const USW: FieldInfo = FieldInfo {
-        icd_name: "USW",
-        encoding: Some(Encoding::Usw),
-        doc: "Unit Status Word (section 6.5).",
-        ..FieldInfo::new("usw", field::USW, FieldKind::Unsigned)
-    };
+    pub const USW: FieldInfo = crate::payload::full_output::info::USW;
 
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC.
     pub const VDD: FieldInfo = FieldInfo {
