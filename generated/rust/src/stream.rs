@@ -41,7 +41,7 @@ pub const MAX_MESSAGE_SIZE: usize = crate::MAX_MESSAGE_SIZE;
 /// The byte a frame starts with.
 const FRAME_START: u8 = HEADER[0];
 /// The byte a sentence starts with.
-const SENTENCE_START: u8 = b'$';
+const SENTENCE_START: u8 = PREFIX[0];
 
 /// An accepted message, borrowed from the input or from the decoder.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

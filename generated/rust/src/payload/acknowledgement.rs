@@ -35,18 +35,23 @@ pub mod info {
 pub static FIELDS: [FieldInfo; 1] = [info::CHECKSUM];
 
 payload_table! {
-    /// 6.3.1 (Table 6.2 with a one-word payload), Acknowledgement: a zero-copy view over a payload.
+    /// 6.3.1 (Table 6.2 with a one-word payload), Acknowledgement: a zero-copy view over a
+    /// payload.
     ///
-    /// [`Acknowledgement::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`Acknowledgement::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`Acknowledgement::new_checked`\] checks the size once; the accessors never panic,
+    /// even on a view made by \[`Acknowledgement::new_unchecked`\] over a short buffer
+    /// (missing bytes read as zero).
     view Acknowledgement;
-    /// 6.3.1 (Table 6.2 with a one-word payload), Acknowledgement: the payload as a value, with raw field values.
+    /// 6.3.1 (Table 6.2 with a one-word payload), Acknowledgement: the payload as a value,
+    /// with raw field values.
     ///
-    /// [`AcknowledgementRepr::parse`] and [`AcknowledgementRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`AcknowledgementRepr::parse`\] and \[`AcknowledgementRepr::build`\] are exact
+    /// inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the same
+    /// bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr AcknowledgementRepr;
     count 1;
-    /// Check sum, `u16`: Checksum of the acknowledged message, message type through payload.
+    /// Check sum, `u16`: Checksum of the acknowledged message, message type through
+    /// payload.
     0 number checksum set_checksum CHECKSUM: u16;
 }

@@ -178,21 +178,26 @@ pub static FIELDS: [FieldInfo; 11] = [
 payload_table! {
     /// Table 6.9, Parameters to load: a zero-copy view over a payload.
     ///
-    /// [`AhrsParametersLoad::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`AhrsParametersLoad::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`AhrsParametersLoad::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`AhrsParametersLoad::new_unchecked`\] over a short
+    /// buffer (missing bytes read as zero).
     view AhrsParametersLoad;
     /// Table 6.9, Parameters to load: the payload as a value, with raw field values.
     ///
-    /// [`AhrsParametersLoadRepr::parse`] and [`AhrsParametersLoadRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`AhrsParametersLoadRepr::parse`\] and \[`AhrsParametersLoadRepr::build`\] are
+    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
+    /// same bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr AhrsParametersLoadRepr;
     count 11;
-    /// Update rate, `u16`, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz).
+    /// Update rate, `u16`, hertz: Output data rate, 1 to 100 Hz (the AHRS limits NMEA
+    /// output to 50 Hz).
     0 number update_rate set_update_rate UPDATE_RATE: u16;
-    /// Initial alignment time, `u16`, seconds: Initial alignment duration; default 30 s, change only in agreement with Inertial Labs.
+    /// Initial alignment time, `u16`, seconds: Initial alignment duration; default 30 s,
+    /// change only in agreement with Inertial Labs.
     1 number alignment_time set_alignment_time ALIGNMENT_TIME: u16;
-    /// Magnetic declination, Mdec, `f32`, degrees: Magnetic declination; a value above 360 asks the AHRS to compute it from position and date.
+    /// Magnetic declination, Mdec, `f32`, degrees: Magnetic declination; a value above 360
+    /// asks the AHRS to compute it from position and date.
     2 number declination set_declination DECLINATION: f32;
     /// Latitude, `f32`, degrees: Latitude.
     3 number latitude set_latitude LATITUDE: f32;
@@ -200,13 +205,17 @@ payload_table! {
     4 number longitude set_longitude LONGITUDE: f32;
     /// Altitude, `f32`, metres: Altitude.
     5 number altitude set_altitude ALTITUDE: f32;
-    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year +
+    /// (Month - 1)/12 + Day/365.
     6 number date set_date DATE: f32;
-    /// Alignment angle A1, `f32`, degrees: Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
+    /// Alignment angle A1, `f32`, degrees: Mounting angle 1: AHRS Y axis relative to the
+    /// object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B).
     7 number alignment_angle_a1 set_alignment_angle_a1 ALIGNMENT_ANGLE_A1: f32;
-    /// Alignment angle A2, `f32`, degrees: Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B).
+    /// Alignment angle A2, `f32`, degrees: Mounting angle 2: inclination of the AHRS Y axis
+    /// to the object's horizontal plane, up positive (Appendix B).
     8 number alignment_angle_a2 set_alignment_angle_a2 ALIGNMENT_ANGLE_A2: f32;
-    /// Alignment angle A3, `f32`, degrees: Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B).
+    /// Alignment angle A3, `f32`, degrees: Mounting angle 3: inclination of the AHRS X axis
+    /// about its Y axis, X down positive (Appendix B).
     9 number alignment_angle_a3 set_alignment_angle_a3 ALIGNMENT_ANGLE_A3: f32;
     /// Reserved, `reserved\[14\]`: Should be all zeros.
     10 reserved reserved set_reserved RESERVED: [u8; 14];

@@ -167,13 +167,15 @@ pub static FIELDS: [FieldInfo; 12] = [
 payload_table! {
     /// Table 6.10, Parameters read: a zero-copy view over a payload.
     ///
-    /// [`AhrsParametersRead::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`AhrsParametersRead::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`AhrsParametersRead::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`AhrsParametersRead::new_unchecked`\] over a short
+    /// buffer (missing bytes read as zero).
     view AhrsParametersRead;
     /// Table 6.10, Parameters read: the payload as a value, with raw field values.
     ///
-    /// [`AhrsParametersReadRepr::parse`] and [`AhrsParametersReadRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`AhrsParametersReadRepr::parse`\] and \[`AhrsParametersReadRepr::build`\] are
+    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
+    /// same bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr AhrsParametersReadRepr;
     count 12;
@@ -181,7 +183,8 @@ payload_table! {
     0 number update_rate set_update_rate UPDATE_RATE: u16;
     /// Initial alignment time, `u16`, seconds: Initial alignment duration.
     1 number alignment_time set_alignment_time ALIGNMENT_TIME: u16;
-    /// Magnetic declination, `f32`, degrees: Magnetic declination; a value above 360 means the AHRS computes it.
+    /// Magnetic declination, `f32`, degrees: Magnetic declination; a value above 360 means
+    /// the AHRS computes it.
     2 number declination set_declination DECLINATION: f32;
     /// Latitude, `f32`, degrees: Latitude.
     3 number latitude set_latitude LATITUDE: f32;
@@ -189,7 +192,8 @@ payload_table! {
     4 number longitude set_longitude LONGITUDE: f32;
     /// Altitude, `f32`, metres: Altitude.
     5 number altitude set_altitude ALTITUDE: f32;
-    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year +
+    /// (Month - 1)/12 + Day/365.
     6 number date set_date DATE: f32;
     /// Alignment angle A1, `f32`, degrees: Mounting angle 1 (Appendix B).
     7 number alignment_angle_a1 set_alignment_angle_a1 ALIGNMENT_ANGLE_A1: f32;

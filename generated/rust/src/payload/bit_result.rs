@@ -50,19 +50,22 @@ pub static FIELDS: [FieldInfo; 2] = [info::UTERMO100, info::USW];
 payload_table! {
     /// Table 6.12, Built-in test answer: a zero-copy view over a payload.
     ///
-    /// [`BitResult::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`BitResult::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`BitResult::new_checked`\] checks the size once; the accessors never panic, even
+    /// on a view made by \[`BitResult::new_unchecked`\] over a short buffer (missing bytes
+    /// read as zero).
     view BitResult;
     /// Table 6.12, Built-in test answer: the payload as a value, with raw field values.
     ///
-    /// [`BitResultRepr::parse`] and [`BitResultRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`BitResultRepr::parse`\] and \[`BitResultRepr::build`\] are exact inverses: every
+    /// byte string of \[`SIZE`\] bytes parses, and builds back to the same bytes when its
+    /// values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr BitResultRepr;
     count 2;
     /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
     0 number utermo100 set_utermo100 UTERMO100: i16,
-        in utermo100_degc set_utermo100_degc "Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.";
+        /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
+        in utermo100_degc set_utermo100_degc;
     /// USW, `u16`: Unit Status Word (section 6.5).
     1 number usw set_usw USW: u16;
 }

@@ -121,19 +121,22 @@ pub static FIELDS: [FieldInfo; 6] = [
 payload_table! {
     /// Table 6.13, Calibration parameters: a zero-copy view over a payload.
     ///
-    /// [`CalibrationParameters::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`CalibrationParameters::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`CalibrationParameters::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`CalibrationParameters::new_unchecked`\] over a
+    /// short buffer (missing bytes read as zero).
     view CalibrationParameters;
     /// Table 6.13, Calibration parameters: the payload as a value, with raw field values.
     ///
-    /// [`CalibrationParametersRepr::parse`] and [`CalibrationParametersRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`CalibrationParametersRepr::parse`\] and \[`CalibrationParametersRepr::build`\]
+    /// are exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to
+    /// the same bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr CalibrationParametersRepr;
     count 6;
     /// Reserved, `f32`, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
     0 number reference_azimuth set_reference_azimuth REFERENCE_AZIMUTH: f32;
-    /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one run.
+    /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one
+    /// run.
     1 number accumulation_time set_accumulation_time ACCUMULATION_TIME: u16;
     /// Latitude, `f32`, degrees: Latitude.
     2 number latitude set_latitude LATITUDE: f32;
@@ -141,7 +144,8 @@ payload_table! {
     3 number longitude set_longitude LONGITUDE: f32;
     /// Altitude, `f32`, metres: Altitude.
     4 number altitude set_altitude ALTITUDE: f32;
-    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year + (Month - 1)/12 + Day/365.
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year +
+    /// (Month - 1)/12 + Day/365.
     5 number date set_date DATE: f32;
 }
 

@@ -214,13 +214,15 @@ pub static FIELDS: [FieldInfo; 16] = [
 payload_table! {
     /// Table 6.14, Calibration result: a zero-copy view over a payload.
     ///
-    /// [`CalibrationResult::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`CalibrationResult::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`CalibrationResult::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`CalibrationResult::new_unchecked`\] over a short
+    /// buffer (missing bytes read as zero).
     view CalibrationResult;
     /// Table 6.14, Calibration result: the payload as a value, with raw field values.
     ///
-    /// [`CalibrationResultRepr::parse`] and [`CalibrationResultRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`CalibrationResultRepr::parse`\] and \[`CalibrationResultRepr::build`\] are exact
+    /// inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the same
+    /// bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr CalibrationResultRepr;
     count 16;
@@ -228,33 +230,47 @@ payload_table! {
     0 number calibration_type set_calibration_type CALIBRATION_TYPE: u8;
     /// Number of used calibration runs, `u8`: Number of calibration runs used.
     1 number runs_used set_runs_used RUNS_USED: u8;
-    /// Percent of used data points, `u8`, percent: Percent of data points used (2D and 3D calibrations only).
+    /// Percent of used data points, `u8`, percent: Percent of data points used (2D and 3D
+    /// calibrations only).
     2 number data_used set_data_used DATA_USED: u8;
-    /// Calibration success, `u8`: 0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted 3-sigma heading
+    /// error in deg*10; 255: successful without an estimate.
     3 number success set_success SUCCESS: u8;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 1.
     4 number tm_c_11 set_tm_c_11 TM_C_11: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 2.
     5 number tm_c_12 set_tm_c_12 TM_C_12: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 3.
     6 number tm_c_13 set_tm_c_13 TM_C_13: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 1.
     7 number tm_c_21 set_tm_c_21 TM_C_21: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 2.
     8 number tm_c_22 set_tm_c_22 TM_C_22: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 3.
     9 number tm_c_23 set_tm_c_23 TM_C_23: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 1.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 1.
     10 number tm_c_31 set_tm_c_31 TM_C_31: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 2.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 2.
     11 number tm_c_32 set_tm_c_32 TM_C_32: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3 column 3.
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 3.
     12 number tm_c_33 set_tm_c_33 TM_C_33: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 1.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 1.
     13 number hm_0_x set_hm_0_x HM_0_X: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 2.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 2.
     14 number hm_0_y set_hm_0_y HM_0_Y: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the ICD): Hard-iron vector Hm_0 component 3.
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 3.
     15 number hm_0_z set_hm_0_z HM_0_Z: f32;
 }
 

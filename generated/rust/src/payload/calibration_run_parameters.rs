@@ -38,13 +38,17 @@ pub static FIELDS: [FieldInfo; 1] = [info::RESERVED];
 payload_table! {
     /// Table 6.16, Calibration run parameters: a zero-copy view over a payload.
     ///
-    /// [`CalibrationRunParameters::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`CalibrationRunParameters::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`CalibrationRunParameters::new_checked`\] checks the size once; the accessors
+    /// never panic, even on a view made by \[`CalibrationRunParameters::new_unchecked`\]
+    /// over a short buffer (missing bytes read as zero).
     view CalibrationRunParameters;
-    /// Table 6.16, Calibration run parameters: the payload as a value, with raw field values.
+    /// Table 6.16, Calibration run parameters: the payload as a value, with raw field
+    /// values.
     ///
-    /// [`CalibrationRunParametersRepr::parse`] and [`CalibrationRunParametersRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`CalibrationRunParametersRepr::parse`\] and
+    /// \[`CalibrationRunParametersRepr::build`\] are exact inverses: every byte string of
+    /// \[`SIZE`\] bytes parses, and builds back to the same bytes when its values are in
+    /// range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr CalibrationRunParametersRepr;
     count 1;

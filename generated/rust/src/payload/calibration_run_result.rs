@@ -138,13 +138,16 @@ pub static FIELDS: [FieldInfo; 9] = [
 payload_table! {
     /// Table 6.15, 2D-2T calibration run result: a zero-copy view over a payload.
     ///
-    /// [`CalibrationRunResult::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`CalibrationRunResult::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`CalibrationRunResult::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`CalibrationRunResult::new_unchecked`\] over a short
+    /// buffer (missing bytes read as zero).
     view CalibrationRunResult;
-    /// Table 6.15, 2D-2T calibration run result: the payload as a value, with raw field values.
+    /// Table 6.15, 2D-2T calibration run result: the payload as a value, with raw field
+    /// values.
     ///
-    /// [`CalibrationRunResultRepr::parse`] and [`CalibrationRunResultRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`CalibrationRunResultRepr::parse`\] and \[`CalibrationRunResultRepr::build`\] are
+    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
+    /// same bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr CalibrationRunResultRepr;
     count 9;
@@ -154,7 +157,8 @@ payload_table! {
     1 number run set_run RUN: u8;
     /// Percent of used data points, `u8`, percent: Percent of data points used.
     2 number data_used set_data_used DATA_USED: u8;
-    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate.
+    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted
+    /// heading error in deg*10; 255: successful without an estimate.
     3 number success set_success SUCCESS: u8;
     /// Reserved, `reserved\[4\]`:
     4 reserved reserved_1 set_reserved_1 RESERVED_1: [u8; 4];

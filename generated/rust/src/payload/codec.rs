@@ -464,9 +464,9 @@ impl AnyPayload {
 /// Expanded inside a table's module, next to its `SIZE`, `field`, `info` and `FIELDS`. Each row
 /// is `INDEX KIND name set_name CONST: TYPE;` with the field's doc comment in front; `KIND` is
 /// `number` (an integer or float32), `text` (Latin-1 padded with NULs) or `reserved` (bytes
-/// kept verbatim). A scaled field's row adds `, in name_unit set_name_unit "doc"` (and `by
-/// variant` when the divisor is a parameter of the device variant): engineering getters on the
-/// view and the value, and a setter on the value.
+/// kept verbatim). A scaled field's row adds `, in name_unit set_name_unit` after the getters'
+/// doc comment (and `by variant` when the divisor is a parameter of the device variant):
+/// engineering getters on the view and the value, and a setter on the value.
 macro_rules! payload_table {
     (
         $(#[$view_doc:meta])*
@@ -477,7 +477,7 @@ macro_rules! payload_table {
         $(
             $(#[$doc:meta])*
             $index:literal $kind:ident $name:ident $set:ident $CONST:ident: $type:ty
-            $(, in $unit:ident $set_unit:ident $unit_doc:literal $(by $variant:ident)?)?;
+            $(, $(#[$unit_doc:meta])* in $unit:ident $set_unit:ident $(by $variant:ident)?)?;
         )*
     ) => {
         $(#[$view_doc])*
@@ -512,7 +512,7 @@ macro_rules! payload_table {
             $($crate::payload::codec::payload_table!(@get $kind $(#[$doc])* $name $CONST $type);)*
             $($(
                 $crate::payload::codec::payload_table!(
-                    @get_unit [$($variant)?] $unit_doc $unit $CONST self.$name()
+                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name()
                 );
             )?)*
         }
@@ -609,7 +609,7 @@ macro_rules! payload_table {
             }
             $($(
                 $crate::payload::codec::payload_table!(
-                    @get_unit [$($variant)?] $unit_doc $unit $CONST self.$name
+                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name
                 );
                 $crate::payload::codec::payload_table!(
                     @set_unit [$($variant)?] $name $unit $set_unit $CONST
@@ -666,14 +666,14 @@ macro_rules! payload_table {
         }
     };
 
-    (@get_unit [] $doc:literal $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
-        #[doc = $doc]
+    (@get_unit [] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        $(#[$doc])*
         pub fn $unit(&$self) -> f64 {
             info::$CONST.scaled(f64::from($self.$($raw)+), None)
         }
     };
-    (@get_unit [$variant:ident] $doc:literal $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
-        #[doc = $doc]
+    (@get_unit [$variant:ident] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        $(#[$doc])*
         pub fn $unit(&$self, $variant: $crate::variant::Variant) -> f64 {
             info::$CONST.scaled(f64::from($self.$($raw)+), Some($variant))
         }

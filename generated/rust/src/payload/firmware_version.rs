@@ -38,13 +38,15 @@ pub static FIELDS: [FieldInfo; 1] = [info::VERSION];
 payload_table! {
     /// Table 6.11, Firmware version: a zero-copy view over a payload.
     ///
-    /// [`FirmwareVersion::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`FirmwareVersion::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`FirmwareVersion::new_checked`\] checks the size once; the accessors never panic,
+    /// even on a view made by \[`FirmwareVersion::new_unchecked`\] over a short buffer
+    /// (missing bytes read as zero).
     view FirmwareVersion;
     /// Table 6.11, Firmware version: the payload as a value, with raw field values.
     ///
-    /// [`FirmwareVersionRepr::parse`] and [`FirmwareVersionRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`FirmwareVersionRepr::parse`\] and \[`FirmwareVersionRepr::build`\] are exact
+    /// inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the same
+    /// bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq)]
     repr FirmwareVersionRepr;
     count 1;

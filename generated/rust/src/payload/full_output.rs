@@ -215,51 +215,72 @@ pub static FIELDS: [FieldInfo; 16] = [
 payload_table! {
     /// Table 6.4, Full Output Data: a zero-copy view over a payload.
     ///
-    /// [`FullOutput::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`FullOutput::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`FullOutput::new_checked`\] checks the size once; the accessors never panic, even
+    /// on a view made by \[`FullOutput::new_unchecked`\] over a short buffer (missing bytes
+    /// read as zero).
     view FullOutput;
     /// Table 6.4, Full Output Data: the payload as a value, with raw field values.
     ///
-    /// [`FullOutputRepr::parse`] and [`FullOutputRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`FullOutputRepr::parse`\] and \[`FullOutputRepr::build`\] are exact inverses:
+    /// every byte string of \[`SIZE`\] bytes parses, and builds back to the same bytes when
+    /// its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr FullOutputRepr;
     count 16;
     /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     0 number heading set_heading HEADING: u16,
-        in heading_deg set_heading_deg "Heading (degrees): Heading angle.";
+        /// Heading (degrees): Heading angle.
+        in heading_deg set_heading_deg;
     /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     1 number pitch set_pitch PITCH: i16,
-        in pitch_deg set_pitch_deg "Pitch (degrees): Pitch angle.";
+        /// Pitch (degrees): Pitch angle.
+        in pitch_deg set_pitch_deg;
     /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     2 number roll set_roll ROLL: i16,
-        in roll_deg set_roll_deg "Roll (degrees): Roll angle.";
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor data.
+        /// Roll (degrees): Roll angle.
+        in roll_deg set_roll_deg;
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor
+    /// data.
     3 number ugyro_x set_ugyro_x UGYRO_X: i16;
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor
+    /// data.
     4 number ugyro_y set_ugyro_y UGYRO_Y: i16;
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor data.
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor
+    /// data.
     5 number ugyro_z set_ugyro_z UGYRO_Z: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X
+    /// sensor data.
     6 number uacc_x set_uacc_x UACC_X: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y
+    /// sensor data.
     7 number uacc_y set_uacc_y UACC_Y: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z sensor data.
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z
+    /// sensor data.
     8 number uacc_z set_uacc_z UACC_Z: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X
+    /// sensor data.
     9 number umag_x set_umag_x UMAG_X: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y
+    /// sensor data.
     10 number umag_y set_umag_y UMAG_Y: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z sensor data.
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z
+    /// sensor data.
     11 number umag_z set_umag_z UMAG_Z: i16;
     /// Reserved, `reserved\[4\]`:
     12 reserved reserved set_reserved RESERVED: [u8; 4];
     /// USW, `u16`: Unit Status Word (section 6.5).
     13 number usw set_usw USW: u16;
-    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the
+    /// AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note
+    /// 2). The frame does not say which.
     14 number vdd set_vdd VDD: u16,
-        in vdd_v set_vdd_v "Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which.";
-    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which.
+        /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage
+        /// and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame
+        /// does not say which.
+        in vdd_v set_vdd_v;
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7
+    /// temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does
+    /// not say which.
     15 number utermo set_utermo UTERMO: i16;
 }
 

@@ -180,13 +180,15 @@ pub static FIELDS: [FieldInfo; 13] = [
 payload_table! {
     /// Table 6.8, Initial alignment data: a zero-copy view over a payload.
     ///
-    /// [`InitialAlignment::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`InitialAlignment::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`InitialAlignment::new_checked`\] checks the size once; the accessors never panic,
+    /// even on a view made by \[`InitialAlignment::new_unchecked`\] over a short buffer
+    /// (missing bytes read as zero).
     view InitialAlignment;
     /// Table 6.8, Initial alignment data: the payload as a value, with raw field values.
     ///
-    /// [`InitialAlignmentRepr::parse`] and [`InitialAlignmentRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`InitialAlignmentRepr::parse`\] and \[`InitialAlignmentRepr::build`\] are exact
+    /// inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the same
+    /// bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr InitialAlignmentRepr;
     count 13;
@@ -196,17 +198,23 @@ payload_table! {
     1 number gyro_bias_y set_gyro_bias_y GYRO_BIAS_Y: f32;
     /// Gyros bias, `f32`, ADC codes (no physical scale given by the ICD): Gyro Z bias.
     2 number gyro_bias_z set_gyro_bias_z GYRO_BIAS_Z: f32;
-    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along X.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// acceleration along X.
     3 number average_acc_x set_average_acc_x AVERAGE_ACC_X: f32;
-    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Y.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// acceleration along Y.
     4 number average_acc_y set_average_acc_y AVERAGE_ACC_Y: f32;
-    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average acceleration along Z.
+    /// Average acceleration, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// acceleration along Z.
     5 number average_acc_z set_average_acc_z AVERAGE_ACC_Z: f32;
-    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along X.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// magnetic field along X.
     6 number average_mag_x set_average_mag_x AVERAGE_MAG_X: f32;
-    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Y.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// magnetic field along Y.
     7 number average_mag_y set_average_mag_y AVERAGE_MAG_Y: f32;
-    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average magnetic field along Z.
+    /// Average magn. field, `f32`, ADC codes (no physical scale given by the ICD): Average
+    /// magnetic field along Z.
     8 number average_mag_z set_average_mag_z AVERAGE_MAG_Z: f32;
     /// Initial Heading, `f32`, degrees: Heading at the end of alignment.
     9 number initial_heading set_initial_heading INITIAL_HEADING: f32;

@@ -181,62 +181,86 @@ pub static FIELDS: [FieldInfo; 16] = [
 payload_table! {
     /// Table 6.6, Orientation + Sensor Outputs: a zero-copy view over a payload.
     ///
-    /// [`OrientationSensors::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`OrientationSensors::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`OrientationSensors::new_checked`\] checks the size once; the accessors never
+    /// panic, even on a view made by \[`OrientationSensors::new_unchecked`\] over a short
+    /// buffer (missing bytes read as zero).
     view OrientationSensors;
-    /// Table 6.6, Orientation + Sensor Outputs: the payload as a value, with raw field values.
+    /// Table 6.6, Orientation + Sensor Outputs: the payload as a value, with raw field
+    /// values.
     ///
-    /// [`OrientationSensorsRepr::parse`] and [`OrientationSensorsRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`OrientationSensorsRepr::parse`\] and \[`OrientationSensorsRepr::build`\] are
+    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
+    /// same bytes when its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr OrientationSensorsRepr;
     count 16;
     /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     0 number heading set_heading HEADING: u16,
-        in heading_deg set_heading_deg "Heading (degrees): Heading angle.";
+        /// Heading (degrees): Heading angle.
+        in heading_deg set_heading_deg;
     /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     1 number pitch set_pitch PITCH: i16,
-        in pitch_deg set_pitch_deg "Pitch (degrees): Pitch angle.";
+        /// Pitch (degrees): Pitch angle.
+        in pitch_deg set_pitch_deg;
     /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     2 number roll set_roll ROLL: i16,
-        in roll_deg set_roll_deg "Roll (degrees): Roll angle.";
-    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral axis).
+        /// Roll (degrees): Roll angle.
+        in roll_deg set_roll_deg;
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral
+    /// axis).
     3 number gyro_x set_gyro_x GYRO_X: i16,
-        in gyro_x_dps set_gyro_x_dps "GyroX (degrees per second) for the device `variant`: Angular rate about X (lateral axis)." by variant;
-    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal axis).
+        /// GyroX (degrees per second) for the device `variant`: Angular rate about X
+        /// (lateral axis).
+        in gyro_x_dps set_gyro_x_dps by variant;
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal
+    /// axis).
     4 number gyro_y set_gyro_y GYRO_Y: i16,
-        in gyro_y_dps set_gyro_y_dps "GyroY (degrees per second) for the device `variant`: Angular rate about Y (longitudinal axis)." by variant;
-    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical axis).
+        /// GyroY (degrees per second) for the device `variant`: Angular rate about Y
+        /// (longitudinal axis).
+        in gyro_y_dps set_gyro_y_dps by variant;
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical
+    /// axis).
     5 number gyro_z set_gyro_z GYRO_Z: i16,
-        in gyro_z_dps set_gyro_z_dps "GyroZ (degrees per second) for the device `variant`: Angular rate about Z (vertical axis)." by variant;
+        /// GyroZ (degrees per second) for the device `variant`: Angular rate about Z
+        /// (vertical axis).
+        in gyro_z_dps set_gyro_z_dps by variant;
     /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
     6 number acc_x set_acc_x ACC_X: i16,
-        in acc_x_g set_acc_x_g "AccX (standard gravity) for the device `variant`: Linear acceleration along X." by variant;
+        /// AccX (standard gravity) for the device `variant`: Linear acceleration along X.
+        in acc_x_g set_acc_x_g by variant;
     /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
     7 number acc_y set_acc_y ACC_Y: i16,
-        in acc_y_g set_acc_y_g "AccY (standard gravity) for the device `variant`: Linear acceleration along Y." by variant;
+        /// AccY (standard gravity) for the device `variant`: Linear acceleration along Y.
+        in acc_y_g set_acc_y_g by variant;
     /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
     8 number acc_z set_acc_z ACC_Z: i16,
-        in acc_z_g set_acc_z_g "AccZ (standard gravity) for the device `variant`: Linear acceleration along Z." by variant;
+        /// AccZ (standard gravity) for the device `variant`: Linear acceleration along Z.
+        in acc_z_g set_acc_z_g by variant;
     /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
     9 number mag_x set_mag_x MAG_X: i16,
-        in mag_x_nt set_mag_x_nt "MagX (nanotesla): Magnetic field along X.";
+        /// MagX (nanotesla): Magnetic field along X.
+        in mag_x_nt set_mag_x_nt;
     /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
     10 number mag_y set_mag_y MAG_Y: i16,
-        in mag_y_nt set_mag_y_nt "MagY (nanotesla): Magnetic field along Y.";
+        /// MagY (nanotesla): Magnetic field along Y.
+        in mag_y_nt set_mag_y_nt;
     /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
     11 number mag_z set_mag_z MAG_Z: i16,
-        in mag_z_nt set_mag_z_nt "MagZ (nanotesla): Magnetic field along Z.";
+        /// MagZ (nanotesla): Magnetic field along Z.
+        in mag_z_nt set_mag_z_nt;
     /// Reserved, `reserved\[4\]`:
     12 reserved reserved set_reserved RESERVED: [u8; 4];
     /// USW, `u16`: Unit Status Word (section 6.5).
     13 number usw set_usw USW: u16;
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     14 number vdd set_vdd VDD: u16,
-        in vdd_v set_vdd_v "Vdd (volts DC): AHRS input voltage.";
-    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+        /// Vdd (volts DC): AHRS input voltage.
+        in vdd_v set_vdd_v;
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3
+    /// accelerometers.
     15 number utermo set_utermo UTERMO: i16,
-        in utermo_degc set_utermo_degc "Utermo (degrees Celsius): Average temperature of the 3 accelerometers.";
+        /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
+        in utermo_degc set_utermo_degc;
 }
 
 impl<T: AsRef<[u8]>> OrientationSensors<T> {

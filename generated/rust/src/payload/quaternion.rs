@@ -144,47 +144,63 @@ pub static FIELDS: [FieldInfo; 11] = [
 payload_table! {
     /// Table 6.5, Quaternion of Orientation: a zero-copy view over a payload.
     ///
-    /// [`Quaternion::new_checked`] checks the size once; the accessors never panic, even on a
-    /// view made by [`Quaternion::new_unchecked`] over a short buffer (missing bytes read as zero).
+    /// \[`Quaternion::new_checked`\] checks the size once; the accessors never panic, even
+    /// on a view made by \[`Quaternion::new_unchecked`\] over a short buffer (missing bytes
+    /// read as zero).
     view Quaternion;
     /// Table 6.5, Quaternion of Orientation: the payload as a value, with raw field values.
     ///
-    /// [`QuaternionRepr::parse`] and [`QuaternionRepr::build`] are exact inverses: every byte string of
-    /// [`SIZE`] bytes parses, and builds back to the same bytes when its values are in range.
+    /// \[`QuaternionRepr::parse`\] and \[`QuaternionRepr::build`\] are exact inverses:
+    /// every byte string of \[`SIZE`\] bytes parses, and builds back to the same bytes when
+    /// its values are in range.
     #[derive(Debug, Clone, Copy, PartialEq, Default)]
     repr QuaternionRepr;
     count 11;
     /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
     0 number heading set_heading HEADING: u16,
-        in heading_deg set_heading_deg "Heading (degrees): Heading angle.";
+        /// Heading (degrees): Heading angle.
+        in heading_deg set_heading_deg;
     /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
     1 number pitch set_pitch PITCH: i16,
-        in pitch_deg set_pitch_deg "Pitch (degrees): Pitch angle.";
+        /// Pitch (degrees): Pitch angle.
+        in pitch_deg set_pitch_deg;
     /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
     2 number roll set_roll ROLL: i16,
-        in roll_deg set_roll_deg "Roll (degrees): Roll angle.";
-    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar component.
+        /// Roll (degrees): Roll angle.
+        in roll_deg set_roll_deg;
+    /// Lk0, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, scalar
+    /// component.
     3 number lk0 set_lk0 LK0: i16,
-        in lk0_value set_lk0_value "Lk0 (dimensionless): Quaternion of orientation, scalar component.";
-    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector component.
+        /// Lk0 (dimensionless): Quaternion of orientation, scalar component.
+        in lk0_value set_lk0_value;
+    /// Lk1, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, first vector
+    /// component.
     4 number lk1 set_lk1 LK1: i16,
-        in lk1_value set_lk1_value "Lk1 (dimensionless): Quaternion of orientation, first vector component.";
-    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second vector component.
+        /// Lk1 (dimensionless): Quaternion of orientation, first vector component.
+        in lk1_value set_lk1_value;
+    /// Lk2, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, second
+    /// vector component.
     5 number lk2 set_lk2 LK2: i16,
-        in lk2_value set_lk2_value "Lk2 (dimensionless): Quaternion of orientation, second vector component.";
-    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector component.
+        /// Lk2 (dimensionless): Quaternion of orientation, second vector component.
+        in lk2_value set_lk2_value;
+    /// Lk3, `s16`, raw x 1 / 10000 = dimensionless: Quaternion of orientation, third vector
+    /// component.
     6 number lk3 set_lk3 LK3: i16,
-        in lk3_value set_lk3_value "Lk3 (dimensionless): Quaternion of orientation, third vector component.";
+        /// Lk3 (dimensionless): Quaternion of orientation, third vector component.
+        in lk3_value set_lk3_value;
     /// Reserved, `reserved\[14\]`:
     7 reserved reserved set_reserved RESERVED: [u8; 14];
     /// USW, `u16`: Unit Status Word (section 6.5).
     8 number usw set_usw USW: u16;
     /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
     9 number vdd set_vdd VDD: u16,
-        in vdd_v set_vdd_v "Vdd (volts DC): AHRS input voltage.";
-    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3 accelerometers.
+        /// Vdd (volts DC): AHRS input voltage.
+        in vdd_v set_vdd_v;
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3
+    /// accelerometers.
     10 number utermo set_utermo UTERMO: i16,
-        in utermo_degc set_utermo_degc "Utermo (degrees Celsius): Average temperature of the 3 accelerometers.";
+        /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
+        in utermo_degc set_utermo_degc;
 }
 
 impl<T: AsRef<[u8]>> Quaternion<T> {
