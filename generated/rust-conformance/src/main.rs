@@ -216,6 +216,21 @@ fn stream(chunks: &str) -> Answer {
     ))
 }
 
+/// `NAME=VALUE` tokens, and a lookup of the value named `name` (unsupported when absent).
+fn read_pairs<'a>(pairs: &[&'a str]) -> Result<impl Fn(&str) -> Result<&'a str, Refusal>, Refusal> {
+    let mut values: Vec<(&str, &str)> = Vec::new();
+    for pair in pairs {
+        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
+    }
+    Ok(move |name: &str| {
+        values
+            .iter()
+            .find(|(key, _)| *key == name)
+            .map(|(_, token)| *token)
+            .ok_or(Refusal::Unsupported)
+    })
+}
+
 /// An INT token; one beyond 64 bits (or not a number) saturates, so that range checks refuse it.
 fn read_int(token: &str) -> i64 {
     match token.parse::<i64>() {

@@ -5,7 +5,7 @@
 
 use ilahrs::{ErrorKind, PahrSentence};
 
-use crate::{read_int, write_num, write_text, Answer, Refusal};
+use crate::{read_int, read_pairs, write_num, write_text, Answer, Refusal};
 
 /// Decodes a sentence and lists its fields: engineering values, hex fields as integers.
 pub(crate) fn decode(text: &[u8]) -> Answer {
@@ -23,17 +23,7 @@ pub(crate) fn decode(text: &[u8]) -> Answer {
 
 /// Builds a sentence from `NAME=VALUE` pairs (every field given).
 pub(crate) fn encode(pairs: &[&str]) -> Answer {
-    let mut values: Vec<(&str, &str)> = Vec::new();
-    for pair in pairs {
-        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
-    }
-    let get = |name: &str| {
-        values
-            .iter()
-            .find(|(key, _)| *key == name)
-            .map(|(_, token)| *token)
-            .ok_or(Refusal::Unsupported)
-    };
+    let get = read_pairs(pairs)?;
     let roll: f64 = get("roll")?.parse().unwrap_or(f64::NAN);
     let pitch: f64 = get("pitch")?.parse().unwrap_or(f64::NAN);
     let heading: f64 = get("heading")?.parse().unwrap_or(f64::NAN);
