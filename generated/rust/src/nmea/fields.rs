@@ -122,6 +122,7 @@ impl PahrSentence {
 /// The fields of a sentence in the builders' layout, each read at its start in `starts` by the
 /// fast path's readers (which clear `ok` on a character out of place).
 #[cfg(not(feature = "small"))]
+#[inline(always)]
 pub(super) fn canonical_values(
     body: &[u8],
     starts: &[usize; FIELD_COUNT],
