@@ -13,12 +13,18 @@ RUST_RUNNER_CRATE := generated/rust-conformance/Cargo.toml
 RUST_RUNNER := $(RUST_BUILD)/target/release/ilahrs-conformance
 RUST_FOOTPRINT_TARGET := thumbv7em-none-eabihf
 
-.PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust fuzz-rust
+.PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust fuzz-rust format-rust-runtime
 
 setup-rust:
 	@command -v cargo >/dev/null || { echo "setup-rust: cargo not found (install Rust stable)" >&2; exit 1; }
 	@cargo clippy --version >/dev/null 2>&1 || rustup component add clippy >/dev/null 2>&1 || true
 	@cargo fmt --version >/dev/null 2>&1 || rustup component add rustfmt >/dev/null 2>&1 || true
+
+# The hand-written runtime (generator/targets/rust/runtime/) must be laid out as rustfmt writes it:
+# `make generate` refuses it otherwise. This rewrites it so (inside a crate rendered from the spec,
+# since rustfmt follows `mod` declarations).
+format-rust-runtime: setup
+	$(PY) -c 'from generator.targets.rust.target import format_runtime; format_runtime()'
 
 build-rust: setup-rust
 	$(CARGO) build --quiet --release --manifest-path $(RUST_RUNNER_CRATE)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from generator import DEFAULT_SPEC, build_spec, render
 from generator.formatting import FormatterError, run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
@@ -82,9 +83,14 @@ _COPIED = "// Copied from generator/targets/rust/runtime/"
 _ROOTS = ("rust/src/lib.rs", "rust-conformance/src/main.rs")
 
 
+# False only while `format_runtime` lays the runtime sources out.
+_STRICT = [True]
+
+
 def format(files: dict[str, str]) -> dict[str, str]:
-    """Every Rust file as rustfmt lays it out (the edition from the crate's Cargo.toml). A copied
-    runtime file must come out unchanged: the runtime is kept formatted as it is written."""
+    """Every Rust file as rustfmt lays it out (the edition from the crate's Cargo.toml; the runner
+    shares it). A copied runtime file must come out unchanged: the runtime is kept formatted as
+    it is written (`make format-rust-runtime` formats it)."""
     edition = _edition(files.get("rust/Cargo.toml", ""))
     roots = [root for root in _ROOTS if root in files]
     formatted = run_formatter(
@@ -93,9 +99,27 @@ def format(files: dict[str, str]) -> dict[str, str]:
         lambda paths: [tool("rustfmt"), "--edition", edition, *(str(p) for p in paths if _is_root(p, roots))],
     )
     for path, text in files.items():
-        if path.endswith(".rs") and _is_copied(text) and formatted[path] != text:
-            raise FormatterError(f"rustfmt changes the runtime file behind {path}: format the runtime source")
+        if _STRICT[0] and path.endswith(".rs") and _is_copied(text) and formatted[path] != text:
+            raise FormatterError(f"rustfmt changes the runtime file behind {path}: run `make format-rust-runtime`")
     return formatted
+
+
+def format_runtime() -> None:
+    """Rewrite the runtime sources as rustfmt lays them out inside the crate rendered from the
+    spec (rustfmt needs the crate around a module to follow its `mod` declarations)."""
+    spec = build_spec(DEFAULT_SPEC)
+    _STRICT[0] = False
+    try:
+        files = render.render(spec, ["rust"])
+    finally:
+        _STRICT[0] = True
+    for out in outputs(spec):
+        if isinstance(out, Runtime):
+            body = files[out.path].split("\n", len(render.runtime_notice(spec, "rust", out.source)))[-1]
+            source = render.TARGETS_DIR / "rust" / "runtime" / out.source
+            if source.read_text(encoding="utf-8") != body:
+                source.write_text(body, encoding="utf-8")
+                print(f"formatted {source.relative_to(render.TARGETS_DIR.parent.parent)}")
 
 
 def _is_root(path: Path, roots: list[str]) -> bool:
