@@ -2,6 +2,10 @@
 # the seeded property and differential tests (tests/rust), the benchmark (bench/rust), the Cortex-M4
 # footprint and the fuzz targets (fuzz/rust).
 #
+# The crates are hand-written runtime modules (generator/targets/rust/runtime/, copied) next to
+# modules generated from the spec (generator/targets/rust/templates/); rustfmt lays both out, so
+# `cargo fmt --check` holds by construction and lint-rust checks the runtime through the crates.
+#
 # The generated crates build in place; build products go to build/rust/target, and the Cargo.lock
 # cargo writes beside a generated manifest is ignored (by git and by the drift check).
 
