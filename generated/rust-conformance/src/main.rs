@@ -1,6 +1,5 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-// Do not edit: change the spec or the generator and run `make generate`.
-
+// Copied from generator/targets/rust/runtime/runner/main.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
 //! The conformance runner of the `ilahrs` crate: reads requests on standard input, one per
 //! line, and answers each on one line (conformance/README.md, "The runner protocol"). It holds
 //! no test logic and no protocol knowledge beyond what the crate exposes.
@@ -10,8 +9,10 @@
 use std::io::{self, BufRead, Write};
 
 use ilahrs::payload::{AnyPayload, FieldKind, PayloadKind, Value};
-use ilahrs::state_machine::{Device, Event, Firmware};
-use ilahrs::{Error, ErrorKind, FrameRepr, MessageType, PahrSentence, StreamDecoder, Variant};
+use ilahrs::{Error, ErrorKind, FrameRepr, MessageType, StreamDecoder, Variant};
+
+mod nmea;
+mod session;
 
 /// An answer line, or the error to report.
 type Answer = Result<String, Refusal>;
@@ -80,10 +81,10 @@ fn answer(line: &str) -> Answer {
         }
         "payload_decode" => payload_decode(arg(0)?, &read_hex(arg(1)?)?, args.get(2).copied()),
         "payload_encode" => payload_encode(arg(0)?, args.get(2..).unwrap_or(&[])),
-        "nmea_decode" => nmea_decode(&read_text(arg(0)?)?),
-        "nmea_encode" => nmea_encode(&args),
+        "nmea_decode" => nmea::decode(&read_text(arg(0)?)?),
+        "nmea_encode" => nmea::encode(&args),
         "stream" => stream(args.first().copied().unwrap_or("")),
-        "session" => session(arg(0)?, arg(1)?),
+        "session" => session::run(arg(0)?, arg(1)?),
         _ => Err(Refusal::Unsupported),
     }
 }
@@ -188,47 +189,6 @@ fn payload_encode(name: &str, pairs: &[&str]) -> Answer {
     Ok(format!("ok {}", write_hex(&buf[..n])))
 }
 
-fn nmea_decode(text: &[u8]) -> Answer {
-    let sentence = PahrSentence::parse(text)?;
-    Ok(format!(
-        "ok roll={} pitch={} heading={} temperature={} vdd={} usw={}",
-        write_num(sentence.roll_deg(), false),
-        write_num(sentence.pitch_deg(), false),
-        write_num(sentence.heading_deg(), false),
-        write_num(sentence.temperature_degc(), false),
-        write_num(sentence.vdd_v(), false),
-        sentence.usw,
-    ))
-}
-
-fn nmea_encode(pairs: &[&str]) -> Answer {
-    let mut values: Vec<(&str, &str)> = Vec::new();
-    for pair in pairs {
-        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
-    }
-    let get = |name: &str| {
-        values
-            .iter()
-            .find(|(key, _)| *key == name)
-            .map(|(_, token)| *token)
-            .ok_or(Refusal::Unsupported)
-    };
-    let roll: f64 = get("roll")?.parse().unwrap_or(f64::NAN);
-    let pitch: f64 = get("pitch")?.parse().unwrap_or(f64::NAN);
-    let heading: f64 = get("heading")?.parse().unwrap_or(f64::NAN);
-    let temperature: f64 = get("temperature")?.parse().unwrap_or(f64::NAN);
-    let vdd: f64 = get("vdd")?.parse().unwrap_or(f64::NAN);
-    let usw_raw = read_int(get("usw")?);
-    let usw = u16::try_from(usw_raw).unwrap_or_default();
-    let sentence = PahrSentence::from_engineering(roll, pitch, heading, temperature, vdd, usw)?;
-    if u16::try_from(usw_raw).is_err() {
-        return Err(Refusal::Named(ErrorKind::OutOfRange, "usw".to_string()));
-    }
-    let mut buf = [0u8; ilahrs::nmea::MAX_LENGTH];
-    let n = sentence.build(&mut buf)?;
-    Ok(format!("ok {}", write_text(&buf[..n])))
-}
-
 fn stream(chunks: &str) -> Answer {
     let mut decoder = StreamDecoder::new();
     let mut events: Vec<String> = Vec::new();
@@ -256,46 +216,19 @@ fn stream(chunks: &str) -> Answer {
     ))
 }
 
-/// Runs the device state machine from its initial state: `C:HH` a command code, `D:N` a data
-/// message of N payload bytes, `E:NAME` another event; one `EVENT>STATE>SENDS` step each.
-fn session(firmware: &str, events: &str) -> Answer {
-    let firmware = match firmware {
-        "-" => None,
-        text => Some(Firmware::parse(text)?),
-    };
-    let mut device = Device::new(firmware);
-    let mut steps: Vec<String> = Vec::new();
-    for token in events.split(',') {
-        let (event, step) = match token.split_once(':') {
-            Some(("C", code)) => {
-                let code = u8::from_str_radix(code, 16).map_err(|_| Refusal::Unsupported)?;
-                device.handle_command(code)
-            }
-            Some(("D", size)) => {
-                let size = size.parse().map_err(|_| Refusal::Unsupported)?;
-                device.handle_data(size)
-            }
-            Some(("E", name)) => {
-                let event = Event::from_name(name).ok_or(Refusal::Unsupported)?;
-                (event, device.handle(event))
-            }
-            _ => return Err(Refusal::Unsupported),
-        };
-        let sends: Vec<&str> = step
-            .map(|step| step.sends)
-            .unwrap_or(&[])
-            .iter()
-            .map(|answer| answer.name())
-            .collect();
-        let sends = if sends.is_empty() {
-            "-".to_string()
-        } else {
-            sends.join("+")
-        };
-        let state = device.state().name();
-        steps.push(format!("{}>{state}>{sends}", event.name()));
+/// `NAME=VALUE` tokens, and a lookup of the value named `name` (unsupported when absent).
+fn read_pairs<'a>(pairs: &[&'a str]) -> Result<impl Fn(&str) -> Result<&'a str, Refusal>, Refusal> {
+    let mut values: Vec<(&str, &str)> = Vec::new();
+    for pair in pairs {
+        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
     }
-    Ok(format!("ok steps={}", steps.join(",")))
+    Ok(move |name: &str| {
+        values
+            .iter()
+            .find(|(key, _)| *key == name)
+            .map(|(_, token)| *token)
+            .ok_or(Refusal::Unsupported)
+    })
 }
 
 /// An INT token; one beyond 64 bits (or not a number) saturates, so that range checks refuse it.

@@ -16,12 +16,12 @@
 //! # Ok::<(), ilahrs::Error>(())
 //! ```
 
-use crate::error::{Error, ErrorKind, Result};
-use crate::frame::{self, FrameRepr, MessageType};
-use crate::payload::ahrs_parameters_load::AhrsParametersLoadRepr;
-use crate::payload::calibration_parameters::CalibrationParametersRepr;
-use crate::payload::calibration_run_parameters::CalibrationRunParametersRepr;
-use crate::payload::PayloadKind;
+mod frames;
+
+pub use frames::{build_command, decode_command, Response};
+
+use crate::error::Result;
+use crate::payload::{self, PayloadKind};
 
 /// An operating mode of the AHRS (section 6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -58,19 +58,6 @@ impl Mode {
             Mode::Sleep => "sleep",
         }
     }
-}
-
-/// What the AHRS sends back to a command itself.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Response {
-    /// An acknowledgement frame whose payload is the checksum of the received message.
-    Ack,
-    /// A data block of one of these payload tables.
-    Data(&'static [PayloadKind]),
-    /// One block of the current output format.
-    Output,
-    /// Nothing.
-    None,
 }
 
 /// A command of Table C.1.
@@ -161,6 +148,13 @@ impl Command {
         Command::GetClbRes,
     ];
 
+    /// The command whose ICD name is `name`, if any.
+    pub fn from_name(name: &str) -> Option<Command> {
+        Command::ALL
+            .into_iter()
+            .find(|command| command.name() == name)
+    }
+
     /// The ICD's name of the command (`AHRScont1`).
     pub const fn name(self) -> &'static str {
         match self {
@@ -222,39 +216,6 @@ impl Command {
             Command::ExitClb => 0xFE,
             Command::ClearClb => 0x2F,
             Command::GetClbRes => 0x2A,
-        }
-    }
-
-    /// The command whose ICD name is `name`, if any.
-    pub fn from_name(name: &str) -> Option<Command> {
-        match name {
-            "AHRScont1" => Some(Command::AhrsCont1),
-            "AHRScont2" => Some(Command::AhrsCont2),
-            "AHRScont3" => Some(Command::AhrsCont3),
-            "AHRSreq1" => Some(Command::AhrsReq1),
-            "AHRSreq2" => Some(Command::AhrsReq2),
-            "AHRSreq3" => Some(Command::AhrsReq3),
-            "NMEAcont" => Some(Command::NmeaCont),
-            "NMEAreq" => Some(Command::NmeaReq),
-            "GetDataReq" => Some(Command::GetDataReq),
-            "Stop" => Some(Command::Stop),
-            "LoadAHRSPar" => Some(Command::LoadAhrsPar),
-            "ReadAHRSPar" => Some(Command::ReadAhrsPar),
-            "LowPowerOn" => Some(Command::LowPowerOn),
-            "LowPowerOff" => Some(Command::LowPowerOff),
-            "GetVerFirmware" => Some(Command::GetVerFirmware),
-            "GetBIT" => Some(Command::GetBit),
-            "Start2DClb" => Some(Command::Start2dClb),
-            "Start2D2TClb" => Some(Command::Start2d2tClb),
-            "Start3DClb" => Some(Command::Start3dClb),
-            "StartClbRun" => Some(Command::StartClbRun),
-            "StopClbRun" => Some(Command::StopClbRun),
-            "FinishClb" => Some(Command::FinishClb),
-            "AcceptClb" => Some(Command::AcceptClb),
-            "ExitClb" => Some(Command::ExitClb),
-            "ClearClb" => Some(Command::ClearClb),
-            "GetClbRes" => Some(Command::GetClbRes),
-            _ => None,
         }
     }
 
@@ -415,102 +376,79 @@ impl Command {
             _ => None,
         }
     }
-
-    /// Writes the command frame (command, reserved 0, the code as the payload) into
-    /// `buf`; returns its size (bytes), or `buffer_too_small`.
-    pub fn build(self, buf: &mut [u8]) -> Result<usize> {
-        FrameRepr::new(MessageType::Command, &[self.code()]).build(buf)
-    }
-}
-
-/// Writes the command frame of the command whose ICD name is `name` into `buf`; returns its
-/// size (bytes). Errors: `unknown_command`, `buffer_too_small`.
-pub fn build_command(name: &str, buf: &mut [u8]) -> Result<usize> {
-    match Command::from_name(name) {
-        Some(command) => command.build(buf),
-        None => Err(Error::new(ErrorKind::UnknownCommand)),
-    }
-}
-
-/// Decodes a command frame: its code and every command with that code, sorted by ICD name.
-///
-/// `frame` must be exactly one valid frame (errors as for [`frame::Frame::new_checked`]) of
-/// type command (`bad_message_type`) with a one-byte payload (`bad_length`) holding a known
-/// code (`unknown_command`).
-pub fn decode_command(frame: &[u8]) -> Result<(u8, &'static [Command])> {
-    let repr = FrameRepr::parse(frame)?;
-    if repr.message_type != MessageType::Command {
-        let error = Error::at(ErrorKind::BadMessageType, frame::field::MESSAGE_TYPE.start);
-        return Err(error.with_field("message_type"));
-    }
-    let code = match repr.payload {
-        [code] => *code,
-        _ => {
-            let error = Error::at(ErrorKind::BadLength, frame::field::MESSAGE_LENGTH.start);
-            return Err(error.with_field("message_length"));
-        }
-    };
-    match Command::with_code(code) {
-        [] => {
-            let error = Error::at(ErrorKind::UnknownCommand, frame::field::PAYLOAD_START);
-            Err(error)
-        }
-        names => Ok((code, names)),
-    }
 }
 
 /// Writes `LoadAHRSPar` and, right after it, its parameter block (Table 6.9) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`AhrsParametersLoadRepr::build`], `buffer_too_small`.
-pub fn build_load_ahrs_par(parameters: &AhrsParametersLoadRepr, buf: &mut [u8]) -> Result<usize> {
-    let command = Command::LoadAhrsPar.build(buf)?;
-    let rest = buf.get_mut(command..).unwrap_or(&mut []);
-    Ok(command + parameters.build_frame(rest)?)
+/// Errors: those of [`payload::AhrsParametersLoadRepr::build`], `buffer_too_small`.
+pub fn build_load_ahrs_par(
+    parameters: &payload::AhrsParametersLoadRepr,
+    buf: &mut [u8],
+) -> Result<usize> {
+    frames::build_with_block(
+        Command::LoadAhrsPar,
+        |rest| parameters.build_frame(rest),
+        buf,
+    )
 }
 
 /// Writes `Start2DClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`CalibrationParametersRepr::build`], `buffer_too_small`.
-pub fn build_start_2d_clb(parameters: &CalibrationParametersRepr, buf: &mut [u8]) -> Result<usize> {
-    let command = Command::Start2dClb.build(buf)?;
-    let rest = buf.get_mut(command..).unwrap_or(&mut []);
-    Ok(command + parameters.build_frame(rest)?)
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
+pub fn build_start_2d_clb(
+    parameters: &payload::CalibrationParametersRepr,
+    buf: &mut [u8],
+) -> Result<usize> {
+    frames::build_with_block(
+        Command::Start2dClb,
+        |rest| parameters.build_frame(rest),
+        buf,
+    )
 }
 
 /// Writes `Start2D2TClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`CalibrationParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
 pub fn build_start_2d2t_clb(
-    parameters: &CalibrationParametersRepr,
+    parameters: &payload::CalibrationParametersRepr,
     buf: &mut [u8],
 ) -> Result<usize> {
-    let command = Command::Start2d2tClb.build(buf)?;
-    let rest = buf.get_mut(command..).unwrap_or(&mut []);
-    Ok(command + parameters.build_frame(rest)?)
+    frames::build_with_block(
+        Command::Start2d2tClb,
+        |rest| parameters.build_frame(rest),
+        buf,
+    )
 }
 
 /// Writes `Start3DClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`CalibrationParametersRepr::build`], `buffer_too_small`.
-pub fn build_start_3d_clb(parameters: &CalibrationParametersRepr, buf: &mut [u8]) -> Result<usize> {
-    let command = Command::Start3dClb.build(buf)?;
-    let rest = buf.get_mut(command..).unwrap_or(&mut []);
-    Ok(command + parameters.build_frame(rest)?)
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
+pub fn build_start_3d_clb(
+    parameters: &payload::CalibrationParametersRepr,
+    buf: &mut [u8],
+) -> Result<usize> {
+    frames::build_with_block(
+        Command::Start3dClb,
+        |rest| parameters.build_frame(rest),
+        buf,
+    )
 }
 
 /// Writes `StartClbRun` and, right after it, its parameter block (Table 6.16) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`CalibrationRunParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationRunParametersRepr::build`], `buffer_too_small`.
 pub fn build_start_clb_run(
-    parameters: &CalibrationRunParametersRepr,
+    parameters: &payload::CalibrationRunParametersRepr,
     buf: &mut [u8],
 ) -> Result<usize> {
-    let command = Command::StartClbRun.build(buf)?;
-    let rest = buf.get_mut(command..).unwrap_or(&mut []);
-    Ok(command + parameters.build_frame(rest)?)
+    frames::build_with_block(
+        Command::StartClbRun,
+        |rest| parameters.build_frame(rest),
+        buf,
+    )
 }

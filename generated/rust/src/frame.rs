@@ -1,7 +1,7 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-// Do not edit: change the spec or the generator and run `make generate`.
-
-//! The binary frame (Table 6.2, Table 6.3): header, message type, reserved, message length, payload and checksum.
+// Copied from generator/targets/rust/runtime/crate/frame.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
+//! The binary frame: header, message type, reserved byte, message length, payload and checksum
+//! (the spec's `frame`; positions and sizes in [`field`] and the constants below).
 //!
 //! [`Frame`] is a zero-copy view over bytes, checked once by [`Frame::new_checked`];
 //! [`FrameRepr`] is the same frame as a value, with [`FrameRepr::parse`] and
@@ -18,94 +18,14 @@
 //! ```
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::payload::acknowledgement::AcknowledgementRepr;
 use crate::wire;
 
-/// The bytes every frame starts with.
-pub const HEADER: [u8; 2] = [0xAA, 0x55];
-/// Size of the header (bytes).
-pub const HEADER_SIZE: usize = 2;
-/// Size of the checksum (bytes).
-pub const CHECKSUM_SIZE: usize = 2;
-/// The least message length a decoder accepts (bytes after the header).
-pub const MIN_MESSAGE_LENGTH: u16 = 7;
-/// The greatest message length a decoder accepts (bytes after the header).
-pub const MAX_MESSAGE_LENGTH: u16 = 58;
-/// Bytes of a frame besides its payload (bytes).
-pub const OVERHEAD: usize = 8;
-/// The message length minus the payload size (bytes).
-pub const LENGTH_BIAS: usize = 6;
-/// The smallest payload a frame carries (bytes).
-pub const MIN_PAYLOAD: usize = 1;
-/// The largest payload a frame carries (bytes).
-pub const MAX_PAYLOAD: usize = 52;
-/// The smallest frame (bytes).
-pub const MIN_FRAME_SIZE: usize = 9;
-/// The largest frame (bytes).
-pub const MAX_FRAME_SIZE: usize = 60;
+mod layout;
 
-/// Where the fields of a frame sit (byte offsets).
-pub mod field {
-    use crate::wire::Field;
-
-    /// The header, `0xAA` `0x55`.
-    pub const HEADER: Field = 0..2;
-    /// Message type (u8): 0 for commands, 1 for data. Every AHRS output is data (Table 6.2).
-    pub const MESSAGE_TYPE: Field = 2..3;
-    /// Reserved (u8): Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6).
-    pub const RESERVED: Field = 3..4;
-    /// Message length (u16): Number of bytes after the 2-byte header, message type through checksum (Table 6.2).
-    pub const MESSAGE_LENGTH: Field = 4..6;
-    /// Where the payload starts.
-    pub const PAYLOAD_START: usize = 6;
-
-    /// The payload of a frame whose message length is `length`.
-    pub const fn payload(length: usize) -> Field {
-        PAYLOAD_START..checksum(length).start
-    }
-
-    /// The checksum of a frame whose message length is `length`.
-    pub const fn checksum(length: usize) -> Field {
-        let end = length.saturating_add(super::HEADER_SIZE);
-        end.saturating_sub(super::CHECKSUM_SIZE)..end
-    }
-}
-
-/// What a frame carries (Table 6.2).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum MessageType {
-    /// 0: A command from the host (one-byte payload holding the command code).
-    Command,
-    /// 1: Data: every AHRS output, and the parameter blocks the host sends (E5).
-    Data,
-}
-
-impl MessageType {
-    /// The type with code `raw`, if it is one.
-    pub const fn from_raw(raw: u8) -> Option<MessageType> {
-        match raw {
-            0 => Some(MessageType::Command),
-            1 => Some(MessageType::Data),
-            _ => None,
-        }
-    }
-
-    /// The code sent on the wire.
-    pub const fn raw(self) -> u8 {
-        match self {
-            MessageType::Command => 0,
-            MessageType::Data => 1,
-        }
-    }
-
-    /// The type's name in the spec.
-    pub const fn name(self) -> &'static str {
-        match self {
-            MessageType::Command => "command",
-            MessageType::Data => "data",
-        }
-    }
-}
+pub use layout::{
+    field, MessageType, CHECKSUM_SIZE, HEADER, HEADER_SIZE, LENGTH_BIAS, MAX_FRAME_SIZE,
+    MAX_MESSAGE_LENGTH, MAX_PAYLOAD, MIN_FRAME_SIZE, MIN_MESSAGE_LENGTH, MIN_PAYLOAD, OVERHEAD,
+};
 
 impl TryFrom<u8> for MessageType {
     type Error = Error;
@@ -117,7 +37,8 @@ impl TryFrom<u8> for MessageType {
     }
 }
 
-/// The checksum of `data` (`sum16`): Arithmetic sum, modulo 2^16, of every byte from the message type through the last payload byte (Table 6.2: bytes 2 ... n-1); low byte first (Table 6.3) (E28).
+/// The checksum of `data` (the spec's `sum16`): the sum of its bytes, modulo 2^16. A frame's
+/// checksum covers its message type through its last payload byte.
 ///
 /// ```
 /// assert_eq!(ilahrs::checksum(&[0xFF, 0xFF, 0x02]), 0x0200);
@@ -148,11 +69,11 @@ pub fn check_frame(data: &[u8]) -> Result<usize> {
     if data.len() < field::PAYLOAD_START {
         return Err(Error::at(ErrorKind::Truncated, data.len()));
     }
-    if MessageType::from_raw(wire::get_u8(data, field::MESSAGE_TYPE)).is_none() {
+    if MessageType::from_raw(wire::get::<u8>(data, field::MESSAGE_TYPE)).is_none() {
         let error = Error::at(ErrorKind::BadMessageType, field::MESSAGE_TYPE.start);
         return Err(error.with_field("message_type"));
     }
-    let length = wire::get_u16(data, field::MESSAGE_LENGTH);
+    let length = wire::get::<u16>(data, field::MESSAGE_LENGTH);
     if !(MIN_MESSAGE_LENGTH..=MAX_MESSAGE_LENGTH).contains(&length) {
         let error = Error::at(ErrorKind::BadLength, field::MESSAGE_LENGTH.start);
         return Err(error.with_field("message_length"));
@@ -161,7 +82,7 @@ pub fn check_frame(data: &[u8]) -> Result<usize> {
     if data.len() < sum.end {
         return Err(Error::at(ErrorKind::Truncated, data.len()));
     }
-    if checksum(wire::bytes(data, HEADER_SIZE..sum.start)) != wire::get_u16(data, sum.clone()) {
+    if checksum(wire::bytes(data, HEADER_SIZE..sum.start)) != wire::get::<u16>(data, sum.clone()) {
         let error = Error::at(ErrorKind::BadChecksum, sum.start);
         return Err(error.with_field("checksum"));
     }
@@ -216,24 +137,24 @@ impl<T: AsRef<[u8]>> Frame<T> {
         data.get(..self.total_len()).unwrap_or(data)
     }
 
-    /// Message type, raw: 0 for commands, 1 for data. Every AHRS output is data (Table 6.2).
+    /// The message type byte, raw (see [`MessageType`]).
     pub fn message_type(&self) -> u8 {
-        wire::get_u8(self.buffer.as_ref(), field::MESSAGE_TYPE)
+        wire::get::<u8>(self.buffer.as_ref(), field::MESSAGE_TYPE)
     }
 
-    /// Message type as a [`MessageType`], or `None` for an unknown code.
+    /// The message type as a [`MessageType`], or `None` for an unknown code.
     pub fn message_type_decoded(&self) -> Option<MessageType> {
         MessageType::from_raw(self.message_type())
     }
 
-    /// Reserved: Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6).
+    /// The reserved byte, as received (see [`field::RESERVED`]).
     pub fn reserved(&self) -> u8 {
-        wire::get_u8(self.buffer.as_ref(), field::RESERVED)
+        wire::get::<u8>(self.buffer.as_ref(), field::RESERVED)
     }
 
-    /// Message length (bytes): Number of bytes after the 2-byte header, message type through checksum (Table 6.2).
+    /// The message length: bytes after the header, message type through checksum (bytes).
     pub fn message_length(&self) -> u16 {
-        wire::get_u16(self.buffer.as_ref(), field::MESSAGE_LENGTH)
+        wire::get::<u16>(self.buffer.as_ref(), field::MESSAGE_LENGTH)
     }
 
     /// The size of the whole frame, header through checksum, by its length field (bytes).
@@ -247,10 +168,10 @@ impl<T: AsRef<[u8]>> Frame<T> {
         wire::bytes(self.buffer.as_ref(), field::payload(length))
     }
 
-    /// Check sum: the checksum the frame carries.
+    /// The checksum the frame carries.
     pub fn checksum(&self) -> u16 {
         let length = usize::from(self.message_length());
-        wire::get_u16(self.buffer.as_ref(), field::checksum(length))
+        wire::get::<u16>(self.buffer.as_ref(), field::checksum(length))
     }
 
     /// The checksum computed over the frame's bytes (message type through payload).
@@ -267,19 +188,19 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> Frame<T> {
         wire::put(self.buffer.as_mut(), field::HEADER, &HEADER);
     }
 
-    /// Sets message type (raw).
+    /// Sets the message type byte (raw).
     pub fn set_message_type(&mut self, value: u8) {
-        wire::set_u8(self.buffer.as_mut(), field::MESSAGE_TYPE, value);
+        wire::set::<u8>(self.buffer.as_mut(), field::MESSAGE_TYPE, value);
     }
 
     /// Sets the reserved byte.
     pub fn set_reserved(&mut self, value: u8) {
-        wire::set_u8(self.buffer.as_mut(), field::RESERVED, value);
+        wire::set::<u8>(self.buffer.as_mut(), field::RESERVED, value);
     }
 
-    /// Sets message length (bytes after the header).
+    /// Sets the message length (bytes after the header).
     pub fn set_message_length(&mut self, value: u16) {
-        wire::set_u16(self.buffer.as_mut(), field::MESSAGE_LENGTH, value);
+        wire::set::<u16>(self.buffer.as_mut(), field::MESSAGE_LENGTH, value);
     }
 
     /// The payload, for writing (its size follows the length field).
@@ -293,18 +214,18 @@ impl<T: AsRef<[u8]> + AsMut<[u8]>> Frame<T> {
     pub fn fill_checksum(&mut self) {
         let value = self.compute_checksum();
         let length = usize::from(self.message_length());
-        wire::set_u16(self.buffer.as_mut(), field::checksum(length), value);
+        wire::set::<u16>(self.buffer.as_mut(), field::checksum(length), value);
     }
 }
 
 /// One frame as a value: message type, reserved byte and a borrowed payload.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FrameRepr<'a> {
-    /// Message type: 0 for commands, 1 for data. Every AHRS output is data (Table 6.2).
+    /// What the frame carries.
     pub message_type: MessageType,
-    /// Reserved: Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6).
+    /// The reserved byte (see [`field::RESERVED`]).
     pub reserved: u8,
-    /// The payload (1 to 52 bytes).
+    /// The payload ([`MIN_PAYLOAD`] to [`MAX_PAYLOAD`] bytes).
     pub payload: &'a [u8],
 }
 
@@ -325,7 +246,7 @@ impl<'a> FrameRepr<'a> {
     }
 
     /// The value of a view (a view made by [`Frame::new_checked`] always has a known type;
-    /// an unchecked one with an unknown type reads as `command`).
+    /// an unchecked one with an unknown type reads as [`MessageType::Command`]).
     pub fn from_view(frame: &Frame<&'a [u8]>) -> FrameRepr<'a> {
         let data: &'a [u8] = frame.buffer;
         let length = usize::from(frame.message_length());
@@ -343,8 +264,8 @@ impl<'a> FrameRepr<'a> {
 
     /// Writes the frame into `buf`, filling length and checksum; returns its size (bytes).
     ///
-    /// Errors: `bad_length` (field `payload`) for a payload outside 1 to
-    /// 52 bytes, `buffer_too_small` when `buf` cannot hold the frame.
+    /// Errors: `bad_length` (field `payload`) for a payload outside [`MIN_PAYLOAD`] to
+    /// [`MAX_PAYLOAD`] bytes, `buffer_too_small` when `buf` cannot hold the frame.
     pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
         if !(MIN_PAYLOAD..=MAX_PAYLOAD).contains(&self.payload.len()) {
             return Err(Error::new(ErrorKind::BadLength).with_field("payload"));
@@ -367,7 +288,8 @@ impl<'a> FrameRepr<'a> {
 }
 
 /// Writes the acknowledgement of the host message `message` into `buf` and returns its size
-/// (bytes): The AHRS computes the checksum of the message it received (message type through payload, i.e. the value of that message's own checksum field) and returns it as the one-word payload of a data frame (message type 1).
+/// (bytes): a data frame whose payload (the spec's acknowledgement table) is the checksum of the
+/// message received, the value of that message's own checksum field.
 ///
 /// `message` must be exactly one valid frame (errors as for [`Frame::new_checked`]);
 /// `buffer_too_small` when `buf` cannot hold the answer.
@@ -376,16 +298,13 @@ impl<'a> FrameRepr<'a> {
 /// use ilahrs::command::Command;
 ///
 /// let mut command = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
-/// let n = Command::AhrsCont1.build(&mut command)?;
+/// let n = Command::ALL[0].build(&mut command)?;
 /// let mut ack = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
 /// let m = ilahrs::ack_for(&command[..n], &mut ack)?;
-/// assert_eq!(m, ilahrs::frame::OVERHEAD + 2);
+/// assert!(ilahrs::FrameRepr::parse(&ack[..m]).is_ok());
 /// # Ok::<(), ilahrs::Error>(())
 /// ```
 pub fn ack_for(message: &[u8], buf: &mut [u8]) -> Result<usize> {
     let frame = Frame::new_checked(message)?;
-    let ack = AcknowledgementRepr {
-        checksum: frame.checksum(),
-    };
-    ack.build_frame(buf)
+    layout::build_ack(frame.checksum(), buf)
 }

@@ -1,7 +1,7 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-// Do not edit: change the spec or the generator and run `make generate`.
-
-//! The $PAHR sentence (Table 6.7, section 6.2): `$PAHR,RRRR.rr,PPP.pp,HHH.hh,TTT.t,V.vv,SSSS*CC<CR><LF>`.
+// Copied from generator/targets/rust/runtime/crate/nmea.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
+//! The $PAHR sentence: `$`, the identifier, comma-separated decimal and hex fields, `*`, two hex
+//! checksum digits, CR LF (the spec's `nmea`; its fields in [`PahrSentence`]).
 //!
 //! Values are held as integers scaled by 10^decimals (roll 12.34 degrees is 1234), so parsing
 //! and building are exact and need no floating point. Building zero-pads each decimal field's
@@ -12,14 +12,7 @@
 //! ```
 //! use ilahrs::PahrSentence;
 //!
-//! let sentence = PahrSentence {
-//!     roll: 9000,
-//!     pitch: 4500,
-//!     heading: 17999,
-//!     temperature: 4999,
-//!     vdd: 499,
-//!     usw: 32767,
-//! };
+//! let sentence = PahrSentence::default();
 //! let mut buf = [0u8; ilahrs::nmea::MAX_LENGTH];
 //! let n = sentence.build(&mut buf)?;
 //! assert_eq!(PahrSentence::parse(&buf[..n])?, sentence);
@@ -28,22 +21,17 @@
 
 use crate::error::{Error, ErrorKind, Result};
 
-/// The identifier after `$`.
-pub const IDENTIFIER: &[u8] = b"PAHR";
-/// What every sentence starts with: `$`, the identifier and a comma.
-pub const PREFIX: &[u8] = b"$PAHR,";
-/// The longest sentence, `$` through CR LF (bytes).
-pub const MAX_LENGTH: usize = 82;
-/// The most sentences the AHRS sends per second (Hz).
-pub const MAX_RATE_HZ: u32 = 50;
-/// The number of fields.
-pub const FIELD_COUNT: usize = 6;
+mod fields;
+
+use fields::FIELDS;
+pub use fields::{PahrSentence, FIELD_COUNT, IDENTIFIER, MAX_LENGTH, MAX_RATE_HZ, PREFIX};
+
 /// `*`, two checksum digits, CR, LF (bytes).
 const TAIL: usize = 5;
 
 /// How a field is written.
 #[derive(Clone, Copy)]
-enum Format {
+pub(crate) enum Format {
     /// An optional `-`, digits, and up to `decimals` fraction digits; the value is scaled by
     /// 10^decimals.
     Decimal { width: usize, decimals: u32 },
@@ -53,83 +41,42 @@ enum Format {
 
 /// What a field is and which values it takes.
 #[derive(Clone, Copy)]
-struct FieldSpec {
+pub(crate) struct FieldSpec {
     name: &'static str,
     format: Format,
     min: i64,
     max: i64,
 }
 
-/// The fields, in sentence order.
-const FIELDS: [FieldSpec; FIELD_COUNT] = [
-    FieldSpec {
-        name: "roll",
-        format: Format::Decimal {
-            width: 4,
-            decimals: 2,
-        },
-        min: -18000,
-        max: 18000,
-    },
-    FieldSpec {
-        name: "pitch",
-        format: Format::Decimal {
-            width: 3,
-            decimals: 2,
-        },
-        min: -9000,
-        max: 9000,
-    },
-    FieldSpec {
-        name: "heading",
-        format: Format::Decimal {
-            width: 3,
-            decimals: 2,
-        },
-        min: 0,
-        max: 35999,
-    },
-    FieldSpec {
-        name: "temperature",
-        format: Format::Decimal {
-            width: 3,
-            decimals: 1,
-        },
-        min: -999,
-        max: 9999,
-    },
-    FieldSpec {
-        name: "vdd",
-        format: Format::Decimal {
-            width: 1,
-            decimals: 2,
-        },
-        min: 0,
-        max: 999,
-    },
-    FieldSpec {
-        name: "usw",
-        format: Format::Hex { width: 4 },
-        min: 0,
-        max: 65535,
-    },
-];
+impl FieldSpec {
+    /// A decimal field: `width` integer characters (the sign counting as one), `decimals`
+    /// fraction digits, its scaled value in `min..=max`.
+    pub(crate) const fn decimal(
+        name: &'static str,
+        width: usize,
+        decimals: u32,
+        min: i64,
+        max: i64,
+    ) -> FieldSpec {
+        let format = Format::Decimal { width, decimals };
+        FieldSpec {
+            name,
+            format,
+            min,
+            max,
+        }
+    }
 
-/// A $PAHR sentence: every field as a scaled integer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct PahrSentence {
-    /// `RRRR.rr`: Roll, hundredths of a degree. Scaled by 100, -18000 to 18000.
-    pub roll: i32,
-    /// `PPP.pp`: Pitch, hundredths of a degree. Scaled by 100, -9000 to 9000.
-    pub pitch: i32,
-    /// `HHH.hh`: Heading, hundredths of a degree. Scaled by 100, 0 to 35999.
-    pub heading: i32,
-    /// `TTT.t`: Average accelerometer temperature, tenths of a degree Celsius. Scaled by 10, -999 to 9999.
-    pub temperature: i32,
-    /// `V.vv`: AHRS input voltage, hundredths of a volt. Scaled by 100, 0 to 999.
-    pub vdd: i32,
-    /// `SSSS`: Unit Status Word (section 6.5), four hex digits., 0 to 65535.
-    pub usw: u16,
+    /// A hex field of 1 to `width` digits, its value in `min..=max`.
+    pub(crate) const fn hex(name: &'static str, width: usize, min: i64, max: i64) -> FieldSpec {
+        let format = Format::Hex { width };
+        FieldSpec {
+            name,
+            format,
+            min,
+            max,
+        }
+    }
 }
 
 /// The sentence checksum of `body`: the XOR of its bytes.
@@ -150,7 +97,7 @@ impl PahrSentence {
     /// Decodes exactly one sentence, `$` through CR LF.
     ///
     /// Checks, in order: `$` (`bad_header` at 0), the identifier and comma (`bad_header` at 1),
-    /// the CR LF end (`truncated`, `bad_length` at 82, `trailing_data`), `*` and two hex
+    /// the CR LF end (`truncated`, `bad_length` at [`MAX_LENGTH`], `trailing_data`), `*` and two hex
     /// digits before it (`malformed`), the checksum (`bad_checksum` at its first digit), the
     /// number of fields (`malformed`), then each field's grammar (`malformed`) and range
     /// (`out_of_range`), naming the field, at its offset.
@@ -186,42 +133,10 @@ impl PahrSentence {
     }
 
     /// The sentence with these scaled values (sentence order), checked against the ranges.
-    fn from_scaled(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
+    pub(crate) fn from_scaled(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
         let sentence = PahrSentence::from_checked(values)?;
         sentence.validate()?;
         Ok(sentence)
-    }
-
-    /// The sentence with these scaled values (sentence order), already checked against the
-    /// ranges.
-    fn from_checked(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
-        let roll = i32::try_from(values[0]);
-        let pitch = i32::try_from(values[1]);
-        let heading = i32::try_from(values[2]);
-        let temperature = i32::try_from(values[3]);
-        let vdd = i32::try_from(values[4]);
-        let usw = u16::try_from(values[5]);
-        let sentence = PahrSentence {
-            roll: roll.map_err(|_| refuse(0))?,
-            pitch: pitch.map_err(|_| refuse(1))?,
-            heading: heading.map_err(|_| refuse(2))?,
-            temperature: temperature.map_err(|_| refuse(3))?,
-            vdd: vdd.map_err(|_| refuse(4))?,
-            usw: usw.map_err(|_| refuse(5))?,
-        };
-        Ok(sentence)
-    }
-
-    /// The scaled values, in sentence order.
-    fn scaled(&self) -> [i64; FIELD_COUNT] {
-        [
-            i64::from(self.roll),
-            i64::from(self.pitch),
-            i64::from(self.heading),
-            i64::from(self.temperature),
-            i64::from(self.vdd),
-            i64::from(self.usw),
-        ]
     }
 
     /// Checks every field against its range, in sentence order: `out_of_range` naming the
@@ -235,53 +150,6 @@ impl PahrSentence {
         Ok(())
     }
 
-    /// The sentence from engineering values, each rounded half away from zero to its
-    /// resolution. Errors: `out_of_range` naming the first field that is not finite or is
-    /// outside its range.
-    pub fn from_engineering(
-        roll_deg: f64,
-        pitch_deg: f64,
-        heading_deg: f64,
-        temperature_degc: f64,
-        vdd_v: f64,
-        usw: u16,
-    ) -> Result<PahrSentence> {
-        let values = [
-            scale_round(roll_deg, 100.0).ok_or(refuse(0))?,
-            scale_round(pitch_deg, 100.0).ok_or(refuse(1))?,
-            scale_round(heading_deg, 100.0).ok_or(refuse(2))?,
-            scale_round(temperature_degc, 10.0).ok_or(refuse(3))?,
-            scale_round(vdd_v, 100.0).ok_or(refuse(4))?,
-            i64::from(usw),
-        ];
-        PahrSentence::from_scaled(values)
-    }
-
-    /// `RRRR.rr` in degrees.
-    pub fn roll_deg(&self) -> f64 {
-        f64::from(self.roll) / 100.0
-    }
-
-    /// `PPP.pp` in degrees.
-    pub fn pitch_deg(&self) -> f64 {
-        f64::from(self.pitch) / 100.0
-    }
-
-    /// `HHH.hh` in degrees.
-    pub fn heading_deg(&self) -> f64 {
-        f64::from(self.heading) / 100.0
-    }
-
-    /// `TTT.t` in degrees Celsius.
-    pub fn temperature_degc(&self) -> f64 {
-        f64::from(self.temperature) / 10.0
-    }
-
-    /// `V.vv` in volts DC.
-    pub fn vdd_v(&self) -> f64 {
-        f64::from(self.vdd) / 100.0
-    }
-
     /// The size of the sentence [`PahrSentence::build`] writes, `$` through CR LF (bytes).
     pub fn buffer_len(&self) -> usize {
         let mut scratch = [0u8; MAX_LENGTH];
@@ -292,7 +160,7 @@ impl PahrSentence {
 
     /// Checks the ranges ([`PahrSentence::validate`]) and writes the sentence, `$` through
     /// CR LF, into `buf`; returns its size (bytes). Errors: `out_of_range`, `bad_length` if
-    /// the sentence would exceed 82 bytes, `buffer_too_small`.
+    /// the sentence would exceed [`MAX_LENGTH`] bytes, `buffer_too_small`.
     pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
         self.validate()?;
         let mut scratch = [0u8; MAX_LENGTH];
@@ -460,14 +328,7 @@ pub(crate) mod canonical {
     /// The fields of `body` (`$` up to the star), in range, or `None`.
     pub(crate) fn values(body: &[u8]) -> Option<[i64; FIELD_COUNT]> {
         let mut ok = true;
-        let values = [
-            decimal::<4, 2>(body, STARTS[0], &mut ok),
-            decimal::<3, 2>(body, STARTS[1], &mut ok),
-            decimal::<3, 2>(body, STARTS[2], &mut ok),
-            decimal::<3, 1>(body, STARTS[3], &mut ok),
-            decimal::<1, 2>(body, STARTS[4], &mut ok),
-            hex::<4>(body, STARTS[5], &mut ok),
-        ];
+        let values = super::fields::canonical_values(body, &STARTS, &mut ok);
         for ((value, spec), &at) in values.iter().zip(&FIELDS).zip(&STARTS) {
             ok &= *value >= spec.min && *value <= spec.max;
             ok &= body.get(at.wrapping_sub(1)) == Some(&b',');
@@ -479,7 +340,7 @@ pub(crate) mod canonical {
     /// follows it), `.` and `DECIMALS` digits at `body[at..]`, scaled by 10^DECIMALS; clears
     /// `ok` when it is not one.
     #[inline(always)]
-    fn decimal<const WIDTH: usize, const DECIMALS: u32>(
+    pub(super) fn decimal<const WIDTH: usize, const DECIMALS: u32>(
         body: &[u8],
         at: usize,
         ok: &mut bool,
@@ -513,7 +374,7 @@ pub(crate) mod canonical {
     /// A hex field of `WIDTH` digits, either case, at `body[at..]`; clears `ok` when it is not
     /// one.
     #[inline(always)]
-    fn hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
+    pub(super) fn hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
         let Some(text) = body.get(at..at + WIDTH).filter(|_| WIDTH <= MAX_HEX) else {
             *ok = false;
             return 0;
@@ -615,7 +476,7 @@ fn read_hex(body: &[u8], at: usize, width: usize) -> (Option<i64>, usize) {
 }
 
 /// The error for a bad value of field `index`.
-fn refuse(index: usize) -> Error {
+pub(crate) fn refuse(index: usize) -> Error {
     match FIELDS.get(index) {
         Some(spec) => Error::new(ErrorKind::OutOfRange).with_field(spec.name),
         None => Error::new(ErrorKind::OutOfRange),
@@ -623,7 +484,7 @@ fn refuse(index: usize) -> Error {
 }
 
 /// `value` x `scale`, rounded half away from zero; `None` if not finite or too large.
-fn scale_round(value: f64, scale: f64) -> Option<i64> {
+pub(crate) fn scale_round(value: f64, scale: f64) -> Option<i64> {
     let scaled = value * scale;
     if !(scaled > -9.0e18 && scaled < 9.0e18) {
         return None;
@@ -705,6 +566,26 @@ impl<'a> Cursor<'a> {
         if decimals > 0 {
             self.push(b'.');
             self.digits(magnitude % scale, 10, decimals as usize);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{PahrSentence, FIELDS, MAX_LENGTH};
+
+    #[test]
+    fn sentences_round_trip_at_their_limits() {
+        let low = PahrSentence::from_checked(FIELDS.map(|field| field.min)).unwrap();
+        let high = PahrSentence::from_checked(FIELDS.map(|field| field.max)).unwrap();
+        for sentence in [low, high, PahrSentence::default()] {
+            let mut buf = [0u8; MAX_LENGTH];
+            let n = sentence.build(&mut buf).unwrap();
+            assert_eq!(n, sentence.buffer_len());
+            assert_eq!(PahrSentence::parse(&buf[..n]).unwrap(), sentence);
+            for cut in 0..n {
+                assert!(PahrSentence::parse(&buf[..cut]).is_err());
+            }
         }
     }
 }

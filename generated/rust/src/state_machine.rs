@@ -23,10 +23,14 @@
 //! assert_eq!(step.map(|t| t.sends), None);
 //! ```
 
+mod device;
+
+pub use device::{transition, Device, Firmware, Row, Transition};
+
 use crate::command::{Command, Mode};
-use crate::error::{Error, ErrorKind, Result};
 use crate::payload::PayloadKind;
 use crate::status::UswMode;
+use device::row;
 
 /// A state of the device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -109,11 +113,6 @@ impl State {
             State::RunAligning => "run_aligning",
             State::RunAccumulating => "run_accumulating",
         }
-    }
-
-    /// The state whose spec name is `name`.
-    pub fn from_name(name: &str) -> Option<State> {
-        State::ALL.into_iter().find(|state| state.name() == name)
     }
 
     /// The operating mode the device is in.
@@ -312,11 +311,6 @@ impl Event {
         }
     }
 
-    /// The event whose table name is `name`.
-    pub fn from_name(name: &str) -> Option<Event> {
-        Event::ALL.into_iter().find(|event| event.name() == name)
-    }
-
     /// The command, if the event is one.
     pub const fn command(self) -> Option<Command> {
         match self {
@@ -417,21 +411,6 @@ impl Event {
             _ => Event::Unknown,
         }
     }
-
-    /// The event of receiving a data message whose payload is `payload_size` bytes in `state`:
-    /// `parameter_block` when the state expects a block of that size, else `other_message`.
-    pub const fn for_data(payload_size: usize, state: State) -> Event {
-        match state.expects() {
-            Some(block) if block.size() == payload_size => Event::ParameterBlock,
-            _ => Event::OtherMessage,
-        }
-    }
-}
-
-impl From<Command> for Event {
-    fn from(command: Command) -> Event {
-        Event::from_command(command)
-    }
 }
 
 /// What the device sends when it takes a transition.
@@ -496,35 +475,6 @@ impl Answer {
             Answer::OutputSleep => Some(UswMode::Sleep),
             _ => None,
         }
-    }
-}
-
-/// One cell of the table: the state to go to and what to send, in order.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Transition {
-    /// The state after the event.
-    pub next: State,
-    /// What the device sends (none: nothing).
-    pub sends: &'static [Answer],
-}
-
-/// One row of the table: in `state`, on `event`, take `transition`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Row {
-    /// The state the row applies in.
-    pub state: State,
-    /// The event it applies to.
-    pub event: Event,
-    /// What the device does.
-    pub transition: Transition,
-}
-
-/// A row of the table.
-const fn row(state: State, event: Event, next: State, sends: &'static [Answer]) -> Row {
-    Row {
-        state,
-        event,
-        transition: Transition { next, sends },
     }
 }
 
@@ -723,129 +673,5 @@ pub const OLDER_FIRMWARE: [(&[u32], Row); 1] = [
     (&[4, 9, 9, 0], row(State::RunsReady, Event::StopClbRun, State::CalibrationDeciding, &[Answer::CalibrationResult])), // E29
 ];
 
-/// What the device does on `event` in `state`, running `firmware` (`None`: current firmware);
-/// `None` if it ignores the event.
-pub fn transition(state: State, event: Event, firmware: Option<Firmware>) -> Option<Transition> {
-    if let Some(firmware) = firmware {
-        let older = OLDER_FIRMWARE.iter().find(|(before, row)| {
-            row.state == state && row.event == event && firmware.parts() < *before
-        });
-        if let Some((_, row)) = older {
-            return Some(row.transition);
-        }
-    }
-    let at = TRANSITIONS.partition_point(|row| (row.state, row.event) < (state, event));
-    TRANSITIONS
-        .get(at)
-        .filter(|row| row.state == state && row.event == event)
-        .map(|row| row.transition)
-}
-
 /// The most numeric parts a [`Firmware`] version holds.
 pub const MAX_FIRMWARE_PARTS: usize = 8;
-
-/// A firmware version such as `4.9.9.0`: numeric parts, compared in order (a
-/// version that another one extends is the older: 4.9 is before 4.9.0).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Firmware {
-    parts: [u32; MAX_FIRMWARE_PARTS],
-    len: usize,
-}
-
-impl Firmware {
-    /// The version with these parts, or `None` for none or more than [`MAX_FIRMWARE_PARTS`].
-    pub fn new(parts: &[u32]) -> Option<Firmware> {
-        let mut version = Firmware {
-            parts: [0; MAX_FIRMWARE_PARTS],
-            len: parts.len(),
-        };
-        if parts.is_empty() {
-            return None;
-        }
-        version.parts.get_mut(..parts.len())?.copy_from_slice(parts);
-        Some(version)
-    }
-
-    /// Parses a version: decimal numbers separated by `.`. Errors: `malformed` (at the offset
-    /// of the bad part) for an empty or non-numeric part, a number above `u32::MAX` or more than
-    /// [`MAX_FIRMWARE_PARTS`] parts.
-    pub fn parse(text: &str) -> Result<Firmware> {
-        let mut parts = [0u32; MAX_FIRMWARE_PARTS];
-        let mut len = 0;
-        let mut at = 0;
-        for part in text.split('.') {
-            let digits = part.bytes().all(|byte| byte.is_ascii_digit());
-            let value = part.parse::<u32>().ok().filter(|_| digits);
-            match (value, parts.get_mut(len)) {
-                (Some(value), Some(slot)) => *slot = value,
-                _ => return Err(Error::at(ErrorKind::Malformed, at)),
-            }
-            len += 1;
-            at += part.len() + 1;
-        }
-        Ok(Firmware { parts, len })
-    }
-
-    /// The numeric parts.
-    pub fn parts(&self) -> &[u32] {
-        self.parts.get(..self.len).unwrap_or(&self.parts)
-    }
-}
-
-impl PartialOrd for Firmware {
-    fn partial_cmp(&self, other: &Firmware) -> Option<core::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Firmware {
-    fn cmp(&self, other: &Firmware) -> core::cmp::Ordering {
-        self.parts().cmp(other.parts())
-    }
-}
-
-/// A device's state machine: its state and firmware. Events go in; the transition taken (what
-/// to send) comes out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Device {
-    state: State,
-    firmware: Option<Firmware>,
-}
-
-impl Device {
-    /// A device in its initial state, running `firmware` (`None`: current firmware).
-    pub const fn new(firmware: Option<Firmware>) -> Device {
-        Device {
-            state: State::INITIAL,
-            firmware,
-        }
-    }
-
-    /// The current state.
-    pub const fn state(&self) -> State {
-        self.state
-    }
-
-    /// Applies `event`: the transition taken, or `None` if the device ignores it (the state
-    /// stays).
-    pub fn handle(&mut self, event: Event) -> Option<Transition> {
-        let step = transition(self.state, event, self.firmware);
-        if let Some(step) = step {
-            self.state = step.next;
-        }
-        step
-    }
-
-    /// Applies a received command frame with `code`: its event and the transition taken.
-    pub fn handle_command(&mut self, code: u8) -> (Event, Option<Transition>) {
-        let event = Event::for_code(code, self.state);
-        (event, self.handle(event))
-    }
-
-    /// Applies a received data message whose payload is `payload_size` bytes: its event and the
-    /// transition taken.
-    pub fn handle_data(&mut self, payload_size: usize) -> (Event, Option<Transition>) {
-        let event = Event::for_data(payload_size, self.state);
-        (event, self.handle(event))
-    }
-}

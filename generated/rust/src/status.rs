@@ -3,6 +3,11 @@
 
 //! The Unit Status Word (6.5, Table 6.18, Table 6.19): failure flags, warning flags and the mode bits.
 
+mod word;
+
+/// The raw type of a Unit Status Word.
+type Word = u16;
+
 /// One flag of the Unit Status Word.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum StatusFlag {
@@ -75,16 +80,6 @@ impl StatusFlag {
         }
     }
 
-    /// The flag's bit as a mask.
-    pub const fn mask(self) -> u16 {
-        1 << self.bit()
-    }
-
-    /// True for a failure flag, false for a warning.
-    pub const fn is_failure(self) -> bool {
-        self.mask() & StatusWord::FAILURE_MASK != 0
-    }
-
     /// The flag's name in the spec (`initial_alignment_failed`).
     pub const fn name(self) -> &'static str {
         match self {
@@ -119,37 +114,17 @@ pub enum UswMode {
 
 /// A Unit Status Word (6.5, Table 6.18, Table 6.19).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct StatusWord(pub u16);
+pub struct StatusWord(pub Word);
 
 impl StatusWord {
     /// The bits of the failure byte.
-    pub const FAILURE_MASK: u16 = 0x00FF;
+    pub const FAILURE_MASK: Word = 0x00FF;
     /// The bits of the warning byte.
-    pub const WARNING_MASK: u16 = 0xFF00;
+    pub const WARNING_MASK: Word = 0xFF00;
     /// The mode bits.
-    pub const MODE_MASK: u16 = 0x8080;
+    pub const MODE_MASK: Word = 0x8080;
     /// Every flag bit.
-    pub const FLAGS_MASK: u16 = 0x7F7F;
-
-    /// The word as sent.
-    pub const fn raw(self) -> u16 {
-        self.0
-    }
-
-    /// True if `flag` is set.
-    pub const fn contains(self, flag: StatusFlag) -> bool {
-        self.0 & flag.mask() != 0
-    }
-
-    /// True if any failure flag is set.
-    pub const fn has_failure(self) -> bool {
-        self.0 & Self::FLAGS_MASK & Self::FAILURE_MASK != 0
-    }
-
-    /// True if any warning flag is set.
-    pub const fn has_warning(self) -> bool {
-        self.0 & Self::FLAGS_MASK & Self::WARNING_MASK != 0
-    }
+    pub const FLAGS_MASK: Word = 0x7F7F;
 
     /// The mode the mode bits report.
     pub const fn mode(self) -> UswMode {
@@ -158,13 +133,6 @@ impl StatusWord {
             0x8080 => UswMode::Sleep,
             _ => UswMode::Unknown,
         }
-    }
-
-    /// The flags that are set, lowest bit first.
-    pub fn flags(self) -> impl Iterator<Item = StatusFlag> {
-        StatusFlag::ALL
-            .into_iter()
-            .filter(move |flag| self.contains(*flag))
     }
 
     /// Bit 0 (Initial Alignment): Unsuccessful initial alignment (AHRS moved or the magnetic field changed).
@@ -235,11 +203,5 @@ impl StatusWord {
     /// Bit 14 (Environmental Temperature): Temperature outside the operating range.
     pub const fn temperature_out_of_range(self) -> bool {
         self.contains(StatusFlag::TemperatureOutOfRange)
-    }
-}
-
-impl From<u16> for StatusWord {
-    fn from(raw: u16) -> StatusWord {
-        StatusWord(raw)
     }
 }

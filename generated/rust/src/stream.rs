@@ -1,6 +1,5 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-// Do not edit: change the spec or the generator and run `make generate`.
-
+// Copied from generator/targets/rust/runtime/crate/stream.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
 //! A stream decoder: bytes in, frames and $PAHR sentences out ("leftmost valid message").
 //!
 //! At each position a valid frame or a valid sentence is accepted and consumed; otherwise one
@@ -12,10 +11,13 @@
 //! input ends.
 //!
 //! ```
+//! use ilahrs::frame::HEADER;
 //! use ilahrs::stream::{Event, StreamDecoder};
 //!
+//! // A header with nothing behind it, between two stray bytes.
+//! let bytes = [&[0x00][..], &HEADER, &[0x00]].concat();
 //! let mut decoder = StreamDecoder::new();
-//! let mut input: &[u8] = &[0x00, 0xAA, 0x55, 0x00];
+//! let mut input = &bytes[..];
 //! while !input.is_empty() {
 //!     let (used, event) = decoder.decode(input);
 //!     if let Some(Event::Frame(frame)) = event {
@@ -24,7 +26,7 @@
 //!     input = &input[used..];
 //! }
 //! decoder.finish(|_event| {});
-//! assert_eq!(decoder.discarded(), 4);
+//! assert_eq!(decoder.discarded(), bytes.len() as u64);
 //! ```
 
 use crate::frame::{check_frame, field, Frame, HEADER, HEADER_SIZE};
@@ -34,12 +36,12 @@ use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, P
 use crate::wire;
 
 /// The most bytes the decoder holds: the longest frame or sentence (bytes).
-pub const MAX_MESSAGE_SIZE: usize = 82;
+pub const MAX_MESSAGE_SIZE: usize = crate::MAX_MESSAGE_SIZE;
 
 /// The byte a frame starts with.
 const FRAME_START: u8 = HEADER[0];
 /// The byte a sentence starts with.
-const SENTENCE_START: u8 = b'$';
+const SENTENCE_START: u8 = PREFIX[0];
 
 /// An accepted message, borrowed from the input or from the decoder.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -463,7 +465,7 @@ impl Waiting {
                 Waiting::Frame(field::PAYLOAD_START)
             }
             Some(&FRAME_START) => {
-                let length = wire::get_u16(held, field::MESSAGE_LENGTH);
+                let length = wire::get::<u16>(held, field::MESSAGE_LENGTH);
                 Waiting::Frame(field::checksum(usize::from(length)).end)
             }
             Some(&SENTENCE_START) if held.len() >= PREFIX.len() && held.last() != Some(&b'\r') => {

@@ -56,13 +56,9 @@ impl Variant {
 
     /// The variant whose spec name is `name`, if any.
     pub fn from_name(name: &str) -> Option<Variant> {
-        match name {
-            "g300_a2_tmga" => Some(Variant::G300A2Tmga),
-            "g300_a6_tmga" => Some(Variant::G300A6Tmga),
-            "sn_11ac0001_0009" => Some(Variant::Sn11ac00010009),
-            "g300_a2_tga" => Some(Variant::G300A2Tga),
-            _ => None,
-        }
+        Variant::ALL
+            .into_iter()
+            .find(|variant| variant.name() == name)
     }
 
     /// The part number (or serial range) the variant stands for.

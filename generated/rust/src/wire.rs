@@ -1,8 +1,7 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-// Do not edit: change the spec or the generator and run `make generate`.
-
+// Copied from generator/targets/rust/runtime/crate/wire.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
 //! Byte-level helpers: fixed-size reads and writes at a field's position that cannot panic,
-//! whatever the buffer. Multi-byte values are little-endian (the spec's `byte_order`).
+//! whatever the buffer. Numbers are sent in the spec's `byte_order` ([`crate::BIG_ENDIAN`]).
 
 use core::ops::Range;
 
@@ -42,56 +41,6 @@ pub(crate) fn trim_nul(data: &[u8]) -> &[u8] {
     data.get(..end).unwrap_or(&[])
 }
 
-/// A `u8` at `field` (0 when absent).
-pub(crate) fn get_u8(data: &[u8], field: Field) -> u8 {
-    u8::from_le_bytes(array(data, field))
-}
-
-/// Writes a `u8` at `field`.
-pub(crate) fn set_u8(data: &mut [u8], field: Field, value: u8) {
-    put(data, field, &value.to_le_bytes());
-}
-
-/// A `u16` at `field` (0 when absent).
-pub(crate) fn get_u16(data: &[u8], field: Field) -> u16 {
-    u16::from_le_bytes(array(data, field))
-}
-
-/// Writes a `u16` at `field`.
-pub(crate) fn set_u16(data: &mut [u8], field: Field, value: u16) {
-    put(data, field, &value.to_le_bytes());
-}
-
-/// A `i16` at `field` (0 when absent).
-pub(crate) fn get_i16(data: &[u8], field: Field) -> i16 {
-    i16::from_le_bytes(array(data, field))
-}
-
-/// Writes a `i16` at `field`.
-pub(crate) fn set_i16(data: &mut [u8], field: Field, value: i16) {
-    put(data, field, &value.to_le_bytes());
-}
-
-/// A `u32` at `field` (0 when absent).
-pub(crate) fn get_u32(data: &[u8], field: Field) -> u32 {
-    u32::from_le_bytes(array(data, field))
-}
-
-/// Writes a `u32` at `field`.
-pub(crate) fn set_u32(data: &mut [u8], field: Field, value: u32) {
-    put(data, field, &value.to_le_bytes());
-}
-
-/// An `f32` at `field` (0.0 when absent); every bit pattern, NaNs included, is kept.
-pub(crate) fn get_f32(data: &[u8], field: Field) -> f32 {
-    f32::from_bits(get_u32(data, field))
-}
-
-/// Writes an `f32` at `field`, bit for bit.
-pub(crate) fn set_f32(data: &mut [u8], field: Field, value: f32) {
-    set_u32(data, field, value.to_bits());
-}
-
 /// Writes `value` at `field`, padded with NUL bytes; does nothing if it is longer than the field.
 pub(crate) fn set_padded(data: &mut [u8], field: Field, value: &[u8]) {
     if let Some(out) = data.get_mut(field) {
@@ -117,5 +66,60 @@ pub(crate) fn round_half_away(value: f64) -> Option<i64> {
         Some(truncated - 1)
     } else {
         Some(truncated)
+    }
+}
+
+/// The number of type `T` at `field` (0 when the buffer does not hold it).
+pub(crate) fn get<T: Number>(data: &[u8], field: Field) -> T {
+    T::read(data, field)
+}
+
+/// Writes the number `value` at `field`; does nothing when the buffer does not hold the field.
+pub(crate) fn set<T: Number>(data: &mut [u8], field: Field, value: T) {
+    value.write(data, field);
+}
+
+/// A number as it is sent: an integer, or an IEEE 754 float32 kept bit for bit (NaNs included).
+pub(crate) trait Number: Copy {
+    /// The number at `field` (0 when the buffer does not hold it).
+    fn read(data: &[u8], field: Field) -> Self;
+    /// Writes the number at `field`; does nothing when the buffer does not hold the field.
+    fn write(self, data: &mut [u8], field: Field);
+}
+
+/// `Number` for integer types, in the spec's byte order.
+macro_rules! integers {
+    ($($type:ty),*) => {$(
+        impl Number for $type {
+            fn read(data: &[u8], field: Field) -> $type {
+                let bytes = array(data, field);
+                if crate::BIG_ENDIAN {
+                    <$type>::from_be_bytes(bytes)
+                } else {
+                    <$type>::from_le_bytes(bytes)
+                }
+            }
+
+            fn write(self, data: &mut [u8], field: Field) {
+                let bytes = if crate::BIG_ENDIAN {
+                    self.to_be_bytes()
+                } else {
+                    self.to_le_bytes()
+                };
+                put(data, field, &bytes);
+            }
+        }
+    )*};
+}
+
+integers!(u8, i8, u16, i16, u32, i32);
+
+impl Number for f32 {
+    fn read(data: &[u8], field: Field) -> f32 {
+        f32::from_bits(u32::read(data, field))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        self.to_bits().write(data, field);
     }
 }

@@ -1,10 +1,8 @@
-{% with prefix = "// " %}{% include "_notice.j2" %}{% endwith %}
-
 //! Adapters over [`std::io::Read`] (feature `std`): the messages of a byte source, one at a
 //! time, through a [`StreamDecoder`].
 //!
 //! ```
-//! use {{ spec.name }}::io::Messages;
+//! use ilahrs::io::Messages;
 //!
 //! let capture: &[u8] = &[0x00, 0x01, 0x02];
 //! let mut messages = Messages::new(capture);

@@ -1,8 +1,4 @@
-{% with prefix = "// " %}{% include "_notice.j2" %}{% endwith %}
-{% set n = spec.nmea %}
-{% set fr = spec.frame %}
-
-//! The conformance runner of the `{{ spec.name }}` crate: reads requests on standard input, one per
+//! The conformance runner of the `ilahrs` crate: reads requests on standard input, one per
 //! line, and answers each on one line (conformance/README.md, "The runner protocol"). It holds
 //! no test logic and no protocol knowledge beyond what the crate exposes.
 
@@ -10,11 +6,11 @@
 
 use std::io::{self, BufRead, Write};
 
-use {{ spec.name }}::payload::{AnyPayload, FieldKind, PayloadKind, Value};
-{% if spec.state_machine %}
-use {{ spec.name }}::state_machine::{Device, Event, Firmware};
-{% endif %}
-use {{ spec.name }}::{Error, ErrorKind, FrameRepr, MessageType, PahrSentence, StreamDecoder, Variant};
+use ilahrs::payload::{AnyPayload, FieldKind, PayloadKind, Value};
+use ilahrs::{Error, ErrorKind, FrameRepr, MessageType, StreamDecoder, Variant};
+
+mod nmea;
+mod session;
 
 /// An answer line, or the error to report.
 type Answer = Result<String, Refusal>;
@@ -63,32 +59,30 @@ fn answer(line: &str) -> Answer {
     let args: Vec<&str> = tokens.collect();
     let arg = |index: usize| args.get(index).copied().ok_or(Refusal::Unsupported);
     match kind {
-        "checksum" => Ok(format!("ok {}", {{ spec.name }}::checksum(&read_hex(arg(0)?)?))),
+        "checksum" => Ok(format!("ok {}", ilahrs::checksum(&read_hex(arg(0)?)?))),
         "frame_decode" => frame_decode(&read_hex(arg(0)?)?),
         "frame_encode" => frame_encode(arg(0)?, &read_hex(arg(1)?)?, args.get(2).copied()),
         "command_encode" => {
-            let mut buf = [0u8; {{ spec.name }}::frame::MAX_FRAME_SIZE];
-            let n = {{ spec.name }}::build_command(arg(0)?, &mut buf)?;
+            let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+            let n = ilahrs::build_command(arg(0)?, &mut buf)?;
             Ok(format!("ok {}", write_hex(&buf[..n])))
         }
         "command_decode" => {
-            let (code, commands) = {{ spec.name }}::decode_command(&read_hex(arg(0)?)?)?;
+            let (code, commands) = ilahrs::decode_command(&read_hex(arg(0)?)?)?;
             let names: Vec<&str> = commands.iter().map(|command| command.name()).collect();
             Ok(format!("ok code={code} names={}", names.join(",")))
         }
         "ack" => {
-            let mut buf = [0u8; {{ spec.name }}::frame::MAX_FRAME_SIZE];
-            let n = {{ spec.name }}::ack_for(&read_hex(arg(0)?)?, &mut buf)?;
+            let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+            let n = ilahrs::ack_for(&read_hex(arg(0)?)?, &mut buf)?;
             Ok(format!("ok {}", write_hex(&buf[..n])))
         }
         "payload_decode" => payload_decode(arg(0)?, &read_hex(arg(1)?)?, args.get(2).copied()),
         "payload_encode" => payload_encode(arg(0)?, args.get(2..).unwrap_or(&[])),
-        "nmea_decode" => nmea_decode(&read_text(arg(0)?)?),
-        "nmea_encode" => nmea_encode(&args),
+        "nmea_decode" => nmea::decode(&read_text(arg(0)?)?),
+        "nmea_encode" => nmea::encode(&args),
         "stream" => stream(args.first().copied().unwrap_or("")),
-{% if spec.state_machine %}
-        "session" => session(arg(0)?, arg(1)?),
-{% endif %}
+        "session" => session::run(arg(0)?, arg(1)?),
         _ => Err(Refusal::Unsupported),
     }
 }
@@ -107,13 +101,13 @@ fn frame_encode(message_type: &str, payload: &[u8], reserved: Option<&str>) -> A
     let message_type = match message_type.parse::<u8>() {
         Ok(raw) => MessageType::try_from(raw)?,
         Err(_) => {
-            let field = {{ fr.field("message_type").name | string }}.to_string();
+            let field = "message_type".to_string();
             return Err(Refusal::Named(ErrorKind::BadMessageType, field));
         }
     };
     let reserved = match reserved {
         Some(text) => text.parse::<u8>().map_err(|_| {
-            let field = {{ fr.field("reserved").name | string }}.to_string();
+            let field = "reserved".to_string();
             Refusal::Named(ErrorKind::OutOfRange, field)
         })?,
         None => 0,
@@ -123,7 +117,7 @@ fn frame_encode(message_type: &str, payload: &[u8], reserved: Option<&str>) -> A
         reserved,
         payload,
     };
-    let mut buf = [0u8; {{ spec.name }}::frame::MAX_FRAME_SIZE];
+    let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
     let n = repr.build(&mut buf)?;
     Ok(format!("ok {}", write_hex(&buf[..n])))
 }
@@ -188,60 +182,15 @@ fn payload_encode(name: &str, pairs: &[&str]) -> Answer {
         };
         payload.set_value(index, value)?;
     }
-    let mut buf = [0u8; {{ spec.name }}::frame::MAX_PAYLOAD];
+    let mut buf = [0u8; ilahrs::frame::MAX_PAYLOAD];
     let n = payload.build(&mut buf)?;
     Ok(format!("ok {}", write_hex(&buf[..n])))
-}
-
-fn nmea_decode(text: &[u8]) -> Answer {
-    let sentence = PahrSentence::parse(text)?;
-    Ok(format!(
-        "ok {{ n.fields | map(attribute="name") | map("format_pair") | join(" ") }}",
-{% for f in n.fields %}
-{% if f.format == "decimal" %}
-        write_num(sentence.{{ f.name | ident }}_{{ nmea_unit_suffix(spec, f) }}(), false),
-{% else %}
-        sentence.{{ f.name | ident }},
-{% endif %}
-{% endfor %}
-    ))
-}
-
-fn nmea_encode(pairs: &[&str]) -> Answer {
-    let mut values: Vec<(&str, &str)> = Vec::new();
-    for pair in pairs {
-        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
-    }
-    let get = |name: &str| {
-        values
-            .iter()
-            .find(|(key, _)| *key == name)
-            .map(|(_, token)| *token)
-            .ok_or(Refusal::Unsupported)
-    };
-{% for f in n.fields %}
-{% if f.format == "decimal" %}
-    let {{ f.name | ident }}: f64 = get({{ f.name | string }})?.parse().unwrap_or(f64::NAN);
-{% else %}
-    let {{ f.name | ident }}_raw = read_int(get({{ f.name | string }})?);
-    let {{ f.name | ident }} = {{ f | nmea_type }}::try_from({{ f.name | ident }}_raw).unwrap_or_default();
-{% endif %}
-{% endfor %}
-    {{ seq(n.fields | map(attribute="name") | map("ident") | list, 4, "let sentence = PahrSentence::from_engineering", "?;", "()") }}
-{% for f in n.fields if f.format != "decimal" %}
-    if {{ f | nmea_type }}::try_from({{ f.name | ident }}_raw).is_err() {
-        return Err(Refusal::Named(ErrorKind::OutOfRange, {{ f.name | string }}.to_string()));
-    }
-{% endfor %}
-    let mut buf = [0u8; {{ spec.name }}::nmea::MAX_LENGTH];
-    let n = sentence.build(&mut buf)?;
-    Ok(format!("ok {}", write_text(&buf[..n])))
 }
 
 fn stream(chunks: &str) -> Answer {
     let mut decoder = StreamDecoder::new();
     let mut events: Vec<String> = Vec::new();
-    let mut record = |event: {{ spec.name }}::Event<'_>| {
+    let mut record = |event: ilahrs::Event<'_>| {
         let token = match event.sentence() {
             Some(_) => format!("N:{}", write_text(event.as_bytes())),
             None => format!("F:{}", write_hex(event.as_bytes())),
@@ -265,50 +214,21 @@ fn stream(chunks: &str) -> Answer {
     ))
 }
 
-{% if spec.state_machine %}
-/// Runs the device state machine from its initial state: `C:HH` a command code, `D:N` a data
-/// message of N payload bytes, `E:NAME` another event; one `EVENT>STATE>SENDS` step each.
-fn session(firmware: &str, events: &str) -> Answer {
-    let firmware = match firmware {
-        "-" => None,
-        text => Some(Firmware::parse(text)?),
-    };
-    let mut device = Device::new(firmware);
-    let mut steps: Vec<String> = Vec::new();
-    for token in events.split(',') {
-        let (event, step) = match token.split_once(':') {
-            Some(("C", code)) => {
-                let code = u8::from_str_radix(code, 16).map_err(|_| Refusal::Unsupported)?;
-                device.handle_command(code)
-            }
-            Some(("D", size)) => {
-                let size = size.parse().map_err(|_| Refusal::Unsupported)?;
-                device.handle_data(size)
-            }
-            Some(("E", name)) => {
-                let event = Event::from_name(name).ok_or(Refusal::Unsupported)?;
-                (event, device.handle(event))
-            }
-            _ => return Err(Refusal::Unsupported),
-        };
-        let sends: Vec<&str> = step
-            .map(|step| step.sends)
-            .unwrap_or(&[])
-            .iter()
-            .map(|answer| answer.name())
-            .collect();
-        let sends = if sends.is_empty() {
-            "-".to_string()
-        } else {
-            sends.join("+")
-        };
-        let state = device.state().name();
-        steps.push(format!("{}>{state}>{sends}", event.name()));
+/// `NAME=VALUE` tokens, and a lookup of the value named `name` (unsupported when absent).
+fn read_pairs<'a>(pairs: &[&'a str]) -> Result<impl Fn(&str) -> Result<&'a str, Refusal>, Refusal> {
+    let mut values: Vec<(&str, &str)> = Vec::new();
+    for pair in pairs {
+        values.push(pair.split_once('=').ok_or(Refusal::Unsupported)?);
     }
-    Ok(format!("ok steps={}", steps.join(",")))
+    Ok(move |name: &str| {
+        values
+            .iter()
+            .find(|(key, _)| *key == name)
+            .map(|(_, token)| *token)
+            .ok_or(Refusal::Unsupported)
+    })
 }
 
-{% endif %}
 /// An INT token; one beyond 64 bits (or not a number) saturates, so that range checks refuse it.
 fn read_int(token: &str) -> i64 {
     match token.parse::<i64>() {

@@ -1,7 +1,5 @@
-{% with prefix = "// " %}{% include "_notice.j2" %}{% endwith %}
-{% set n = spec.nmea %}
-
-//! The ${{ n.identifier }} sentence ({{ n.icd }}): `{{ n.template }}`.
+//! The $PAHR sentence: `$`, the identifier, comma-separated decimal and hex fields, `*`, two hex
+//! checksum digits, CR LF (the spec's `nmea`; its fields in [`PahrSentence`]).
 //!
 //! Values are held as integers scaled by 10^decimals (roll 12.34 degrees is 1234), so parsing
 //! and building are exact and need no floating point. Building zero-pads each decimal field's
@@ -10,37 +8,28 @@
 //! and either hex case. Neither allocates: [`PahrSentence::build`] writes into a caller's buffer.
 //!
 //! ```
-//! use {{ spec.name }}::PahrSentence;
+//! use ilahrs::PahrSentence;
 //!
-//! let sentence = PahrSentence {
-{% for f in n.fields %}
-//!     {{ f.name | ident }}: {{ f.max // 2 }},
-{% endfor %}
-//! };
-//! let mut buf = [0u8; {{ spec.name }}::nmea::MAX_LENGTH];
+//! let sentence = PahrSentence::default();
+//! let mut buf = [0u8; ilahrs::nmea::MAX_LENGTH];
 //! let n = sentence.build(&mut buf)?;
 //! assert_eq!(PahrSentence::parse(&buf[..n])?, sentence);
-//! # Ok::<(), {{ spec.name }}::Error>(())
+//! # Ok::<(), ilahrs::Error>(())
 //! ```
 
 use crate::error::{Error, ErrorKind, Result};
 
-/// The identifier after `$`.
-pub const IDENTIFIER: &[u8] = {{ n.identifier | byte_string }};
-/// What every sentence starts with: `$`, the identifier and a comma.
-pub const PREFIX: &[u8] = {{ ("$" ~ n.identifier ~ ",") | byte_string }};
-/// The longest sentence, `$` through CR LF (bytes).
-pub const MAX_LENGTH: usize = {{ n.max_length }};
-/// The most sentences the AHRS sends per second (Hz).
-pub const MAX_RATE_HZ: u32 = {{ n.max_rate_hz }};
-/// The number of fields.
-pub const FIELD_COUNT: usize = {{ n.fields | length }};
+mod fields;
+
+use fields::FIELDS;
+pub use fields::{PahrSentence, FIELD_COUNT, IDENTIFIER, MAX_LENGTH, MAX_RATE_HZ, PREFIX};
+
 /// `*`, two checksum digits, CR, LF (bytes).
 const TAIL: usize = 5;
 
 /// How a field is written.
 #[derive(Clone, Copy)]
-enum Format {
+pub(crate) enum Format {
     /// An optional `-`, digits, and up to `decimals` fraction digits; the value is scaled by
     /// 10^decimals.
     Decimal { width: usize, decimals: u32 },
@@ -50,39 +39,42 @@ enum Format {
 
 /// What a field is and which values it takes.
 #[derive(Clone, Copy)]
-struct FieldSpec {
+pub(crate) struct FieldSpec {
     name: &'static str,
     format: Format,
     min: i64,
     max: i64,
 }
 
-/// The fields, in sentence order.
-const FIELDS: [FieldSpec; FIELD_COUNT] = [
-{% for f in n.fields %}
-    FieldSpec {
-        name: {{ f.name | string }},
-{% if f.format == "hex" %}
-        format: Format::Hex { width: {{ f.width }} },
-{% else %}
-        format: Format::Decimal {
-            width: {{ f.width }},
-            decimals: {{ f.decimals }},
-        },
-{% endif %}
-        min: {{ f.min }},
-        max: {{ f.max }},
-    },
-{% endfor %}
-];
+impl FieldSpec {
+    /// A decimal field: `width` integer characters (the sign counting as one), `decimals`
+    /// fraction digits, its scaled value in `min..=max`.
+    pub(crate) const fn decimal(
+        name: &'static str,
+        width: usize,
+        decimals: u32,
+        min: i64,
+        max: i64,
+    ) -> FieldSpec {
+        let format = Format::Decimal { width, decimals };
+        FieldSpec {
+            name,
+            format,
+            min,
+            max,
+        }
+    }
 
-/// A ${{ n.identifier }} sentence: every field as a scaled integer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct PahrSentence {
-{% for f in n.fields %}
-    /// `{{ f.icd_name }}`: {{ f.doc | escape_doc }}{% if f.format == "decimal" %} Scaled by {{ f.decimals | power_of_ten }}{% endif %}, {{ f.min }} to {{ f.max }}.
-    pub {{ f.name | ident }}: {{ f | nmea_type }},
-{% endfor %}
+    /// A hex field of 1 to `width` digits, its value in `min..=max`.
+    pub(crate) const fn hex(name: &'static str, width: usize, min: i64, max: i64) -> FieldSpec {
+        let format = Format::Hex { width };
+        FieldSpec {
+            name,
+            format,
+            min,
+            max,
+        }
+    }
 }
 
 /// The sentence checksum of `body`: the XOR of its bytes.
@@ -103,7 +95,7 @@ impl PahrSentence {
     /// Decodes exactly one sentence, `$` through CR LF.
     ///
     /// Checks, in order: `$` (`bad_header` at 0), the identifier and comma (`bad_header` at 1),
-    /// the CR LF end (`truncated`, `bad_length` at {{ n.max_length }}, `trailing_data`), `*` and two hex
+    /// the CR LF end (`truncated`, `bad_length` at [`MAX_LENGTH`], `trailing_data`), `*` and two hex
     /// digits before it (`malformed`), the checksum (`bad_checksum` at its first digit), the
     /// number of fields (`malformed`), then each field's grammar (`malformed`) and range
     /// (`out_of_range`), naming the field, at its offset.
@@ -139,33 +131,10 @@ impl PahrSentence {
     }
 
     /// The sentence with these scaled values (sentence order), checked against the ranges.
-    fn from_scaled(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
+    pub(crate) fn from_scaled(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
         let sentence = PahrSentence::from_checked(values)?;
         sentence.validate()?;
         Ok(sentence)
-    }
-
-    /// The sentence with these scaled values (sentence order), already checked against the
-    /// ranges.
-    fn from_checked(values: [i64; FIELD_COUNT]) -> Result<PahrSentence> {
-{% for f in n.fields %}
-        let {{ f.name | ident }} = {{ f | nmea_type }}::try_from(values[{{ loop.index0 }}]);
-{% endfor %}
-        let sentence = PahrSentence {
-{% for f in n.fields %}
-            {{ f.name | ident }}: {{ f.name | ident }}.map_err(|_| refuse({{ loop.index0 }}))?,
-{% endfor %}
-        };
-        Ok(sentence)
-    }
-
-    /// The scaled values, in sentence order.
-    fn scaled(&self) -> [i64; FIELD_COUNT] {
-        [
-{% for f in n.fields %}
-            i64::from(self.{{ f.name | ident }}),
-{% endfor %}
-        ]
     }
 
     /// Checks every field against its range, in sentence order: `out_of_range` naming the
@@ -179,37 +148,6 @@ impl PahrSentence {
         Ok(())
     }
 
-    /// The sentence from engineering values, each rounded half away from zero to its
-    /// resolution. Errors: `out_of_range` naming the first field that is not finite or is
-    /// outside its range.
-{% set params = [] %}
-{% for f in n.fields %}
-{% if f.format == "decimal" %}
-{% set _ = params.append((f.name | ident) ~ "_" ~ nmea_unit_suffix(spec, f) ~ ": f64") %}
-{% else %}
-{% set _ = params.append((f.name | ident) ~ ": " ~ (f | nmea_type)) %}
-{% endif %}
-{% endfor %}
-    {{ signature("pub fn from_engineering", params, " -> Result<PahrSentence>", 4) }}
-        let values = [
-{% for f in n.fields %}
-{% if f.format == "decimal" %}
-            scale_round({{ f.name | ident }}_{{ nmea_unit_suffix(spec, f) }}, {{ f.decimals | power_of_ten | f64 }}).ok_or(refuse({{ loop.index0 }}))?,
-{% else %}
-            i64::from({{ f.name | ident }}),
-{% endif %}
-{% endfor %}
-        ];
-        PahrSentence::from_scaled(values)
-    }
-{% for f in n.fields if f.format == "decimal" %}
-
-    /// `{{ f.icd_name }}` in {{ nmea_unit_doc(spec, f) }}.
-    pub fn {{ f.name | ident }}_{{ nmea_unit_suffix(spec, f) }}(&self) -> f64 {
-        f64::from(self.{{ f.name | ident }}) / {{ f.decimals | power_of_ten | f64 }}
-    }
-{% endfor %}
-
     /// The size of the sentence [`PahrSentence::build`] writes, `$` through CR LF (bytes).
     pub fn buffer_len(&self) -> usize {
         let mut scratch = [0u8; MAX_LENGTH];
@@ -220,7 +158,7 @@ impl PahrSentence {
 
     /// Checks the ranges ([`PahrSentence::validate`]) and writes the sentence, `$` through
     /// CR LF, into `buf`; returns its size (bytes). Errors: `out_of_range`, `bad_length` if
-    /// the sentence would exceed {{ n.max_length }} bytes, `buffer_too_small`.
+    /// the sentence would exceed [`MAX_LENGTH`] bytes, `buffer_too_small`.
     pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
         self.validate()?;
         let mut scratch = [0u8; MAX_LENGTH];
@@ -388,15 +326,7 @@ pub(crate) mod canonical {
     /// The fields of `body` (`$` up to the star), in range, or `None`.
     pub(crate) fn values(body: &[u8]) -> Option<[i64; FIELD_COUNT]> {
         let mut ok = true;
-        let values = [
-{% for f in n.fields %}
-{% if f.format == "hex" %}
-            hex::<{{ f.width }}>(body, STARTS[{{ loop.index0 }}], &mut ok),
-{% else %}
-            decimal::<{{ f.width }}, {{ f.decimals }}>(body, STARTS[{{ loop.index0 }}], &mut ok),
-{% endif %}
-{% endfor %}
-        ];
+        let values = super::fields::canonical_values(body, &STARTS, &mut ok);
         for ((value, spec), &at) in values.iter().zip(&FIELDS).zip(&STARTS) {
             ok &= *value >= spec.min && *value <= spec.max;
             ok &= body.get(at.wrapping_sub(1)) == Some(&b',');
@@ -408,7 +338,7 @@ pub(crate) mod canonical {
     /// follows it), `.` and `DECIMALS` digits at `body[at..]`, scaled by 10^DECIMALS; clears
     /// `ok` when it is not one.
     #[inline(always)]
-    fn decimal<const WIDTH: usize, const DECIMALS: u32>(
+    pub(super) fn decimal<const WIDTH: usize, const DECIMALS: u32>(
         body: &[u8],
         at: usize,
         ok: &mut bool,
@@ -442,7 +372,7 @@ pub(crate) mod canonical {
     /// A hex field of `WIDTH` digits, either case, at `body[at..]`; clears `ok` when it is not
     /// one.
     #[inline(always)]
-    fn hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
+    pub(super) fn hex<const WIDTH: usize>(body: &[u8], at: usize, ok: &mut bool) -> i64 {
         let Some(text) = body.get(at..at + WIDTH).filter(|_| WIDTH <= MAX_HEX) else {
             *ok = false;
             return 0;
@@ -544,7 +474,7 @@ fn read_hex(body: &[u8], at: usize, width: usize) -> (Option<i64>, usize) {
 }
 
 /// The error for a bad value of field `index`.
-fn refuse(index: usize) -> Error {
+pub(crate) fn refuse(index: usize) -> Error {
     match FIELDS.get(index) {
         Some(spec) => Error::new(ErrorKind::OutOfRange).with_field(spec.name),
         None => Error::new(ErrorKind::OutOfRange),
@@ -552,7 +482,7 @@ fn refuse(index: usize) -> Error {
 }
 
 /// `value` x `scale`, rounded half away from zero; `None` if not finite or too large.
-fn scale_round(value: f64, scale: f64) -> Option<i64> {
+pub(crate) fn scale_round(value: f64, scale: f64) -> Option<i64> {
     let scaled = value * scale;
     if !(scaled > -9.0e18 && scaled < 9.0e18) {
         return None;
@@ -634,6 +564,26 @@ impl<'a> Cursor<'a> {
         if decimals > 0 {
             self.push(b'.');
             self.digits(magnitude % scale, 10, decimals as usize);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{PahrSentence, FIELDS, MAX_LENGTH};
+
+    #[test]
+    fn sentences_round_trip_at_their_limits() {
+        let low = PahrSentence::from_checked(FIELDS.map(|field| field.min)).unwrap();
+        let high = PahrSentence::from_checked(FIELDS.map(|field| field.max)).unwrap();
+        for sentence in [low, high, PahrSentence::default()] {
+            let mut buf = [0u8; MAX_LENGTH];
+            let n = sentence.build(&mut buf).unwrap();
+            assert_eq!(n, sentence.buffer_len());
+            assert_eq!(PahrSentence::parse(&buf[..n]).unwrap(), sentence);
+            for cut in 0..n {
+                assert!(PahrSentence::parse(&buf[..cut]).is_err());
+            }
         }
     }
 }

@@ -1,54 +1,16 @@
-{% with prefix = "// " %}{% include "_notice.j2" %}{% endwith %}
-
 //! Errors: one list of kinds for every binding (`errors` in the spec), carried with the byte
 //! offset of the problem and, where one applies, the field's name.
 
 use core::fmt;
 
-/// What went wrong. The spec's one list of error kinds, shared with every other binding.
-#[non_exhaustive]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ErrorKind {
-{% for error in spec.errors %}
-{{ error.doc | doc(4) }}
-    {{ error.name | type_name }},
-{% endfor %}
-}
+mod kind;
+
+pub use kind::ErrorKind;
 
 impl ErrorKind {
-    /// Every kind, in the spec's order.
-    pub const ALL: [ErrorKind; {{ spec.errors | length }}] = [
-{% for error in spec.errors %}
-        ErrorKind::{{ error.name | type_name }},
-{% endfor %}
-    ];
-
-    /// The kind's name in the spec (`bad_checksum`), the same in every binding.
-    pub const fn name(self) -> &'static str {
-        match self {
-{% for error in spec.errors %}
-            ErrorKind::{{ error.name | type_name }} => {{ error.name | string }},
-{% endfor %}
-        }
-    }
-
     /// The kind whose spec name is `name`, if any.
     pub fn from_name(name: &str) -> Option<ErrorKind> {
-        match name {
-{% for error in spec.errors %}
-            {{ error.name | string }} => Some(ErrorKind::{{ error.name | type_name }}),
-{% endfor %}
-            _ => None,
-        }
-    }
-
-    /// One sentence saying what the kind means.
-    pub const fn doc(self) -> &'static str {
-        match self {
-{% for error in spec.errors %}
-            {{ arm("ErrorKind::" ~ (error.name | type_name), error.doc | string, 12) }}
-{% endfor %}
-        }
+        ErrorKind::ALL.into_iter().find(|kind| kind.name() == name)
     }
 }
 

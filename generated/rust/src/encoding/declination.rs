@@ -1,0 +1,40 @@
+// Copied from generator/targets/rust/runtime/crate/encoding/declination.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
+//! The magnetic declination field: degrees, or a value above a threshold that asks the AHRS to
+//! compute the declination itself.
+
+/// The magnetic declination field: degrees, or a request that the AHRS compute it (the limits
+/// are the constants of [`Declination`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Declination {
+    /// A declination (degrees), [`Declination::MIN`] to [`Declination::MAX`].
+    Degrees(f32),
+    /// Any value above [`Declination::COMPUTE_ABOVE`]: the AHRS computes the declination from
+    /// position and date.
+    Computed,
+}
+
+impl Declination {
+    /// What a raw field value (degrees) means.
+    pub fn decode(raw: f32) -> Declination {
+        if f64::from(raw) > Self::COMPUTE_ABOVE {
+            Declination::Computed
+        } else {
+            Declination::Degrees(raw)
+        }
+    }
+
+    /// The raw value to send (degrees), or `None` for degrees outside the range.
+    pub fn encode(self) -> Option<f32> {
+        match self {
+            Declination::Computed => Some(Self::COMPUTE_VALUE),
+            Declination::Degrees(degrees) if Self::accepts(f64::from(degrees)) => Some(degrees),
+            Declination::Degrees(_) => None,
+        }
+    }
+
+    /// True if a builder accepts `raw` (degrees): inside the range, or above the threshold.
+    pub fn accepts(raw: f64) -> bool {
+        (Self::MIN..=Self::MAX).contains(&raw) || raw > Self::COMPUTE_ABOVE
+    }
+}

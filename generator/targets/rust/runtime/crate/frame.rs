@@ -1,0 +1,308 @@
+//! The binary frame: header, message type, reserved byte, message length, payload and checksum
+//! (the spec's `frame`; positions and sizes in [`field`] and the constants below).
+//!
+//! [`Frame`] is a zero-copy view over bytes, checked once by [`Frame::new_checked`];
+//! [`FrameRepr`] is the same frame as a value, with [`FrameRepr::parse`] and
+//! [`FrameRepr::build`]. The builder fills the length and the checksum.
+//!
+//! ```
+//! use ilahrs::frame::{FrameRepr, MessageType};
+//!
+//! let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+//! let repr = FrameRepr::new(MessageType::Data, &[1, 2, 3]);
+//! let n = repr.build(&mut buf)?;
+//! assert_eq!(FrameRepr::parse(&buf[..n])?, repr);
+//! # Ok::<(), ilahrs::Error>(())
+//! ```
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::wire;
+
+mod layout;
+
+pub use layout::{
+    field, MessageType, CHECKSUM_SIZE, HEADER, HEADER_SIZE, LENGTH_BIAS, MAX_FRAME_SIZE,
+    MAX_MESSAGE_LENGTH, MAX_PAYLOAD, MIN_FRAME_SIZE, MIN_MESSAGE_LENGTH, MIN_PAYLOAD, OVERHEAD,
+};
+
+impl TryFrom<u8> for MessageType {
+    type Error = Error;
+
+    /// The type with code `raw`, or `bad_message_type` naming the field.
+    fn try_from(raw: u8) -> Result<MessageType> {
+        let error = Error::new(ErrorKind::BadMessageType).with_field("message_type");
+        MessageType::from_raw(raw).ok_or(error)
+    }
+}
+
+/// The checksum of `data` (the spec's `sum16`): the sum of its bytes, modulo 2^16. A frame's
+/// checksum covers its message type through its last payload byte.
+///
+/// ```
+/// assert_eq!(ilahrs::checksum(&[0xFF, 0xFF, 0x02]), 0x0200);
+/// ```
+pub fn checksum(data: &[u8]) -> u16 {
+    // Summed in 32 bits (wrapping keeps the sum modulo 2^16 right) so that it vectorises.
+    let sum = data
+        .iter()
+        .fold(0u32, |sum, byte| sum.wrapping_add(u32::from(*byte)));
+    (sum & 0xFFFF) as u16
+}
+
+/// Checks that `data` starts with a whole frame and returns the frame's size (bytes).
+///
+/// Runs the checks of a frame decode in order, except the one for trailing bytes: header,
+/// enough bytes for the fixed fields, message type, message length, enough bytes for the
+/// message, checksum. The first failure is the error, at its offset in `data`.
+pub fn check_frame(data: &[u8]) -> Result<usize> {
+    for (index, expected) in HEADER.iter().enumerate() {
+        match data.get(index) {
+            None => return Err(Error::at(ErrorKind::Truncated, index)),
+            Some(byte) if byte != expected => {
+                return Err(Error::at(ErrorKind::BadHeader, index).with_field("header"));
+            }
+            Some(_) => {}
+        }
+    }
+    if data.len() < field::PAYLOAD_START {
+        return Err(Error::at(ErrorKind::Truncated, data.len()));
+    }
+    if MessageType::from_raw(wire::get::<u8>(data, field::MESSAGE_TYPE)).is_none() {
+        let error = Error::at(ErrorKind::BadMessageType, field::MESSAGE_TYPE.start);
+        return Err(error.with_field("message_type"));
+    }
+    let length = wire::get::<u16>(data, field::MESSAGE_LENGTH);
+    if !(MIN_MESSAGE_LENGTH..=MAX_MESSAGE_LENGTH).contains(&length) {
+        let error = Error::at(ErrorKind::BadLength, field::MESSAGE_LENGTH.start);
+        return Err(error.with_field("message_length"));
+    }
+    let sum = field::checksum(usize::from(length));
+    if data.len() < sum.end {
+        return Err(Error::at(ErrorKind::Truncated, data.len()));
+    }
+    if checksum(wire::bytes(data, HEADER_SIZE..sum.start)) != wire::get::<u16>(data, sum.clone()) {
+        let error = Error::at(ErrorKind::BadChecksum, sum.start);
+        return Err(error.with_field("checksum"));
+    }
+    Ok(sum.end)
+}
+
+/// A zero-copy view of one frame over a buffer.
+///
+/// Made by [`Frame::new_checked`], which validates the whole frame once; the accessors never
+/// panic, even on a view made by [`Frame::new_unchecked`] over a short buffer (they read
+/// missing bytes as zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Frame<T: AsRef<[u8]>> {
+    buffer: T,
+}
+
+impl<T: AsRef<[u8]>> Frame<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> Frame<T> {
+        Frame { buffer }
+    }
+
+    /// A view over `buffer`, which must hold exactly one valid frame.
+    ///
+    /// Errors, at their byte offset in `buffer`: `truncated`, `bad_header`,
+    /// `bad_message_type`, `bad_length`, `bad_checksum`, `trailing_data`.
+    pub fn new_checked(buffer: T) -> Result<Frame<T>> {
+        let frame = Frame::new_unchecked(buffer);
+        frame.check_len()?;
+        Ok(frame)
+    }
+
+    /// Checks that the buffer holds exactly one valid frame (see [`Frame::new_checked`]).
+    pub fn check_len(&self) -> Result<()> {
+        let data = self.buffer.as_ref();
+        let size = check_frame(data)?;
+        if data.len() > size {
+            return Err(Error::at(ErrorKind::TrailingData, size));
+        }
+        Ok(())
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The frame's bytes: header through checksum (empty for an unchecked view whose buffer
+    /// is too short).
+    pub fn as_bytes(&self) -> &[u8] {
+        let data = self.buffer.as_ref();
+        data.get(..self.total_len()).unwrap_or(data)
+    }
+
+    /// The message type byte, raw (see [`MessageType`]).
+    pub fn message_type(&self) -> u8 {
+        wire::get::<u8>(self.buffer.as_ref(), field::MESSAGE_TYPE)
+    }
+
+    /// The message type as a [`MessageType`], or `None` for an unknown code.
+    pub fn message_type_decoded(&self) -> Option<MessageType> {
+        MessageType::from_raw(self.message_type())
+    }
+
+    /// The reserved byte, as received (see [`field::RESERVED`]).
+    pub fn reserved(&self) -> u8 {
+        wire::get::<u8>(self.buffer.as_ref(), field::RESERVED)
+    }
+
+    /// The message length: bytes after the header, message type through checksum (bytes).
+    pub fn message_length(&self) -> u16 {
+        wire::get::<u16>(self.buffer.as_ref(), field::MESSAGE_LENGTH)
+    }
+
+    /// The size of the whole frame, header through checksum, by its length field (bytes).
+    pub fn total_len(&self) -> usize {
+        field::checksum(usize::from(self.message_length())).end
+    }
+
+    /// The payload (bytes).
+    pub fn payload(&self) -> &[u8] {
+        let length = usize::from(self.message_length());
+        wire::bytes(self.buffer.as_ref(), field::payload(length))
+    }
+
+    /// The checksum the frame carries.
+    pub fn checksum(&self) -> u16 {
+        let length = usize::from(self.message_length());
+        wire::get::<u16>(self.buffer.as_ref(), field::checksum(length))
+    }
+
+    /// The checksum computed over the frame's bytes (message type through payload).
+    pub fn compute_checksum(&self) -> u16 {
+        let length = usize::from(self.message_length());
+        let covered = HEADER_SIZE..field::checksum(length).start;
+        checksum(wire::bytes(self.buffer.as_ref(), covered))
+    }
+}
+
+impl<T: AsRef<[u8]> + AsMut<[u8]>> Frame<T> {
+    /// Writes the header bytes.
+    pub fn set_header(&mut self) {
+        wire::put(self.buffer.as_mut(), field::HEADER, &HEADER);
+    }
+
+    /// Sets the message type byte (raw).
+    pub fn set_message_type(&mut self, value: u8) {
+        wire::set::<u8>(self.buffer.as_mut(), field::MESSAGE_TYPE, value);
+    }
+
+    /// Sets the reserved byte.
+    pub fn set_reserved(&mut self, value: u8) {
+        wire::set::<u8>(self.buffer.as_mut(), field::RESERVED, value);
+    }
+
+    /// Sets the message length (bytes after the header).
+    pub fn set_message_length(&mut self, value: u16) {
+        wire::set::<u16>(self.buffer.as_mut(), field::MESSAGE_LENGTH, value);
+    }
+
+    /// The payload, for writing (its size follows the length field).
+    pub fn payload_mut(&mut self) -> &mut [u8] {
+        let length = usize::from(self.message_length());
+        let payload = self.buffer.as_mut().get_mut(field::payload(length));
+        payload.unwrap_or(&mut [])
+    }
+
+    /// Computes the checksum and writes it.
+    pub fn fill_checksum(&mut self) {
+        let value = self.compute_checksum();
+        let length = usize::from(self.message_length());
+        wire::set::<u16>(self.buffer.as_mut(), field::checksum(length), value);
+    }
+}
+
+/// One frame as a value: message type, reserved byte and a borrowed payload.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FrameRepr<'a> {
+    /// What the frame carries.
+    pub message_type: MessageType,
+    /// The reserved byte (see [`field::RESERVED`]).
+    pub reserved: u8,
+    /// The payload ([`MIN_PAYLOAD`] to [`MAX_PAYLOAD`] bytes).
+    pub payload: &'a [u8],
+}
+
+impl<'a> FrameRepr<'a> {
+    /// A frame of `message_type` carrying `payload`, with the reserved byte 0.
+    pub const fn new(message_type: MessageType, payload: &'a [u8]) -> FrameRepr<'a> {
+        FrameRepr {
+            message_type,
+            reserved: 0,
+            payload,
+        }
+    }
+
+    /// Decodes exactly one frame (see [`Frame::new_checked`] for the errors).
+    pub fn parse(data: &'a [u8]) -> Result<FrameRepr<'a>> {
+        let frame = Frame::new_checked(data)?;
+        Ok(FrameRepr::from_view(&frame))
+    }
+
+    /// The value of a view (a view made by [`Frame::new_checked`] always has a known type;
+    /// an unchecked one with an unknown type reads as [`MessageType::Command`]).
+    pub fn from_view(frame: &Frame<&'a [u8]>) -> FrameRepr<'a> {
+        let data: &'a [u8] = frame.buffer;
+        let length = usize::from(frame.message_length());
+        FrameRepr {
+            message_type: frame.message_type_decoded().unwrap_or(MessageType::Command),
+            reserved: frame.reserved(),
+            payload: wire::bytes(data, field::payload(length)),
+        }
+    }
+
+    /// The size of the frame [`FrameRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        self.payload.len() + OVERHEAD
+    }
+
+    /// Writes the frame into `buf`, filling length and checksum; returns its size (bytes).
+    ///
+    /// Errors: `bad_length` (field `payload`) for a payload outside [`MIN_PAYLOAD`] to
+    /// [`MAX_PAYLOAD`] bytes, `buffer_too_small` when `buf` cannot hold the frame.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        if !(MIN_PAYLOAD..=MAX_PAYLOAD).contains(&self.payload.len()) {
+            return Err(Error::new(ErrorKind::BadLength).with_field("payload"));
+        }
+        let size = self.buffer_len();
+        let length = u16::try_from(self.payload.len() + LENGTH_BIAS)
+            .map_err(|_| Error::new(ErrorKind::BadLength).with_field("payload"))?;
+        let out = buf
+            .get_mut(..size)
+            .ok_or(Error::new(ErrorKind::BufferTooSmall))?;
+        let mut frame = Frame::new_unchecked(out);
+        frame.set_header();
+        frame.set_message_type(self.message_type.raw());
+        frame.set_reserved(self.reserved);
+        frame.set_message_length(length);
+        wire::put(frame.payload_mut(), 0..self.payload.len(), self.payload);
+        frame.fill_checksum();
+        Ok(size)
+    }
+}
+
+/// Writes the acknowledgement of the host message `message` into `buf` and returns its size
+/// (bytes): a data frame whose payload (the spec's acknowledgement table) is the checksum of the
+/// message received, the value of that message's own checksum field.
+///
+/// `message` must be exactly one valid frame (errors as for [`Frame::new_checked`]);
+/// `buffer_too_small` when `buf` cannot hold the answer.
+///
+/// ```
+/// use ilahrs::command::Command;
+///
+/// let mut command = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+/// let n = Command::ALL[0].build(&mut command)?;
+/// let mut ack = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+/// let m = ilahrs::ack_for(&command[..n], &mut ack)?;
+/// assert!(ilahrs::FrameRepr::parse(&ack[..m]).is_ok());
+/// # Ok::<(), ilahrs::Error>(())
+/// ```
+pub fn ack_for(message: &[u8], buf: &mut [u8]) -> Result<usize> {
+    let frame = Frame::new_checked(message)?;
+    layout::build_ack(frame.checksum(), buf)
+}

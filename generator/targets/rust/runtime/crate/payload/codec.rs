@@ -1,0 +1,756 @@
+//! What every payload table shares: field descriptions ([`FieldInfo`]), raw values
+//! ([`Value`]), scales, and the `payload_table!` macro that writes a table's view and value type
+//! from its list of fields.
+
+use core::ops::Range;
+
+use super::{AnyPayload, Encoding, PayloadKind, Unit};
+use crate::error::{Error, ErrorKind, Result};
+use crate::variant::{Variant, VariantParameter};
+use crate::wire::{self, Field, Number};
+
+/// The greatest finite float32, as a double.
+pub const F32_MAX: f64 = f32::MAX as f64;
+
+/// The least finite float32, as a double.
+const F32_LOWEST: f64 = -F32_MAX;
+
+/// How a field's bytes are read (numbers in the spec's byte order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FieldKind {
+    /// An unsigned integer.
+    Unsigned,
+    /// A two's complement signed integer.
+    Signed,
+    /// An IEEE 754 float32.
+    Float,
+    /// Text: Latin-1 bytes padded with NULs.
+    Char,
+    /// Bytes with no meaning, kept verbatim.
+    Reserved,
+}
+
+/// The divisor of a scale: a number, or a parameter of the device variant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Divisor {
+    /// A fixed divisor.
+    Fixed(i32),
+    /// A divisor that depends on the device variant.
+    Parameter(VariantParameter),
+}
+
+/// Engineering value = raw x `multiplier` / `divisor`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Scale {
+    /// The multiplier.
+    pub multiplier: i32,
+    /// The divisor.
+    pub divisor: Divisor,
+}
+
+impl Scale {
+    /// raw x `multiplier` / `divisor`.
+    pub(crate) const fn fixed(multiplier: i32, divisor: i32) -> Scale {
+        let divisor = Divisor::Fixed(divisor);
+        Scale {
+            multiplier,
+            divisor,
+        }
+    }
+
+    /// raw x `multiplier` / the value of `parameter` for the device variant.
+    pub(crate) const fn by(multiplier: i32, parameter: VariantParameter) -> Scale {
+        let divisor = Divisor::Parameter(parameter);
+        Scale {
+            multiplier,
+            divisor,
+        }
+    }
+
+    /// The divisor for `variant`, or `None` when it depends on the variant and none is given.
+    pub const fn divisor(&self, variant: Option<Variant>) -> Option<i32> {
+        match (self.divisor, variant) {
+            (Divisor::Fixed(divisor), _) => Some(divisor),
+            (Divisor::Parameter(parameter), Some(variant)) => Some(variant.parameter(parameter)),
+            (Divisor::Parameter(_), None) => None,
+        }
+    }
+
+    /// The engineering value of `raw` (in the field's unit), or `None` when the divisor needs a
+    /// variant and none is given.
+    pub fn engineering(&self, raw: f64, variant: Option<Variant>) -> Option<f64> {
+        let divisor = self.divisor(variant)?;
+        Some(raw * f64::from(self.multiplier) / f64::from(divisor))
+    }
+
+    /// The raw value for the engineering value `value`, before rounding, or `None` when the
+    /// divisor needs a variant and none is given.
+    pub fn raw(&self, value: f64, variant: Option<Variant>) -> Option<f64> {
+        let divisor = self.divisor(variant)?;
+        Some(value * f64::from(divisor) / f64::from(self.multiplier))
+    }
+}
+
+/// A raw field value of any type.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Value<'a> {
+    /// An integer field's value.
+    Int(i64),
+    /// A float field's value (builders take any double and refuse what float32 cannot hold).
+    Float(f64),
+    /// A char field's bytes (Latin-1, trailing NULs removed) or a reserved field's bytes.
+    Bytes(&'a [u8]),
+}
+
+/// What a field is: name, position, type, what a builder accepts and how to scale it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FieldInfo {
+    /// The spec's name of the field.
+    pub name: &'static str,
+    /// The ICD's name of the field.
+    pub icd_name: &'static str,
+    /// Where the field starts in its payload (bytes).
+    pub offset: usize,
+    /// The field's size (bytes).
+    pub size: usize,
+    /// How the field's bytes are read.
+    pub kind: FieldKind,
+    /// The least raw value a builder accepts (numeric fields).
+    pub min: f64,
+    /// The greatest raw value a builder accepts (numeric fields).
+    pub max: f64,
+    /// The value a builder uses when none is given.
+    pub default: Value<'static>,
+    /// How to turn the raw value into an engineering value, if the field has a scale.
+    pub scale: Option<Scale>,
+    /// The unit of the engineering value (or of the raw value when there is no scale).
+    pub unit: Option<Unit>,
+    /// A value encoding the field follows, if any.
+    pub encoding: Option<Encoding>,
+    /// What the field means.
+    pub doc: &'static str,
+}
+
+impl FieldInfo {
+    /// The field `name` of `kind` at `position`, with nothing else said: the range of its type
+    /// (numbers), a zero default, no scale, unit, encoding or doc. Each table starts its fields
+    /// from here and fills in what the spec says.
+    pub(crate) const fn new(name: &'static str, position: Field, kind: FieldKind) -> FieldInfo {
+        let Range { start, end } = position;
+        let size = end.saturating_sub(start);
+        let (min, max) = match (kind, size) {
+            (FieldKind::Unsigned, 1) => (0.0, 255.0),
+            (FieldKind::Unsigned, 2) => (0.0, 65535.0),
+            (FieldKind::Unsigned, 4) => (0.0, 4294967295.0),
+            (FieldKind::Signed, 1) => (-128.0, 127.0),
+            (FieldKind::Signed, 2) => (-32768.0, 32767.0),
+            (FieldKind::Signed, 4) => (-2147483648.0, 2147483647.0),
+            (FieldKind::Float, _) => (F32_LOWEST, F32_MAX),
+            _ => (0.0, 0.0),
+        };
+        let default = match kind {
+            FieldKind::Float => Value::Float(0.0),
+            FieldKind::Unsigned | FieldKind::Signed => Value::Int(0),
+            FieldKind::Char | FieldKind::Reserved => Value::Bytes(&[]),
+        };
+        FieldInfo {
+            name,
+            icd_name: "",
+            offset: start,
+            size,
+            kind,
+            min,
+            max,
+            default,
+            scale: None,
+            unit: None,
+            encoding: None,
+            doc: "",
+        }
+    }
+
+    /// The field's position in its payload (byte offsets).
+    pub const fn position(&self) -> Field {
+        self.offset..self.offset + self.size
+    }
+
+    /// The error a builder gives for a bad value of this field.
+    pub const fn refuse(&self) -> Error {
+        Error::at(ErrorKind::OutOfRange, self.offset).with_field(self.name)
+    }
+
+    /// The field's raw value in `payload` (a whole payload of the field's table).
+    pub fn read<'a>(&self, payload: &'a [u8]) -> Value<'a> {
+        let at = self.position();
+        match (self.kind, self.size) {
+            (FieldKind::Unsigned, 1) => u8::read(payload, at).value(),
+            (FieldKind::Unsigned, 2) => u16::read(payload, at).value(),
+            (FieldKind::Unsigned, 4) => u32::read(payload, at).value(),
+            (FieldKind::Signed, 1) => i8::read(payload, at).value(),
+            (FieldKind::Signed, 2) => i16::read(payload, at).value(),
+            (FieldKind::Signed, 4) => i32::read(payload, at).value(),
+            (FieldKind::Float, 4) => f32::read(payload, at).value(),
+            (FieldKind::Char, _) => Value::Bytes(wire::trim_nul(wire::bytes(payload, at))),
+            _ => Value::Bytes(wire::bytes(payload, at)),
+        }
+    }
+
+    /// Checks `value` the way a builder does: an integer inside the field's range, a finite
+    /// float inside its range (and float32), text no longer than the field, reserved bytes of
+    /// exactly its size, plus the rules of the field's encoding. Error: `out_of_range` at the
+    /// field's offset, naming the field.
+    pub fn check(&self, value: Value<'_>) -> Result<()> {
+        let ok = match (self.kind, value) {
+            (FieldKind::Unsigned | FieldKind::Signed, Value::Int(raw)) => {
+                (self.min..=self.max).contains(&(raw as f64))
+            }
+            (FieldKind::Float, Value::Float(raw)) => {
+                let inside = (self.min..=self.max).contains(&raw);
+                raw.is_finite() && inside && self.encoding_accepts(raw)
+            }
+            (FieldKind::Float, Value::Int(raw)) => return self.check(Value::Float(raw as f64)),
+            (FieldKind::Char, Value::Bytes(text)) => text.len() <= self.size,
+            (FieldKind::Reserved, Value::Bytes(bytes)) => bytes.len() == self.size,
+            _ => false,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(self.refuse())
+        }
+    }
+
+    /// True unless the field's encoding refuses the float `raw`.
+    fn encoding_accepts(&self, raw: f64) -> bool {
+        crate::encoding::accepts(self.encoding, raw)
+    }
+
+    /// Checks `value` (see [`FieldInfo::check`]) and writes it into `payload`.
+    pub fn write(&self, payload: &mut [u8], value: Value<'_>) -> Result<()> {
+        self.check(value)?;
+        let at = self.position();
+        match (self.kind, self.size, value) {
+            (FieldKind::Unsigned, 1, _) => u8::from_value(self, value)?.write(payload, at),
+            (FieldKind::Unsigned, 2, _) => u16::from_value(self, value)?.write(payload, at),
+            (FieldKind::Unsigned, 4, _) => u32::from_value(self, value)?.write(payload, at),
+            (FieldKind::Signed, 1, _) => i8::from_value(self, value)?.write(payload, at),
+            (FieldKind::Signed, 2, _) => i16::from_value(self, value)?.write(payload, at),
+            (FieldKind::Signed, 4, _) => i32::from_value(self, value)?.write(payload, at),
+            (FieldKind::Float, 4, _) => f32::from_value(self, value)?.write(payload, at),
+            (FieldKind::Char, _, Value::Bytes(text)) => wire::set_padded(payload, at, text),
+            (FieldKind::Reserved, _, Value::Bytes(bytes)) => wire::put(payload, at, bytes),
+            _ => return Err(self.refuse()),
+        }
+        Ok(())
+    }
+
+    /// `value` checked and converted to the field's integer type.
+    pub fn int<T: TryFrom<i64>>(&self, value: Value<'_>) -> Result<T> {
+        self.check(value)?;
+        match value {
+            Value::Int(raw) => T::try_from(raw).map_err(|_| self.refuse()),
+            _ => Err(self.refuse()),
+        }
+    }
+
+    /// `value` checked and converted to float32.
+    pub fn float(&self, value: Value<'_>) -> Result<f32> {
+        self.check(value)?;
+        match value {
+            Value::Float(raw) => Ok(raw as f32),
+            Value::Int(raw) => Ok(raw as f32),
+            Value::Bytes(_) => Err(self.refuse()),
+        }
+    }
+
+    /// `value` checked and copied into the field's bytes (text padded with NULs).
+    pub fn array<const N: usize>(&self, value: Value<'_>) -> Result<[u8; N]> {
+        self.check(value)?;
+        match value {
+            Value::Bytes(bytes) if bytes.len() <= N => {
+                let mut out = [0; N];
+                wire::put(&mut out, 0..bytes.len(), bytes);
+                Ok(out)
+            }
+            _ => Err(self.refuse()),
+        }
+    }
+
+    /// The raw value for the engineering value `value`: scaled, rounded half away from zero for
+    /// integer fields, and checked. Errors: `out_of_range` for a value the field cannot hold
+    /// (or a variant-dependent scale without a variant).
+    pub fn raw_from(&self, value: f64, variant: Option<Variant>) -> Result<Value<'static>> {
+        let raw = match self.scale {
+            Some(scale) => scale.raw(value, variant).ok_or(self.refuse())?,
+            None => value,
+        };
+        let raw = match self.kind {
+            FieldKind::Unsigned | FieldKind::Signed => {
+                Value::Int(wire::round_half_away(raw).ok_or(self.refuse())?)
+            }
+            _ => Value::Float(raw),
+        };
+        self.check(raw)?;
+        Ok(raw)
+    }
+
+    /// The engineering value of the raw value `raw` of this scaled field, the divisor taken from
+    /// `variant` when it depends on one (what a table's engineering getters return).
+    pub(crate) fn scaled(&self, raw: f64, variant: Option<Variant>) -> f64 {
+        match self.scale {
+            Some(scale) => scale.engineering(raw, variant).unwrap_or(f64::NAN),
+            None => raw,
+        }
+    }
+
+    /// Sets `slot` from the engineering value `value`: scaled, rounded and checked as
+    /// [`FieldInfo::raw_from`] does (what a table's engineering setters do).
+    pub(crate) fn set_scaled<T: Raw>(
+        &self,
+        slot: &mut T,
+        value: f64,
+        variant: Option<Variant>,
+    ) -> Result<()> {
+        let raw = self.raw_from(value, variant)?;
+        *slot = T::from_value(self, raw)?;
+        Ok(())
+    }
+
+    /// The engineering value of `value` (in the field's unit), or `None` for a field without a
+    /// scale, a non-numeric value, or a variant-dependent scale without a variant.
+    pub fn engineering(&self, value: Value<'_>, variant: Option<Variant>) -> Option<f64> {
+        let raw = match value {
+            Value::Int(raw) => raw as f64,
+            Value::Float(raw) => raw,
+            Value::Bytes(_) => return None,
+        };
+        self.scale?.engineering(raw, variant)
+    }
+}
+
+/// Checks that a payload of `len` bytes has exactly `size` bytes: `truncated` at `len` when
+/// shorter, `trailing_data` at `size` when longer.
+pub const fn check_size(len: usize, size: usize) -> Result<()> {
+    if len < size {
+        Err(Error::at(ErrorKind::Truncated, len))
+    } else if len > size {
+        Err(Error::at(ErrorKind::TrailingData, size))
+    } else {
+        Ok(())
+    }
+}
+
+/// A number field's raw value as a [`Value`], and back (checked as a builder checks it).
+pub(crate) trait Raw: Number {
+    /// The value.
+    fn value(self) -> Value<'static>;
+    /// `value` checked against `info` and converted.
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<Self>;
+}
+
+/// `Raw` for integer types.
+macro_rules! raw_integers {
+    ($($type:ty),*) => {$(
+        impl Raw for $type {
+            fn value(self) -> Value<'static> {
+                Value::Int(i64::from(self))
+            }
+
+            fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<$type> {
+                info.int(value)
+            }
+        }
+    )*};
+}
+
+raw_integers!(u8, i8, u16, i16, u32, i32);
+
+impl Raw for f32 {
+    fn value(self) -> Value<'static> {
+        Value::Float(f64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<f32> {
+        info.float(value)
+    }
+}
+
+/// What [`AnyPayload`] does with the value of any table (each table's `...Repr`).
+pub(crate) trait Table {
+    /// See the table's `Repr::validate`.
+    fn validate(&self) -> Result<()>;
+    /// See the table's `Repr::build`.
+    fn build(&self, buf: &mut [u8]) -> Result<usize>;
+    /// See the table's `Repr::build_frame`.
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize>;
+    /// See the table's `Repr::value`.
+    fn value(&self, index: usize) -> Option<Value<'_>>;
+    /// See the table's `Repr::set_value`.
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()>;
+}
+
+impl PayloadKind {
+    /// The index of the field named `name`, if the table has one.
+    pub fn field_index(self, name: &str) -> Option<usize> {
+        self.fields().iter().position(|info| info.name == name)
+    }
+
+    /// True if an engineering value of some field needs the device variant.
+    pub fn variant_dependent(self) -> bool {
+        self.fields().iter().any(|info| match info.scale {
+            Some(scale) => matches!(scale.divisor, Divisor::Parameter(_)),
+            None => false,
+        })
+    }
+}
+
+impl AnyPayload {
+    /// The size of the payload [`AnyPayload::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        self.kind().size()
+    }
+
+    /// Checks every field in table order (see the table's `Repr::validate`).
+    pub fn validate(&self) -> Result<()> {
+        self.table().validate()
+    }
+
+    /// Writes the payload into `buf` (see the table's `Repr::build`); returns its size (bytes).
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.table().build(buf)
+    }
+
+    /// Writes a data frame carrying the payload into `buf`; returns its size (bytes).
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        self.table().build_frame(buf)
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.table().value(index)
+    }
+
+    /// Every raw value, in table order (`Value::Int(0)` past the table's last field).
+    pub fn values(&self) -> [Value<'_>; super::MAX_FIELDS] {
+        let mut out = [Value::Int(0); super::MAX_FIELDS];
+        for (index, slot) in out.iter_mut().enumerate() {
+            if let Some(value) = self.value(index) {
+                *slot = value;
+            }
+        }
+        out
+    }
+
+    /// Sets field `index` (table order) after checking `value` (see [`FieldInfo::check`]).
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        self.table_mut().set_value(index, value)
+    }
+
+    /// The engineering value of field `index` (see [`FieldInfo::engineering`]).
+    pub fn engineering(&self, index: usize, variant: Option<Variant>) -> Option<f64> {
+        let info = self.kind().fields().get(index)?;
+        info.engineering(self.value(index)?, variant)
+    }
+}
+
+/// A payload table's view and value type, written from its list of fields: one row per field
+/// drives every parallel surface (the view's getters and setters, the value's fields, and the
+/// conversions between them, the raw values and the bytes), so a table file holds only what
+/// the spec says about its fields.
+///
+/// Expanded inside a table's module, next to its `SIZE`, `field`, `info` and `FIELDS`. Each row
+/// is `INDEX KIND name set_name CONST: TYPE;` with the field's doc comment in front; `KIND` is
+/// `number` (an integer or float32), `text` (Latin-1 padded with NULs) or `reserved` (bytes
+/// kept verbatim). A scaled field's row adds `, in name_unit set_name_unit` after the getters'
+/// doc comment (and `by variant` when the divisor is a parameter of the device variant):
+/// engineering getters on the view and the value, and a setter on the value.
+macro_rules! payload_table {
+    (
+        $(#[$view_doc:meta])*
+        view $View:ident;
+        $(#[$repr_doc:meta])*
+        repr $Repr:ident;
+        count $count:literal;
+        $(
+            $(#[$doc:meta])*
+            $index:literal $kind:ident $name:ident $set:ident $CONST:ident: $type:ty
+            $(, $(#[$unit_doc:meta])* in $unit:ident $set_unit:ident $(by $variant:ident)?)?;
+        )*
+    ) => {
+        $(#[$view_doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub struct $View<T: AsRef<[u8]>> {
+            buffer: T,
+        }
+
+        impl<T: AsRef<[u8]>> $View<T> {
+            /// A view over `buffer` without any check.
+            pub const fn new_unchecked(buffer: T) -> $View<T> {
+                $View { buffer }
+            }
+
+            /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+            /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+            pub fn new_checked(buffer: T) -> $crate::error::Result<$View<T>> {
+                $crate::payload::check_size(buffer.as_ref().len(), SIZE)?;
+                Ok($View { buffer })
+            }
+
+            /// The buffer.
+            pub fn into_inner(self) -> T {
+                self.buffer
+            }
+
+            /// The payload's bytes.
+            pub fn as_bytes(&self) -> &[u8] {
+                self.buffer.as_ref()
+            }
+
+            $($crate::payload::codec::payload_table!(@get $kind $(#[$doc])* $name $CONST $type);)*
+            $($(
+                $crate::payload::codec::payload_table!(
+                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name()
+                );
+            )?)*
+        }
+
+        impl<T: AsRef<[u8]> + AsMut<[u8]>> $View<T> {
+            $($crate::payload::codec::payload_table!(@set $kind $Repr $name $set $CONST $type);)*
+        }
+
+        $(#[$repr_doc])*
+        pub struct $Repr {
+            $($(#[$doc])* pub $name: $type,)*
+        }
+
+        impl $Repr {
+            /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+            /// Decoding does not check ranges.
+            pub fn parse(data: &[u8]) -> $crate::error::Result<$Repr> {
+                let view = $View::new_checked(data)?;
+                Ok($Repr::from_view(&view))
+            }
+
+            /// The value of a view.
+            pub fn from_view<T: AsRef<[u8]>>(view: &$View<T>) -> $Repr {
+                $Repr {
+                    $($name: $crate::payload::codec::payload_table!(@from_view $kind view $name $CONST),)*
+                }
+            }
+
+            /// Checks every field in table order, as a builder does; the first bad one is the
+            /// error: `out_of_range` at the field's offset, naming the field.
+            pub fn validate(&self) -> $crate::error::Result<()> {
+                for (info, value) in FIELDS.iter().zip(self.values()) {
+                    info.check(value)?;
+                }
+                Ok(())
+            }
+
+            #[doc = concat!("The size of the payload [`", stringify!($Repr), "::build`] writes (bytes).")]
+            pub const fn buffer_len(&self) -> usize {
+                SIZE
+            }
+
+            #[doc = concat!("Checks the value ([`", stringify!($Repr), "::validate`]) and writes it into")]
+            /// `buf`; returns its size (bytes), or `buffer_too_small`.
+            pub fn build(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
+                self.validate()?;
+                let out = buf.get_mut(..SIZE).ok_or($crate::error::Error::new(
+                    $crate::error::ErrorKind::BufferTooSmall,
+                ))?;
+                self.emit(&mut $View::new_unchecked(out));
+                Ok(SIZE)
+            }
+
+            /// Writes the value into a view without checking it.
+            pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut $View<T>) {
+                $($crate::payload::codec::payload_table!(@emit $kind self view $name $set $CONST);)*
+            }
+
+            /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+            #[doc = concat!("size (bytes). Errors: those of [`", stringify!($Repr), "::build`].")]
+            pub fn build_frame(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
+                let mut payload = [0; SIZE];
+                self.build(&mut payload)?;
+                let frame = $crate::frame::FrameRepr::new($crate::frame::MessageType::Data, &payload);
+                frame.build(buf)
+            }
+
+            /// Every raw value, in table order (text without its trailing NULs).
+            pub fn values(&self) -> [$crate::payload::Value<'_>; $count] {
+                [$($crate::payload::codec::payload_table!(@value $kind self $name),)*]
+            }
+
+            /// The raw value of field `index` (table order), or `None` past the last field.
+            pub fn value(&self, index: usize) -> Option<$crate::payload::Value<'_>> {
+                self.values().get(index).copied()
+            }
+
+            /// Sets field `index` (table order) after checking `value` as a builder does.
+            /// Errors: `out_of_range` naming the field, or with no field for an index past the
+            /// last.
+            pub fn set_value(
+                &mut self,
+                index: usize,
+                value: $crate::payload::Value<'_>,
+            ) -> $crate::error::Result<()> {
+                match index {
+                    $($index => self.$name = $crate::payload::codec::payload_table!(@from_value $kind $type, info::$CONST, value)?,)*
+                    _ => {
+                        let error = $crate::error::Error::new($crate::error::ErrorKind::OutOfRange);
+                        return Err(error);
+                    }
+                }
+                Ok(())
+            }
+            $($(
+                $crate::payload::codec::payload_table!(
+                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name
+                );
+                $crate::payload::codec::payload_table!(
+                    @set_unit [$($variant)?] $name $unit $set_unit $CONST
+                );
+            )?)*
+        }
+
+        impl $crate::payload::codec::Table for $Repr {
+            fn validate(&self) -> $crate::error::Result<()> {
+                $Repr::validate(self)
+            }
+
+            fn build(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
+                $Repr::build(self, buf)
+            }
+
+            fn build_frame(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
+                $Repr::build_frame(self, buf)
+            }
+
+            fn value(&self, index: usize) -> Option<$crate::payload::Value<'_>> {
+                $Repr::value(self, index)
+            }
+
+            fn set_value(
+                &mut self,
+                index: usize,
+                value: $crate::payload::Value<'_>,
+            ) -> $crate::error::Result<()> {
+                $Repr::set_value(self, index, value)
+            }
+        }
+    };
+
+    (@get number $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
+        $(#[$doc])*
+        pub fn $name(&self) -> $type {
+            $crate::wire::get(self.buffer.as_ref(), field::$CONST)
+        }
+    };
+    (@get text $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
+        $(#[$doc])*
+        ///
+        /// The bytes up to the trailing NULs (Latin-1).
+        pub fn $name(&self) -> &[u8] {
+            let bytes = $crate::wire::bytes(self.buffer.as_ref(), field::$CONST);
+            $crate::wire::trim_nul(bytes)
+        }
+    };
+    (@get reserved $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
+        $(#[$doc])*
+        pub fn $name(&self) -> &[u8] {
+            $crate::wire::bytes(self.buffer.as_ref(), field::$CONST)
+        }
+    };
+
+    (@get_unit [] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        $(#[$doc])*
+        pub fn $unit(&$self) -> f64 {
+            info::$CONST.scaled(f64::from($self.$($raw)+), None)
+        }
+    };
+    (@get_unit [$variant:ident] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
+        $(#[$doc])*
+        pub fn $unit(&$self, $variant: $crate::variant::Variant) -> f64 {
+            info::$CONST.scaled(f64::from($self.$($raw)+), Some($variant))
+        }
+    };
+
+    (@set_unit [] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
+        #[doc = concat!("[`Self::", stringify!($unit), "`]), rounded half away from zero. Error:")]
+        /// `out_of_range` naming the field.
+        pub fn $set_unit(&mut self, value: f64) -> $crate::error::Result<()> {
+            info::$CONST.set_scaled(&mut self.$name, value, None)
+        }
+    };
+    (@set_unit [$variant:ident] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
+        #[doc = concat!("[`Self::", stringify!($unit), "`]) for the device `variant`, rounded half")]
+        /// away from zero. Error: `out_of_range` naming the field.
+        pub fn $set_unit(
+            &mut self,
+            $variant: $crate::variant::Variant,
+            value: f64,
+        ) -> $crate::error::Result<()> {
+            info::$CONST.set_scaled(&mut self.$name, value, Some($variant))
+        }
+    };
+
+    (@set number $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] (raw, unchecked: [`")]
+        #[doc = concat!(stringify!($Repr), "::build`] checks ranges).")]
+        pub fn $set(&mut self, value: $type) {
+            $crate::wire::set(self.buffer.as_mut(), field::$CONST, value);
+        }
+    };
+    (@set text $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`]: `value` padded with NULs. Error:")]
+        /// `out_of_range` when longer than the field.
+        pub fn $set(&mut self, value: &[u8]) -> $crate::error::Result<()> {
+            info::$CONST.check($crate::payload::Value::Bytes(value))?;
+            $crate::wire::set_padded(self.buffer.as_mut(), field::$CONST, value);
+            Ok(())
+        }
+    };
+    (@set reserved $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
+        #[doc = concat!("Sets [`Self::", stringify!($name), "`] (bytes kept verbatim).")]
+        pub fn $set(&mut self, value: &$type) {
+            $crate::wire::put(self.buffer.as_mut(), field::$CONST, value);
+        }
+    };
+
+    (@from_view number $view:ident $name:ident $CONST:ident) => {
+        $view.$name()
+    };
+    (@from_view $kind:ident $view:ident $name:ident $CONST:ident) => {
+        $crate::wire::array($view.as_bytes(), field::$CONST)
+    };
+
+    (@emit number $self:ident $view:ident $name:ident $set:ident $CONST:ident) => {
+        $view.$set($self.$name)
+    };
+    (@emit $kind:ident $self:ident $view:ident $name:ident $set:ident $CONST:ident) => {
+        $crate::wire::put($view.buffer.as_mut(), field::$CONST, &$self.$name)
+    };
+
+    (@value number $self:ident $name:ident) => {
+        $crate::payload::codec::Raw::value($self.$name)
+    };
+    (@value text $self:ident $name:ident) => {
+        $crate::payload::Value::Bytes($crate::wire::trim_nul(&$self.$name))
+    };
+    (@value reserved $self:ident $name:ident) => {
+        $crate::payload::Value::Bytes(&$self.$name)
+    };
+
+    (@from_value number $type:ty, $info:path, $value:ident) => {
+        <$type as $crate::payload::codec::Raw>::from_value(&$info, $value)
+    };
+    (@from_value $kind:ident $type:ty, $info:path, $value:ident) => {
+        $info.array($value)
+    };
+}
+
+pub(crate) use payload_table;
