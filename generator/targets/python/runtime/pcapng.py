@@ -277,6 +277,8 @@ def read(stream: BinaryIO, *, partial: bool = False) -> Capture:
         (kind,) = struct.unpack_from("<I", data, pos)
         if kind == _SHB:
             magic = data[pos + 8 : pos + 12]
+            if magic not in (struct.pack("<I", _MAGIC), struct.pack(">I", _MAGIC)):
+                raise PcapngError(f"section header at offset {pos} has no byte-order magic")
             reader.order = "<" if magic == struct.pack("<I", _MAGIC) else ">"
         kind, length = struct.unpack_from(reader.order + "II", data, pos)
         if length < 12 or length % 4:
