@@ -5,7 +5,7 @@
 -- (spec ilahrs 1.0.0). Install: see README.md beside this file.
 --
 -- Part 1 is the spec as Lua tables. Part 2, after them, is the dissector: generic code that reads
--- only these tables (generator/targets/wireshark/runtime/). Requires Wireshark 3.6 or later.
+-- only these tables (generator/targets/wireshark/runtime/). Tested with Wireshark 4.0 (Lua 5.2).
 
 -- Part 1: the spec ------------------------------------------------------------------------------
 
@@ -1716,7 +1716,7 @@ local function host_body(sub, payload_range, mtvb, info)
     sub:add(F.code, payload_range):add_proto_expert_info(E.unknown)
   elseif info.kind == "parameter_block" then
     payload_tree(sub, mtvb, payload_range:offset(), info.table)
-  else
+  elseif payload_range then
     sub:add(F.undecoded, payload_range)
   end
   if info.ignored then

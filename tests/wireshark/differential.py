@@ -13,12 +13,15 @@
 4. The same session over TCP (Ethernet, IPv4, TCP in pcapng) on the port of the preferences must
    give the same messages.
 5. FIELDS.md names exactly the fields tshark registers.
+6. A capture of random traffic (valid and broken frames and sentences, unknown commands, noise,
+   both directions, any chunking) decodes without a Lua error.
 
     python tests/wireshark/differential.py generated/wireshark/ilahrs.lua OUT_DIR
 """
 
 from __future__ import annotations
 
+import random
 import re
 import struct
 import sys
@@ -199,6 +202,41 @@ def check_fields_doc(lua: Path) -> int:
     return len(registered)
 
 
+def random_traffic(path: Path, seed: int, count: int) -> None:
+    """Frames of every table size and of random sizes, commands with any code, sentences (some
+    damaged), noise; random directions and chunks."""
+    rng = random.Random(seed)
+    sizes = sorted({p.SIZE for p in ilahrs.PAYLOADS.values()})
+    stream = {Direction.INBOUND: bytearray(), Direction.OUTBOUND: bytearray()}
+    for _ in range(count):
+        choice = rng.random()
+        if choice < 0.45:
+            size = rng.choice(sizes) if rng.random() < 0.8 else rng.randint(1, ilahrs.frame.MAX_PAYLOAD_SIZE)
+            message = ilahrs.Frame(rng.choice((0, 1)), rng.randbytes(size), rng.choice((0, 0, 7))).build()
+        elif choice < 0.7:
+            message = ilahrs.Frame(ilahrs.MessageType.COMMAND, bytes([rng.randrange(256)])).build()
+        elif choice < 0.85:
+            sentence = ilahrs.PahrSentence(
+                rng.randint(-18000, 18000), 0, rng.randint(0, 35999), 0, 500, rng.randrange(65536)
+            )
+            message = sentence.build().encode()
+        else:
+            message = rng.randbytes(rng.randint(1, 30))
+        if rng.random() < 0.1:
+            flip = rng.randrange(len(message))
+            message = message[:flip] + bytes([message[flip] ^ (1 << rng.randrange(8))]) + message[flip + 1 :]
+        stream[rng.choice(list(stream))] += message
+    with path.open("wb") as f:
+        writer = PcapngWriter(f, port="fuzz", baud=115200)
+        now = session.EPOCH_US
+        while any(stream.values()):
+            direction = rng.choice([d for d, data in stream.items() if data])
+            size = rng.randint(1, 90)
+            writer.write(bytes(stream[direction][:size]), now, direction)
+            del stream[direction][:size]
+            now += rng.randint(1, 400_000)
+
+
 def run_variant(
     lua: Path, out: Path, variant: str, options: tuple[str, ...]
 ) -> tuple[int, int, session.Recording, list[tshark.Shown]]:
@@ -258,6 +296,11 @@ def main(argv: list[str]) -> int:
     check(over_tcp == summary(shown), str(tcp), "TCP shows other messages than the serial capture")
     print(f"TCP port {TCP_PORT}: the same {len(over_tcp)} messages")
     print(f"FIELDS.md: {check_fields_doc(lua)} fields, as tshark registers them")
+    noise = out / "random.pcapng"
+    random_traffic(noise, seed=5, count=3000)
+    text = tshark.run(lua, noise, fmt=("-V",))
+    check("Lua Error" not in text and "[Malformed Packet" not in text, str(noise), "a Lua error")
+    print(f"random traffic: {text.count(chr(10) + 'Frame ') + 1} packets decoded without a Lua error")
     return 0
 
 

@@ -198,7 +198,7 @@ local function host_body(sub, payload_range, mtvb, info)
     sub:add(F.code, payload_range):add_proto_expert_info(E.unknown)
   elseif info.kind == "parameter_block" then
     payload_tree(sub, mtvb, payload_range:offset(), info.table)
-  else
+  elseif payload_range then
     sub:add(F.undecoded, payload_range)
   end
   if info.ignored then
