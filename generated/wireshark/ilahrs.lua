@@ -347,6 +347,7 @@ SPEC.encodings = { date = { terms = { { part = "year", offset = 0, divisor = 1 }
 
 -- 6.5, Table 6.18, Table 6.19.
 SPEC.status_word = {
+  icd = "6.5, Table 6.18, Table 6.19",
   flags = {
     { bit = 0, name = "initial_alignment_failed", icd_name = "Initial Alignment", byte = "failure", doc = "Unsuccessful initial alignment (AHRS moved or the magnetic field changed)." },
     { bit = 1, name = "parameters_incorrect", icd_name = "AHRS Parameters", byte = "failure", doc = "The AHRS parameters are incorrect." },
@@ -374,7 +375,6 @@ SPEC.status_word = {
 SPEC.nmea = {
   identifier = "PAHR",
   max_length = 82,
-  checksum_algorithm = "xor8",
   fields = {
     { name = "roll", icd_name = "RRRR.rr", format = "decimal", width = 4, decimals = 2, unit = "deg", min = -18000, max = 18000, doc = "Roll, hundredths of a degree." },
     { name = "pitch", icd_name = "PPP.pp", format = "decimal", width = 3, decimals = 2, unit = "deg", min = -9000, max = 9000, doc = "Pitch, hundredths of a degree." },
@@ -801,7 +801,8 @@ function P.frame_at(s, pos)
   return total
 end
 
--- $PAHR sentences (NMEA 0183 framing: "$", fields separated by ",", "*", two hex digits, CR LF) --
+-- $PAHR sentences. NMEA 0183 framing: "$", the fields separated by ",", "*", the checksum (the XOR
+-- of the characters between "$" and "*") as two hex digits, CR LF.
 
 P.SENTENCE_START = 0x24 -- "$"
 local LF, CR = 0x0A, 0x0D
@@ -861,7 +862,7 @@ function P.parse_sentence(s)
     return nil, "checksum digits are not hex"
   end
   local sent = tonumber(digits, 16)
-  local computed = P.checksums[NMEA.checksum_algorithm](s, 2, star - 1)
+  local computed = P.checksums.xor8(s, 2, star - 1)
   if sent ~= computed then
     return nil, "bad checksum", sent, computed
   end
@@ -1364,7 +1365,7 @@ F.discarded = ProtoField.bytes(NAME .. ".discarded", "Discarded bytes", base.NON
 F.damaged = ProtoField.string(NAME .. ".damaged", "Damaged message", base.ASCII,
   "A frame or sentence that failed its checks; its bytes are discarded")
 F.undecoded = ProtoField.bytes(NAME .. ".undecoded", "Undecoded payload", base.NONE,
-  "A payload no context explains: which table it follows is not guessed (E7)")
+  "A payload no context explains: which table it follows is not guessed")
 F.candidates = ProtoField.string(NAME .. ".candidates", "Tables of this size")
 
 local frame_fields = {}
@@ -1394,7 +1395,7 @@ for _, flag in ipairs(SPEC.status_word.flags) do
   local label = flag.icd_name .. ": " .. flag.name
   USW.flags[flag.name] = ProtoField.bool(NAME .. ".usw." .. flag.name, label, usw_bits, nil, 2 ^ flag.bit, flag.doc)
 end
-USW.mode = ProtoField.string(NAME .. ".usw.mode", "Mode", base.ASCII, "Mode bits of the USW (Table 6.19)")
+USW.mode = ProtoField.string(NAME .. ".usw.mode", "Mode", base.ASCII, "The mode the USW's mode bits say (" .. SPEC.status_word.icd .. ")")
 
 local function describe(f)
   local text = f.doc or ""
@@ -1484,7 +1485,7 @@ local E = {
     expert.group.SEQUENCE, expert.severity.WARN),
   missing = ProtoExpert.new(NAME .. ".expert.missing", "Answer missing",
     expert.group.SEQUENCE, expert.severity.WARN),
-  ignored = ProtoExpert.new(NAME .. ".expert.ignored", "Ignored by the device in this state (E33)",
+  ignored = ProtoExpert.new(NAME .. ".expert.ignored", "Ignored by the device in this state",
     expert.group.SEQUENCE, expert.severity.NOTE),
   unknown = ProtoExpert.new(NAME .. ".expert.unknown_command", "Unknown command code",
     expert.group.PROTOCOL, expert.severity.WARN),
@@ -1506,12 +1507,12 @@ for i, v in ipairs(SPEC.variants) do
   table.insert(variant_help, v.name .. ": " .. v.part_number .. " (" .. table.concat(values, ", ") .. ")")
 end
 proto.prefs.variant = Pref.enum("Device variant (" .. table.concat(SPEC.variant_parameters, ", ") .. ")", 1,
-  "The scale factors of the rates and accelerations (Table 6.6 note 1). " .. table.concat(variant_help, "; "),
+  "The scale factors of the variant-scaled fields. " .. table.concat(variant_help, "; "),
   variants, false)
 proto.prefs.tcp_port = Pref.uint("TCP port", 0,
   "The device's TCP port (a simulator's --tcp or a serial-over-IP server); 0: none")
 proto.prefs.firmware = Pref.string("Firmware version", "",
-  "The device's firmware; before a version some transitions differ (E29). Empty: current firmware")
+  "The device's firmware; before some versions some transitions differ. Empty: current firmware")
 proto.prefs.timeout = Pref.uint("Answer timeout (ms)", 1000,
   "How long an answer the device owes may take before it is reported missing")
 
@@ -1720,7 +1721,7 @@ local function host_body(sub, payload_range, mtvb, info)
     sub:add(F.undecoded, payload_range)
   end
   if info.ignored then
-    sub:add_proto_expert_info(E.ignored, "Ignored in state " .. info.state .. " (E33)")
+    sub:add_proto_expert_info(E.ignored, "Ignored in state " .. info.state)
   end
   for _, frame in ipairs(info.answers) do
     sub:add(F.response, frame):set_generated()

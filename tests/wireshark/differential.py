@@ -255,6 +255,13 @@ def run_variant(
     expected = reference.Reference(ilahrs.VARIANTS[variant]).decode(capture)
     mark_answered(expected)
     messages, values = compare(path, shown, expected)
+    wanted = [m for packet in expected for m in packet.messages]
+    missing = [(m.kind, m.command or m.table, m.missing) for m in wanted if m.missing is not None]
+    check(
+        ("command", "ClearClb", "ack") in missing and ("output", "quaternion", "initial_alignment") in missing,
+        str(path),
+        f"missing answers: {missing}",
+    )
     damaged = [t for packet in shown for t in packet.trees if t.has(f"{P}.damaged")]
     check(len(damaged) == len(recording.damaged), str(path), f"{len(damaged)} damaged messages shown")
     for tree, spoiled in zip(damaged, recording.damaged, strict=True):

@@ -4,7 +4,8 @@ The Python package's sans-I/O `Device` and `Host` talk back to back on one simul
 chunk either side writes goes into a pcapng capture (`ilahrs.pcapng`) with its time and direction,
 as `ilahrs record` writes them. The device's bytes are cut into chunks the way serial reads cut
 them (a message split across packets, several messages in one packet); garbage is put between
-messages, one output frame and one $PAHR sentence get a wrong checksum, and one output block is
+messages; an acknowledgement, an alignment block, an output frame and a $PAHR sentence get a wrong
+checksum (so an answer goes missing and an alignment block never comes), and one output block is
 written after the Stop that ended its output (late output).
 
 The session sends every command of the spec, brings every payload table on the line, runs a 2D, a
@@ -73,7 +74,7 @@ class Session:
         self.host = ilahrs.Host()
         self.now_us = 0
         self.recording = Recording()
-        self.damage_output = False
+        self.damage_frame = False
         self.damage_sentence = False
 
     # --- the line --------------------------------------------------------------------------------
@@ -117,7 +118,7 @@ class Session:
             pos += size
 
     def damage(self, data: bytes) -> bytes:
-        """Spoil the checksum of the first output frame or sentence in `data` when asked to."""
+        """Spoil the checksum of the first frame or sentence in `data` when asked to."""
         if self.damage_sentence and data.startswith(b"$"):
             end = data.index(b"\n") + 1
             digit = b"0" if data[end - 4 : end - 3] != b"0" else b"1"
@@ -125,10 +126,10 @@ class Session:
             self.damage_sentence = False
             self.recording.damaged.append(spoiled)
             return spoiled + data[end:]
-        if self.damage_output and data.startswith(ilahrs.frame.HEADER):
+        if self.damage_frame and data.startswith(ilahrs.frame.HEADER):
             size = ilahrs.frame.HEADER_SIZE + int.from_bytes(data[4:6], "little")
             spoiled = data[: size - 3] + bytes([data[size - 3] ^ 0x01]) + data[size - 2 : size]
-            self.damage_output = False
+            self.damage_frame = False
             self.recording.damaged.append(spoiled)
             return spoiled + data[size:]
         return data
@@ -193,20 +194,24 @@ def configure(s: Session) -> None:
     )
     s.send("LoadAHRSPar", load)
     s.send("ReadAHRSPar")
+    s.damage_frame = True  # the acknowledgement never arrives: missing after the host's timeout
+    s.send("ClearClb")
+    s.idle(1.2)
     s.send("ClearClb")
     s.send("GetClbRes")
 
 
 def outputs(s: Session) -> None:
-    """Continuous output in each binary format (a damaged frame, a block in flight at Stop, the
-    last block before sleep); on request in each format, GetBIT in between."""
+    """Continuous output in each binary format (a damaged frame, a lost alignment block, a block in
+    flight at Stop, the last block before sleep); on request in each format, GetBIT in between."""
     s.send("AHRScont1")
     s.run(1.3)
-    s.damage_output = True
+    s.damage_frame = True
     s.run(0.3, step=0.12)
     s.stop_with_output_in_flight()
     s.idle(1.5)
     s.send("AHRScont2")
+    s.damage_frame = True  # the alignment block is lost: output arrives instead
     s.run(1.2)
     s.send("Stop")
     s.idle(0.3)

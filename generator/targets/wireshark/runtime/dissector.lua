@@ -202,7 +202,7 @@ local function host_body(sub, payload_range, mtvb, info)
     sub:add(F.undecoded, payload_range)
   end
   if info.ignored then
-    sub:add_proto_expert_info(E.ignored, "Ignored in state " .. info.state .. " (E33)")
+    sub:add_proto_expert_info(E.ignored, "Ignored in state " .. info.state)
   end
   for _, frame in ipairs(info.answers) do
     sub:add(F.response, frame):set_generated()

@@ -44,7 +44,7 @@ F.discarded = ProtoField.bytes(NAME .. ".discarded", "Discarded bytes", base.NON
 F.damaged = ProtoField.string(NAME .. ".damaged", "Damaged message", base.ASCII,
   "A frame or sentence that failed its checks; its bytes are discarded")
 F.undecoded = ProtoField.bytes(NAME .. ".undecoded", "Undecoded payload", base.NONE,
-  "A payload no context explains: which table it follows is not guessed (E7)")
+  "A payload no context explains: which table it follows is not guessed")
 F.candidates = ProtoField.string(NAME .. ".candidates", "Tables of this size")
 
 local frame_fields = {}
@@ -74,7 +74,7 @@ for _, flag in ipairs(SPEC.status_word.flags) do
   local label = flag.icd_name .. ": " .. flag.name
   USW.flags[flag.name] = ProtoField.bool(NAME .. ".usw." .. flag.name, label, usw_bits, nil, 2 ^ flag.bit, flag.doc)
 end
-USW.mode = ProtoField.string(NAME .. ".usw.mode", "Mode", base.ASCII, "Mode bits of the USW (Table 6.19)")
+USW.mode = ProtoField.string(NAME .. ".usw.mode", "Mode", base.ASCII, "The mode the USW's mode bits say (" .. SPEC.status_word.icd .. ")")
 
 local function describe(f)
   local text = f.doc or ""
@@ -164,7 +164,7 @@ local E = {
     expert.group.SEQUENCE, expert.severity.WARN),
   missing = ProtoExpert.new(NAME .. ".expert.missing", "Answer missing",
     expert.group.SEQUENCE, expert.severity.WARN),
-  ignored = ProtoExpert.new(NAME .. ".expert.ignored", "Ignored by the device in this state (E33)",
+  ignored = ProtoExpert.new(NAME .. ".expert.ignored", "Ignored by the device in this state",
     expert.group.SEQUENCE, expert.severity.NOTE),
   unknown = ProtoExpert.new(NAME .. ".expert.unknown_command", "Unknown command code",
     expert.group.PROTOCOL, expert.severity.WARN),
@@ -186,11 +186,11 @@ for i, v in ipairs(SPEC.variants) do
   table.insert(variant_help, v.name .. ": " .. v.part_number .. " (" .. table.concat(values, ", ") .. ")")
 end
 proto.prefs.variant = Pref.enum("Device variant (" .. table.concat(SPEC.variant_parameters, ", ") .. ")", 1,
-  "The scale factors of the rates and accelerations (Table 6.6 note 1). " .. table.concat(variant_help, "; "),
+  "The scale factors of the variant-scaled fields. " .. table.concat(variant_help, "; "),
   variants, false)
 proto.prefs.tcp_port = Pref.uint("TCP port", 0,
   "The device's TCP port (a simulator's --tcp or a serial-over-IP server); 0: none")
 proto.prefs.firmware = Pref.string("Firmware version", "",
-  "The device's firmware; before a version some transitions differ (E29). Empty: current firmware")
+  "The device's firmware; before some versions some transitions differ. Empty: current firmware")
 proto.prefs.timeout = Pref.uint("Answer timeout (ms)", 1000,
   "How long an answer the device owes may take before it is reported missing")

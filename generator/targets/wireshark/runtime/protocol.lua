@@ -203,7 +203,8 @@ function P.frame_at(s, pos)
   return total
 end
 
--- $PAHR sentences (NMEA 0183 framing: "$", fields separated by ",", "*", two hex digits, CR LF) --
+-- $PAHR sentences. NMEA 0183 framing: "$", the fields separated by ",", "*", the checksum (the XOR
+-- of the characters between "$" and "*") as two hex digits, CR LF.
 
 P.SENTENCE_START = 0x24 -- "$"
 local LF, CR = 0x0A, 0x0D
@@ -263,7 +264,7 @@ function P.parse_sentence(s)
     return nil, "checksum digits are not hex"
   end
   local sent = tonumber(digits, 16)
-  local computed = P.checksums[NMEA.checksum_algorithm](s, 2, star - 1)
+  local computed = P.checksums.xor8(s, 2, star - 1)
   if sent ~= computed then
     return nil, "bad checksum", sent, computed
   end
