@@ -249,7 +249,7 @@ GENERIC_FIELDS = (
     ("checksum.status", "uint8", "0: bad, 1: good (frames and sentences)."),
     ("discarded", "bytes", "Bytes that belong to no valid frame or sentence."),
     ("damaged", "string", "Why a frame or sentence was rejected."),
-    ("undecoded", "bytes", "A payload no context explains (which table it follows is not guessed, E7)."),
+    ("undecoded", "bytes", "A payload no context explains (which table it follows is never guessed)."),
     ("candidates", "string", "The payload tables of an undecoded payload's size."),
     ("usw.mode", "string", "The mode the USW mode bits say."),
     ("expert.bad_checksum", "expert", "Warning: a frame or sentence whose checksum does not match."),
@@ -258,7 +258,7 @@ GENERIC_FIELDS = (
     ("expert.unexpected", "expert", "Warning: a device message nothing in the context explains."),
     ("expert.wrong_ack", "expert", "Warning: an acknowledgement that carries another checksum."),
     ("expert.missing", "expert", "Warning: an answer that did not come within the answer timeout."),
-    ("expert.ignored", "expert", "Note: a host message the device ignores in its state (E33)."),
+    ("expert.ignored", "expert", "Note: a host message the device ignores in its state (no transition)."),
     ("expert.unknown_command", "expert", "Warning: a command code no command has."),
     ("expert.late", "expert", "Chat: output from the state the device has just left."),
 )
@@ -280,9 +280,9 @@ def generic_fields(spec: Spec) -> list[tuple[str, str, str]]:
 
 
 def shared_codes(spec: Spec) -> list[str]:
-    """Codes several commands share, with their names: "0xFE (ExitClb, Stop)"."""
+    """Codes several commands share, with their names: "0xFE: ExitClb, Stop"."""
     shared = [code for code in spec.codes if len(spec.commands_with_code(code)) > 1]
-    return [f"0x{code:02X} ({', '.join(c.name for c in spec.commands_with_code(code))})" for code in shared]
+    return [f"0x{code:02X}: {', '.join(c.name for c in spec.commands_with_code(code))}" for code in shared]
 
 
 def cell(text: object) -> str:
