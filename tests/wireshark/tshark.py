@@ -57,6 +57,8 @@ class Tree:
     """One `ilahrs` tree: every (key, value) in order, subtrees flattened."""
 
     items: Pairs = field(default_factory=list)
+    raw: bytes = b""
+    """The bytes the tree covers (of the packet, or reassembled)."""
 
     def get(self, key: str) -> Any:
         return next((v for k, v in self.items if k == key), None)
@@ -111,10 +113,13 @@ def parse(text: str) -> list[Shown]:
         source = next(v for k, v in packet if k == "_source")
         layers = next(v for k, v in source if k == "layers")
         trees = []
+        raw = b""
         for key, value in layers:
-            if key == PROTO:
+            if key == PROTO + "_raw":
+                raw = bytes.fromhex(value[0])
+            elif key == PROTO:
                 items: Pairs = []
                 _flatten(value, items)
-                trees.append(Tree(items))
+                trees.append(Tree(items, raw))
         shown.append(Shown(layers, trees))
     return shown

@@ -74,6 +74,13 @@ local function latin1(text)
   end))
 end
 
+-- Text for display: bytes outside printable ASCII as \xNN.
+local function printable(text)
+  return (text:gsub("[^\32-\126]", function(c)
+    return string.format("\\x%02X", c:byte())
+  end))
+end
+
 local function usw_tree(item, range, value)
   for _, flag in ipairs(SPEC.status_word.flags) do
     add_wire(item, USW.flags[flag.name], range)
@@ -290,20 +297,21 @@ end
 
 local function draw_damaged(tree, tvb, pinfo, item)
   local mtvb, offset = locate(tvb, pinfo, item, "Damaged message")
+  local reason = printable(item.reason)
   local sub = tree:add(proto, mtvb(offset, #item.raw), LABEL .. ", damaged " .. (item.sentence and "sentence"
-    or "frame") .. ": " .. item.reason)
-  generated(sub, F.damaged, item.reason)
+    or "frame") .. ": " .. reason)
+  generated(sub, F.damaged, reason)
   local checksum_range
   if item.sentence then
     checksum_range = mtvb(offset + #item.raw - 4, 2)
-    sub:add(F.sentence, mtvb(offset, #item.raw), item.raw:gsub("[\r\n]+$", ""))
+    sub:add(F.sentence, mtvb(offset, #item.raw), printable((item.raw:gsub("[\r\n]+$", ""))))
   else
     local payload_range
     payload_range, checksum_range = frame_head(sub, mtvb, offset, item.raw)
     sub:add(F.payload, payload_range)
   end
   if item.sent == nil then
-    sub:add_proto_expert_info(E.damaged, "Damaged sentence: " .. item.reason)
+    sub:add_proto_expert_info(E.damaged, "Damaged sentence: " .. reason)
     return
   end
   local field, computed = F.checksum, F.computed

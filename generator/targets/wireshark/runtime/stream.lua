@@ -26,11 +26,26 @@ local function next_start(s, pos)
   return frame or sentence or #s + 1
 end
 
+-- A candidate that failed only its own checks (a frame's checksum; a complete $PAHR sentence):
+-- worth showing as damaged. Otherwise nil.
+local function damaged(s, pos, reason, sent, computed, size)
+  if size == nil then
+    return nil
+  end
+  local sentence = s:byte(pos) == P.SENTENCE_START
+  if sent == nil and (not sentence or s:sub(pos, pos + #P.sentence_prefix - 1) ~= P.sentence_prefix) then
+    return nil
+  end
+  return { kind = "damaged", reason = reason or "bad checksum", sent = sent, computed = computed, size = size,
+    sentence = sentence }
+end
+
 -- Add the bytes of packet `frame`; return what they complete, in order: messages
--- ({ kind = "message", raw, frame, offset, sentence = values or nil }), runs of discarded bytes
--- ({ kind = "discard", ... }) and damaged candidates, frames or sentences that failed only
--- their checks ({ kind = "damaged", reason, sent, computed, ... }).
-function Stream:feed(data, frame, final)
+-- ({ kind = "message", raw, frame, offset, contiguous, sentence = values or nil }), runs of
+-- discarded bytes ({ kind = "discard", ... }) and damaged frames and sentences, whose bytes are
+-- discarded too ({ kind = "damaged", reason, sent, computed, ... }). A candidate that needs bytes
+-- not yet received waits for the next packet.
+function Stream:feed(data, frame)
   local base = #self.buffer
   self.buffer = self.buffer .. data
   for i = 1, #data do
@@ -39,7 +54,7 @@ function Stream:feed(data, frame, final)
   end
   local s = self.buffer
   local out = {}
-  local run -- the discard run being collected: its first position
+  local run -- the first position of the discarded bytes being collected
   local function close(pos)
     if run then
       local piece = self:piece(run, pos - 1)
@@ -52,40 +67,35 @@ function Stream:feed(data, frame, final)
   local pos = 1
   while pos <= #s do
     local first = s:byte(pos)
-    local used, extra, sent, computed, size
-    if first == P.header:byte(1) then
-      used, sent, computed, size = P.frame_at(s, pos)
-    elseif first == P.SENTENCE_START then
-      used, extra, sent, computed, size = P.sentence_at(s, pos)
-    else
-      local following = next_start(s, pos + 1)
+    if first ~= P.header:byte(1) and first ~= P.SENTENCE_START then
       run = run or pos
-      pos = following
-      used = nil
-    end
-    if used == nil then
-      -- skipped
-    elseif used > 0 then
-      close(pos)
-      local piece = self:piece(pos, pos + used - 1)
-      piece.kind = "message"
-      piece.sentence = extra
-      table.insert(out, piece)
-      pos = pos + used
-    elseif used == P.INVALID or final then
-      local sentence = first == P.SENTENCE_START
-      if size ~= nil and (sent ~= nil or s:sub(pos, pos + #P.sentence_prefix - 1) == P.sentence_prefix) then
-        local damaged = self:piece(pos, pos + size - 1)
-        damaged.kind = "damaged"
-        damaged.reason = extra or "bad checksum"
-        damaged.sent, damaged.computed = sent, computed
-        damaged.sentence = sentence
-        table.insert(out, damaged)
+      pos = next_start(s, pos + 1)
+    else
+      local used, extra, sent, computed, size
+      if first == P.SENTENCE_START then
+        used, extra, sent, computed, size = P.sentence_at(s, pos)
+      else
+        used, sent, computed, size = P.frame_at(s, pos)
       end
-      run = run or pos
-      pos = pos + 1
-    else
-      break
+      if used == P.NEED_MORE then
+        break
+      elseif used == P.INVALID then
+        local bad = damaged(s, pos, extra, sent, computed, size)
+        if bad then
+          local piece = self:piece(pos, pos + size - 1)
+          bad.raw, bad.frame, bad.offset, bad.contiguous = piece.raw, piece.frame, piece.offset, piece.contiguous
+          table.insert(out, bad)
+        end
+        run = run or pos
+        pos = pos + 1
+      else
+        close(pos)
+        local piece = self:piece(pos, pos + used - 1)
+        piece.kind = "message"
+        piece.sentence = extra
+        table.insert(out, piece)
+        pos = pos + used
+      end
     end
   end
   close(pos)
