@@ -1167,12 +1167,12 @@ function Context:expire(time)
   end
 end
 
--- A message from the host (msg: { raw, sentence, frame }): what it is and what it makes the
--- device owe.
+-- A message from the host (msg: { raw, sentence, at = the packet it completes in }): what it is and
+-- what it makes the device owe.
 function Context:host(msg, time)
   self:expire(time)
   local state = self.target
-  local info = { frame = msg.frame, answers = {} }
+  local info = { frame = msg.at, answers = {} }
   if msg.sentence then
     info.kind, info.state = "other", state
     return info

@@ -86,6 +86,13 @@ def compare_message(where: str, expected: Expected, tree: tshark.Tree) -> int:
     check(tree.has(f"{P}.expert.missing") == (expected.missing is not None), where, f"missing {expected.missing}")
     check(tree.has(f"{P}.expert.unexpected") == (expected.kind == "unexpected"), where, "unexpected")
     check(tree.get(f"{P}.checksum.status") == "1", where, "checksum status not good")
+    if expected.direction == "device":
+        link = tree.get(f"{P}.ack_frame" if expected.kind == "ack" else f"{P}.request_in")
+        check(
+            link == (str(expected.request) if expected.request else None),
+            where,
+            f"linked to frame {link}, expected {expected.request}",
+        )
     if expected.direction == "host" and expected.kind == "command":
         check(tree.has(f"{P}.response_in") == expected.answered, where, "answered-in link")
     shown = {k for k, _ in tree.items if k.startswith((f"{P}.{expected.table}.", reference.SENTENCE))}

@@ -46,6 +46,10 @@ class Expected:
     missing: str | None = None
     values: dict[str, Value] = field(default_factory=dict)
     answered: bool = False
+    frame: int = 0
+    """The packet the message completes in."""
+    request: int | None = None
+    """A device message: the packet of the host message it answers."""
 
 
 @dataclass
@@ -111,7 +115,7 @@ class Reference:
         result = []
         start = capture.packets[0].timestamp_us if capture.packets else 0
         now = start
-        for packet in capture.packets:
+        for number, packet in enumerate(capture.packets, start=1):
             self._advance((packet.timestamp_us - now) / 1_000_000)
             now = packet.timestamp_us
             expected = PacketExpected()
@@ -119,6 +123,7 @@ class Reference:
                 before = self.outbound.discarded
                 for event in self.outbound.feed(packet.data):
                     expected.messages.append(self._host_message(event.raw))
+                    expected.messages[-1].frame = number
                 expected.discarded = self.outbound.discarded - before
             else:
                 self._device(self.host.receive(packet.data), expected)
@@ -196,6 +201,8 @@ class Reference:
                     message.values = sentence_values(ilahrs.PahrSentence.parse(event.raw))
             if message is not None:
                 message.missing, missing = missing, None
+                request = self.requests.get(message.source or "") if message.kind != "unexpected" else None
+                message.request = request.frame if request is not None else None
                 expected.messages.append(message)
 
     def _output(self, event: Output) -> Expected:
