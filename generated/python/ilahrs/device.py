@@ -44,7 +44,7 @@ from .frame import Frame, MessageType
 from .motion import Motion, Sensors
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
 from .payloads import PAYLOADS
-from .roles import CALIBRATION_RESULTS, FINISH, FIRMWARE, LOAD_PARAMETERS, READ_PARAMETERS, STOP_RUN, ParameterBlock
+from .roles import CALIBRATION_RESULTS, FINISH, FIRMWARE, LOAD_PARAMETERS, STOP_RUN, ParameterBlock
 from .spec import ICD_DATE
 from .statemachine import (
     ACK,
@@ -90,7 +90,6 @@ def _text_field(table: type[Payload]) -> str:
 
 
 # The tables the device treats specially, by the part their command plays (`ilahrs.roles`).
-_READ_BLOCK: Final = ParameterBlock.NAME
 _LOAD_BLOCK: Final = COMMANDS[LOAD_PARAMETERS].parameter_block or ""
 _FINAL_RESULT: Final = COMMANDS[FINISH].response_payloads[0]
 _RUN_RESULT: Final = next(p for p in COMMANDS[STOP_RUN].response_payloads if p != _FINAL_RESULT)
@@ -100,7 +99,6 @@ _FIRMWARE_FIELD: Final = _text_field(PAYLOADS[_FIRMWARE_BLOCK])
 _DEVICE_ID_FIELD: Final = _text_field(ParameterBlock)
 _DECLINATION_FIELD: Final = next(f.name for f in ParameterBlock.FIELDS if f.encoding == "declination")
 _DATE_FIELDS: Final = tuple(f.name for f in ParameterBlock.FIELDS if f.encoding == "date")
-assert _READ_BLOCK in COMMANDS[READ_PARAMETERS].response_payloads
 
 # The values the device model fills fields with from its own context, by field name.
 _LATITUDE_FIELD: Final = "latitude"
