@@ -16,9 +16,15 @@ PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
 
 .PHONY: lint-python test-python
 
+# The runtime modules of the package (generator/targets/python/runtime) are ruff-checked and
+# format-checked where they are written; mypy checks them as the package's modules, in
+# generated/python, where the generated tables they import sit beside them.
+PY_RUNTIME := generator/targets/python/runtime
+
 lint-python: setup
 	$(VENV)/bin/ruff check $(PY_LINT_PATHS) $(PY_LINT_FOLDERS)
-	$(VENV)/bin/mypy $(PY_LINT_PATHS)
+	$(VENV)/bin/ruff format --check $(PY_RUNTIME) generated/python
+	$(VENV)/bin/mypy --exclude '^$(PY_RUNTIME)/' --exclude '^build/' --exclude '^\.venv/' $(PY_LINT_PATHS)
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 
 test-python: setup

@@ -18,7 +18,7 @@ from test_device_support import Pair, apply, kinds, messages, quick_parameters, 
 import ilahrs
 from generator import build_spec
 from generator.model import TIMER_EVENTS
-from generator.targets.python import behaviour
+from generator.targets.python import tables as behaviour
 from ilahrs import device as device_module
 from ilahrs import host as host_module
 from ilahrs import motion

@@ -19,8 +19,6 @@ Standard library only.
 
 from __future__ import annotations
 
-from typing import Final
-
 from .commands import (
     CODES,
     COMMANDS,
@@ -67,11 +65,9 @@ from .payloads import (
     Payload,
     Quaternion,
 )
+from .spec import SPEC_SHA256, SPEC_VERSION
 from .status import UnitStatusWord, UswFlag, UswMode
 from .stream import MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
-
-SPEC_VERSION: Final = '1.0.0'
-SPEC_SHA256: Final = 'af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f'
 
 __all__ = [
     "CODES",

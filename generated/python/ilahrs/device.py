@@ -1,5 +1,6 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/device.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """The reference model of the AHRS: what the device does with every message, as time passes.
 
 Sans-I/O (h11 style): `Device.receive(data)` takes the bytes the host sends and returns the bytes
@@ -14,8 +15,9 @@ message; a timer), looks the transition up, sends what it lists and enters the n
 
 The data are synthetic but physically consistent (`ilahrs.motion`): angles, quaternion, gyros,
 accelerometers and magnetometers describe one seeded motion, scaled per device variant (KG, KA of
-Table 6.6). Parameter blocks are read with the payload classes and kept, so ReadAHRSPar shows what
-LoadAHRSPar wrote and the alignment time, update rate and accumulation time take effect.
+Table 6.6). Parameter blocks are read with the payload classes and kept, so the read command shows
+what the load command wrote (READ_PARAMETERS and LOAD_PARAMETERS of `ilahrs.roles`) and the
+alignment time, update rate and accumulation time take effect.
 
 >>> from ilahrs import build_command
 >>> device = Device(seed=1)
@@ -34,13 +36,16 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Final
 
+from .codec import FieldInfo, Payload, field_kind
 from .commands import COMMANDS, ack_for
 from .encodings import CALIBRATION_FAILED, CALIBRATION_NO_ESTIMATE, VARIANTS, Variant, encode_date
 from .errors import ErrorKind, IlahrsError
 from .frame import Frame, MessageType
 from .motion import Motion, Sensors
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
-from .payloads import PAYLOADS, AhrsParametersRead, Payload
+from .payloads import PAYLOADS
+from .roles import CALIBRATION_RESULTS, FINISH, FIRMWARE, LOAD_PARAMETERS, STOP_RUN, ParameterBlock
+from .spec import ICD_DATE
 from .statemachine import (
     ACK,
     BLOCK_TIMEOUT,
@@ -60,6 +65,7 @@ from .statemachine import (
     STATES,
     TIMER_EVENTS,
     TIMER_FIELDS,
+    TIMER_IS_RATE,
     UNKNOWN,
     Transition,
     command_event,
@@ -67,212 +73,78 @@ from .statemachine import (
     lookup,
     timer_transition,
 )
+from .status import _MODES
 from .stream import StreamDecoder
+from .synthetic import quantity as synthetic_quantity
 
 __all__ = ["DEFAULT_DEVICE_ID", "DEFAULT_VARIANT", "Device", "default_parameters"]
 
-DEFAULT_VARIANT: Final = 'g300_a2_tmga'
+DEFAULT_VARIANT: Final = next(iter(VARIANTS))
+"""The first variant the spec lists."""
 DEFAULT_DEVICE_ID: Final = "VIRT0001"
 _NS: Final = 1_000_000_000
-_READ_BLOCK: Final = 'ahrs_parameters_read'
-_LOAD_BLOCK: Final = 'ahrs_parameters_load'
-_FINAL_RESULT: Final = 'calibration_result'
-_RUN_RESULT: Final = 'calibration_run_result'
-_STATUS_BLOCK: Final = 'calibration_status'
-_FIRMWARE_BLOCK: Final = 'firmware_version'
-_FIRMWARE_FIELD: Final = 'version'
-_DEVICE_ID_FIELD: Final = 'device_id'
-_DECLINATION_FIELD: Final = 'declination'
-_LATITUDE_FIELD: Final = 'latitude'
-_CAL_TYPE: Final = 'calibration_type'
-_CAL_RUN: Final = 'run'
-_CAL_RUNS_USED: Final = 'runs_used'
-_CAL_DATA_USED: Final = 'data_used'
-_CAL_SUCCESS: Final = 'success'
-_DATE_FIELDS: Final = ('date',)
-_DEFAULT_DATE: Final = (2014, 3, 11)
-"""The date a new device holds: the ICD's (2014-03-11)."""
-_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({'readiness': 0, 'sleep': 32896})
+
+
+def _text_field(table: type[Payload]) -> str:
+    return next(f.name for f in table.FIELDS if field_kind(f) == "char")
+
+
+# The tables the device treats specially, by the part their command plays (`ilahrs.roles`).
+_LOAD_BLOCK: Final = COMMANDS[LOAD_PARAMETERS].parameter_block or ""
+_FINAL_RESULT: Final = COMMANDS[FINISH].response_payloads[0]
+_RUN_RESULT: Final = next(p for p in COMMANDS[STOP_RUN].response_payloads if p != _FINAL_RESULT)
+_STATUS_BLOCK: Final = COMMANDS[CALIBRATION_RESULTS].response_payloads[0]
+_FIRMWARE_BLOCK: Final = COMMANDS[FIRMWARE].response_payloads[0]
+_FIRMWARE_FIELD: Final = _text_field(PAYLOADS[_FIRMWARE_BLOCK])
+_DEVICE_ID_FIELD: Final = _text_field(ParameterBlock)
+_DECLINATION_FIELD: Final = next(f.name for f in ParameterBlock.FIELDS if f.encoding == "declination")
+_DATE_FIELDS: Final = tuple(f.name for f in ParameterBlock.FIELDS if f.encoding == "date")
+
+# The values the device model fills fields with from its own context, by field name.
+_LATITUDE_FIELD: Final = "latitude"
+"""The parameter the sensor model reads (the Earth field depends on it)."""
+_CAL_TYPE: Final = "calibration_type"
+_CAL_RUN: Final = "run"
+_CAL_RUNS_USED: Final = "runs_used"
+_CAL_DATA_USED: Final = "data_used"
+_CAL_SUCCESS: Final = "success"
+_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({mode.value: bits for bits, mode in _MODES.items()})
 """USW mode name -> its bits (Table 6.19)."""
-_TIMER_IS_RATE: Final[Mapping[str, bool]] = MappingProxyType(
-    {
-        'accumulation': False,
-        'alignment': False,
-        'output': True,
-    }
-)
-"""Whether a timer's field is a rate (Hz) rather than a duration (s)."""
 
 _FillRow = tuple[str, tuple[str, ...], int, int | str, float | None, float | None, str]
+
+
+def _fill_row(info: FieldInfo) -> _FillRow:
+    """(field, synthetic quantities, multiplier, divisor, low, high, kind): a multiplexed field
+    lists its quantities in turn (Table 6.4 notes 2 and 3)."""
+    quantities = synthetic_quantity(info.name, info.unit, info.type, info.encoding, info.multiplexed)
+    return (info.name, quantities, info.multiplier, info.divisor, info.low, info.high, field_kind(info))
+
+
 _FILL: Final[Mapping[str, tuple[_FillRow, ...]]] = MappingProxyType(
     {
-        'full_output': (
-            ("heading", ("heading",), 1, 100, 0, 35999, "unsigned"),
-            ("pitch", ("pitch",), 1, 100, -9000, 9000, "signed"),
-            ("roll", ("roll",), 1, 100, -18000, 18000, "signed"),
-            ("ugyro_x", ("adc_gyro_x",), 1, 1, -32768, 32767, "signed"),
-            ("ugyro_y", ("adc_gyro_y",), 1, 1, -32768, 32767, "signed"),
-            ("ugyro_z", ("adc_gyro_z",), 1, 1, -32768, 32767, "signed"),
-            ("uacc_x", ("adc_acc_x",), 1, 1, -32768, 32767, "signed"),
-            ("uacc_y", ("adc_acc_y",), 1, 1, -32768, 32767, "signed"),
-            ("uacc_z", ("adc_acc_z",), 1, 1, -32768, 32767, "signed"),
-            ("umag_x", ("adc_mag_x",), 1, 1, -32768, 32767, "signed"),
-            ("umag_y", ("adc_mag_y",), 1, 1, -32768, 32767, "signed"),
-            ("umag_z", ("adc_mag_z",), 1, 1, -32768, 32767, "signed"),
-            ("reserved", (), 1, 1, None, None, "reserved"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-            ("vdd", ("vdd_input", "vdd_sensors"), 1, 1000, 0, 65535, "unsigned"),
-            (
-                "utermo",
-                ("adc_temp_1", "adc_temp_2", "adc_temp_3", "adc_temp_4", "adc_temp_5", "adc_temp_6", "adc_temp_7"),
-                1,
-                1,
-                -32768,
-                32767,
-                "signed",
-            ),
-        ),
-        'quaternion': (
-            ("heading", ("heading",), 1, 100, 0, 35999, "unsigned"),
-            ("pitch", ("pitch",), 1, 100, -9000, 9000, "signed"),
-            ("roll", ("roll",), 1, 100, -18000, 18000, "signed"),
-            ("lk0", ("q0",), 1, 10000, -10000, 10000, "signed"),
-            ("lk1", ("q1",), 1, 10000, -10000, 10000, "signed"),
-            ("lk2", ("q2",), 1, 10000, -10000, 10000, "signed"),
-            ("lk3", ("q3",), 1, 10000, -10000, 10000, "signed"),
-            ("reserved", (), 1, 1, None, None, "reserved"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-            ("vdd", ("vdd_input",), 1, 1000, 0, 65535, "unsigned"),
-            ("utermo", ("temperature",), 1, 10, -32768, 32767, "signed"),
-        ),
-        'orientation_sensors': (
-            ("heading", ("heading",), 1, 100, 0, 35999, "unsigned"),
-            ("pitch", ("pitch",), 1, 100, -9000, 9000, "signed"),
-            ("roll", ("roll",), 1, 100, -18000, 18000, "signed"),
-            ("gyro_x", ("rate_x",), 1, "kg", -32768, 32767, "signed"),
-            ("gyro_y", ("rate_y",), 1, "kg", -32768, 32767, "signed"),
-            ("gyro_z", ("rate_z",), 1, "kg", -32768, 32767, "signed"),
-            ("acc_x", ("acc_x",), 1, "ka", -32768, 32767, "signed"),
-            ("acc_y", ("acc_y",), 1, "ka", -32768, 32767, "signed"),
-            ("acc_z", ("acc_z",), 1, "ka", -32768, 32767, "signed"),
-            ("mag_x", ("mag_x",), 10, 1, -32768, 32767, "signed"),
-            ("mag_y", ("mag_y",), 10, 1, -32768, 32767, "signed"),
-            ("mag_z", ("mag_z",), 10, 1, -32768, 32767, "signed"),
-            ("reserved", (), 1, 1, None, None, "reserved"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-            ("vdd", ("vdd_input",), 1, 1000, 0, 65535, "unsigned"),
-            ("utermo", ("temperature",), 1, 10, -32768, 32767, "signed"),
-        ),
-        'initial_alignment': (
-            ("gyro_bias_x", ("adc_gyro_x",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("gyro_bias_y", ("adc_gyro_y",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("gyro_bias_z", ("adc_gyro_z",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_acc_x", ("adc_acc_x",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_acc_y", ("adc_acc_y",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_acc_z", ("adc_acc_z",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_mag_x", ("adc_mag_x",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_mag_y", ("adc_mag_y",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("average_mag_z", ("adc_mag_z",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("initial_heading", ("heading",), 1, 1, 0, 360, "float"),
-            ("initial_roll", ("roll",), 1, 1, -180, 180, "float"),
-            ("initial_pitch", ("pitch",), 1, 1, -90, 90, "float"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-        ),
-        'ahrs_parameters_read': (
-            ("update_rate", ("update_rate",), 1, 1, 1, 100, "unsigned"),
-            ("alignment_time", ("alignment_time",), 1, 1, 1, 65535, "unsigned"),
-            ("declination", ("declination",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("latitude", ("latitude",), 1, 1, -90, 90, "float"),
-            ("longitude", ("longitude",), 1, 1, -180, 180, "float"),
-            ("altitude", ("altitude",), 1, 1, -20000, 100000, "float"),
-            ("date", ("date",), 1, 1, 1900.002685546875, 2200.001708984375, "float"),
-            ("alignment_angle_a1", ("alignment_angle_a1",), 1, 1, -360, 360, "float"),
-            ("alignment_angle_a2", ("alignment_angle_a2",), 1, 1, -360, 360, "float"),
-            ("alignment_angle_a3", ("alignment_angle_a3",), 1, 1, -360, 360, "float"),
-            ("device_id", ("device_id",), 1, 1, None, None, "char"),
-            ("reserved", (), 1, 1, None, None, "reserved"),
-        ),
-        'firmware_version': (
-            ("version", ("version",), 1, 1, None, None, "char"),
-        ),
-        'bit_result': (
-            ("utermo100", ("temperature",), 1, 100, -32768, 32767, "signed"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-        ),
-        'calibration_result': (
-            ("calibration_type", ("calibration_type",), 1, 1, 1, 3, "unsigned"),
-            ("runs_used", ("runs_used",), 1, 1, 0, 255, "unsigned"),
-            ("data_used", ("data_used",), 1, 1, 0, 100, "unsigned"),
-            ("success", ("success",), 1, 1, 0, 255, "unsigned"),
-            ("tm_c_11", ("soft_iron_11",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_12", ("soft_iron_12",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_13", ("soft_iron_13",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_21", ("soft_iron_21",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_22", ("soft_iron_22",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_23", ("soft_iron_23",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_31", ("soft_iron_31",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_32", ("soft_iron_32",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_33", ("soft_iron_33",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_x", ("hard_iron_x",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_y", ("hard_iron_y",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_z", ("hard_iron_z",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-        ),
-        'calibration_run_result': (
-            ("calibration_type", ("calibration_type",), 1, 1, 2, 2, "unsigned"),
-            ("run", ("run",), 1, 1, 1, 255, "unsigned"),
-            ("data_used", ("data_used",), 1, 1, 0, 100, "unsigned"),
-            ("success", ("success",), 1, 1, 0, 255, "unsigned"),
-            ("reserved_1", (), 1, 1, None, None, "reserved"),
-            ("average_pitch", ("pitch",), 1, 1, -90, 90, "float"),
-            ("average_roll", ("roll",), 1, 1, -180, 180, "float"),
-            ("reserved_2", (), 1, 1, None, None, "reserved"),
-            ("usw", ("usw",), 1, 1, 0, 65535, "unsigned"),
-        ),
-        'calibration_status': (
-            ("calibration_type", ("calibration_type",), 1, 1, 0, 255, "unsigned"),
-            ("runs_used", ("runs_used",), 1, 1, 0, 255, "unsigned"),
-            ("reserved", (), 1, 1, None, None, "reserved"),
-            ("success", ("success",), 1, 1, 0, 255, "unsigned"),
-            ("tm_c_11", ("soft_iron_11",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_12", ("soft_iron_12",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_13", ("soft_iron_13",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_21", ("soft_iron_21",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_22", ("soft_iron_22",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_23", ("soft_iron_23",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_31", ("soft_iron_31",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_32", ("soft_iron_32",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("tm_c_33", ("soft_iron_33",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_x", ("hard_iron_x",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_y", ("hard_iron_y",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-            ("hm_0_z", ("hard_iron_z",), 1, 1, -3.4028234663852886e+38, 3.4028234663852886e+38, "float"),
-        ),
-        'acknowledgement': (
-            ("checksum", ("checksum",), 1, 1, 0, 65535, "unsigned"),
-        ),
+        name: tuple(_fill_row(info) for info in table.FIELDS)
+        for name, table in PAYLOADS.items()
+        if table.DIRECTION == "device_to_host"
     }
 )
-"""Per device-to-host table: (field, synthetic quantities, multiplier, divisor, low, high, kind);
-a multiplexed field lists its quantities in turn (Table 6.4 notes 2 and 3)."""
-_NMEA_FILL: Final[tuple[tuple[str, str, int, int, int], ...]] = (
-    ('roll', 'roll', 100, -18000, 18000),
-    ('pitch', 'pitch', 100, -9000, 9000),
-    ('heading', 'heading', 100, 0, 35999),
-    ('temperature', 'temperature', 10, -999, 9999),
-    ('vdd', 'vdd_input', 100, 0, 999),
-    ('usw', 'usw', 1, 0, 65535),
+"""Per device-to-host table: how the device fills each field."""
+_NMEA_FILL: Final = tuple(
+    (name, synthetic_quantity(name, unit, "", None, 0)[0], 10**decimals, low, high)
+    for name, _kind, _width, decimals, low, high, unit in PahrSentence._SPEC
 )
 """Per $PAHR field: (field, synthetic quantity, 10**decimals, low, high)."""
 
 
-def default_parameters(device_id: str = DEFAULT_DEVICE_ID) -> AhrsParametersRead:
+def default_parameters(device_id: str = DEFAULT_DEVICE_ID) -> ParameterBlock:
     """The parameter block (Table 6.10 form) of a new device: the defaults of Table 6.9 and the given id."""
     load = PAYLOADS[_LOAD_BLOCK]()
-    fields = {f.name for f in AhrsParametersRead.FIELDS if f.type != "reserved"}
+    fields = {f.name for f in ParameterBlock.FIELDS if f.type != "reserved"}
     values: dict[str, object] = {k: v for k, v in load.raw().items() if k in fields}
     for name in _DATE_FIELDS:
-        values[name] = encode_date(*_DEFAULT_DATE)
+        values[name] = encode_date(*ICD_DATE)
     values[_DEVICE_ID_FIELD] = device_id
-    return AhrsParametersRead.from_raw(values)
+    return ParameterBlock.from_raw(values)
 
 
 def _round(value: float) -> int:
@@ -307,16 +179,16 @@ class _Calibration:
     last: dict[str, object] | None = None
     """The evaluation of the accumulation that ended last."""
     result: dict[str, object] | None = None
-    """The result sent last (Table 6.14 form), which AcceptClb saves."""
+    """The result sent last (Table 6.14 form), which ACCEPT saves."""
 
 
 class Device:
     """The AHRS as the ICD describes it (sections 6.1, 6.3, 6.4), driven by bytes and a clock.
 
     Options: `seed` (motion, noise and calibration outcomes), `variant` (a name of
-    ilahrs.VARIANTS or a Variant: KG, KA), `firmware` (version; before 4.9.9.0 the legacy rows of
+    ilahrs.VARIANTS or a Variant: KG, KA), `firmware` (version; before DEFAULT_FIRMWARE the legacy rows of
     the table apply, e.g. 0x20 between 2D-2T runs finishes the calibration), `firmware_text`
-    (the GetVerFirmware answer), `parameters` (the initial parameter block, Table 6.10 form) and
+    (the FIRMWARE answer), `parameters` (the initial parameter block, Table 6.10 form) and
     `device_id` (overrides the id in `parameters`).
     """
 
@@ -327,7 +199,7 @@ class Device:
         variant: str | Variant = DEFAULT_VARIANT,
         firmware: str = DEFAULT_FIRMWARE,
         firmware_text: str | None = None,
-        parameters: AhrsParametersRead | None = None,
+        parameters: ParameterBlock | None = None,
         device_id: str | None = None,
     ) -> None:
         self.variant = VARIANTS[variant] if isinstance(variant, str) else variant
@@ -338,9 +210,9 @@ class Device:
         self._memory: dict[str, object] = {k: v for k, v in params.raw().items() if not isinstance(v, bytes)}
         if device_id is not None:
             self._memory[_DEVICE_ID_FIELD] = device_id
-        AhrsParametersRead.from_raw(self._memory).check()
+        ParameterBlock.from_raw(self._memory).check()
         self._calibration_memory: dict[str, object] = {}
-        """The calibration saved by AcceptClb (what GetClbRes reads, Table 6.17)."""
+        """The calibration saved by ACCEPT (what CALIBRATION_RESULTS reads, Table 6.17)."""
         self._received: dict[str, Payload] = {}
         """The last parameter block accepted, per table."""
         self._rng = random.Random(seed ^ 0xCA1)
@@ -387,9 +259,9 @@ class Device:
         return self._decoder.discarded
 
     @property
-    def parameters(self) -> AhrsParametersRead:
-        """The parameter block as ReadAHRSPar returns it."""
-        return AhrsParametersRead.from_raw(self._memory)
+    def parameters(self) -> ParameterBlock:
+        """The parameter block as READ_PARAMETERS returns it."""
+        return ParameterBlock.from_raw(self._memory)
 
     @property
     def next_event_in(self) -> float | None:
@@ -493,13 +365,13 @@ class Device:
         elif name in self._memory:
             value = self._memory[name]
         else:
-            value = DEFAULT_UPDATE_RATE_HZ if _TIMER_IS_RATE[timer] else DEFAULT_ALIGNMENT_TIME_S
+            value = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE[timer] else DEFAULT_ALIGNMENT_TIME_S
         assert isinstance(value, (int, float))
         return float(value)
 
     def _duration(self, timer: str) -> float:
         value = self._setting(timer)
-        if not _TIMER_IS_RATE[timer]:
+        if not TIMER_IS_RATE[timer]:
             return value
         if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
             value = min(value, NMEA_MAX_RATE_HZ)  # E22
@@ -515,7 +387,7 @@ class Device:
             return
         self._received[cls.NAME] = block
         if cls.NAME == _LOAD_BLOCK:
-            read = {f.name: f for f in AhrsParametersRead.FIELDS}
+            read = {f.name: f for f in ParameterBlock.FIELDS}
             for f in cls.FIELDS:
                 same = read.get(f.name)
                 if same is not None and same.type == f.type and same.size == f.size and f.type != "reserved":

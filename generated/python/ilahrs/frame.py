@@ -1,21 +1,41 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
-"""The binary frame (Table 6.2, Table 6.3) and its checksum.
+# Copied from generator/targets/python/runtime/frame.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
+"""The binary frame and its checksum.
 
-A frame is the header 0xAA 0x55, then message type, reserved byte and message
-length, then the payload, then the checksum. The message length counts every byte after the
-header; the checksum is the sum, modulo 2**16, of the bytes from the message type through the
-payload. Every multi-byte value is little-endian.
+A frame is the header (HEADER), then the fields FRAME_FIELDS (message type, reserved byte and
+message length), then the payload, then the checksum. The message length counts every byte after
+the header; the checksum is the sum, modulo 2**16, of the bytes from the message type through the
+payload. Every multi-byte value is little-endian. The layout is the spec's (`ilahrs.spec`).
 """
 
 from __future__ import annotations
 
 import struct
 from dataclasses import dataclass
-from enum import IntEnum
 from typing import Final
 
 from .errors import ErrorKind, IlahrsError
+from .spec import (
+    CHECKSUM_SIZE,
+    FRAME_FIELDS,
+    FRAME_FORMAT,
+    FRAME_OVERHEAD,
+    HEADER,
+    HEADER_SIZE,
+    LENGTH_BIAS,
+    MAX_FRAME_SIZE,
+    MAX_MESSAGE_LENGTH,
+    MAX_PAYLOAD_SIZE,
+    MESSAGE_LENGTH_OFFSET,
+    MESSAGE_TYPE_OFFSET,
+    MIN_FRAME_SIZE,
+    MIN_MESSAGE_LENGTH,
+    MIN_PAYLOAD_SIZE,
+    PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    MessageType,
+)
 
 __all__ = [
     "CHECKSUM_SIZE",
@@ -38,41 +58,9 @@ __all__ = [
     "checksum",
 ]
 
-HEADER: Final = bytes((0xAA, 0x55,))
-"""The two bytes every frame starts with."""
-HEADER_SIZE: Final = 2
-MESSAGE_TYPE_OFFSET: Final = 2
-RESERVED_OFFSET: Final = 3
-MESSAGE_LENGTH_OFFSET: Final = 4
-PAYLOAD_OFFSET: Final = 6
-CHECKSUM_SIZE: Final = 2
-FRAME_OVERHEAD: Final = 8
-"""Bytes in a frame besides the payload."""
-LENGTH_BIAS: Final = 6
-"""message_length = payload size + LENGTH_BIAS."""
-MIN_MESSAGE_LENGTH: Final = 7
-"""Smallest message length a decoder accepts (E17)."""
-MAX_MESSAGE_LENGTH: Final = 58
-"""Largest message length a decoder accepts (E17)."""
-MIN_PAYLOAD_SIZE: Final = 1
-MAX_PAYLOAD_SIZE: Final = 52
-MIN_FRAME_SIZE: Final = 9
-MAX_FRAME_SIZE: Final = 60
-
 _LENGTH: Final = struct.Struct("<H")
-_PREFIX: Final = struct.Struct("<BBH")
-"""The fields between header and payload: message_type, reserved, message_length."""
-
-
-class MessageType(IntEnum):
-    """The message type byte (Table 6.2, Table 6.3)."""
-
-    COMMAND = 0
-    """A command from the host (one-byte payload holding the command code)."""
-    DATA = 1
-    """Data: every AHRS output, and the parameter blocks the host sends (E5)."""
-
-
+_PREFIX: Final = struct.Struct(FRAME_FORMAT)
+"""The fields between header and payload, in FRAME_FIELDS order."""
 _MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 
 
@@ -147,7 +135,12 @@ class Frame:
 
     def _body(self) -> bytes:
         """The checksummed bytes: the fields between header and payload, then the payload."""
-        return _PREFIX.pack(self.message_type, self.reserved, len(self.payload) + LENGTH_BIAS) + self.payload
+        values = {
+            "message_type": self.message_type,
+            "reserved": self.reserved,
+            "message_length": len(self.payload) + LENGTH_BIAS,
+        }
+        return _PREFIX.pack(*(values[name] for name in FRAME_FIELDS)) + self.payload
 
     @property
     def checksum(self) -> int:

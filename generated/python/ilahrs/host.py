@@ -1,5 +1,6 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/host.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
 The host builds commands and the parameter block that must follow them (E5, E13), and keeps track
@@ -24,7 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Final
 
-from .commands import COMMANDS, build_command
+from .commands import COMMAND_SET, COMMANDS, build_command
 from .errors import ErrorKind, IlahrsError
 from .frame import Frame, MessageType
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -40,6 +41,7 @@ from .statemachine import (
     PARAMETER_BLOCK,
     STATES,
     TIMER_FIELDS,
+    TIMER_IS_RATE,
     command_event,
     lookup,
     timer_transition,
@@ -63,20 +65,11 @@ DEFAULT_REPLY_TIMEOUT_S: Final = 1.0
 0.5 s a calibration result may take, E38)."""
 _NS: Final = 1_000_000_000
 _USW_FIELDS: Final = {
-    'full_output': 'usw',
-    'quaternion': 'usw',
-    'orientation_sensors': 'usw',
-    'initial_alignment': 'usw',
-    'bit_result': 'usw',
-    'calibration_run_result': 'usw',
+    name: info.name for name, table in PAYLOADS.items() for info in table.FIELDS if info.encoding == "usw"
 }
 """Payload table -> its USW field."""
-_SENTENCE_USW: Final = 'usw'
-_TIMER_IS_RATE: Final = {
-    'accumulation': False,
-    'alignment': False,
-    'output': True,
-}
+_SENTENCE_USW: Final = next(name for name, kind, *_rest in PahrSentence._SPEC if kind == "hex")
+"""The sentence's USW field."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -209,7 +202,7 @@ class Host:
     def setting(self, timer: str) -> float:
         """What the host knows of a timer's parameter (alignment time, accumulation time in s;
         update rate in Hz): learned from blocks sent and parameter blocks read, else the default."""
-        default = DEFAULT_UPDATE_RATE_HZ if _TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
+        default = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
         return self._settings.get(timer, default)
 
     def resync(self, state: str = INITIAL) -> None:
@@ -355,7 +348,7 @@ class Host:
         if frame is None or frame.message_type != MessageType.DATA:
             return None
         if item == ACK:
-            cls = PAYLOADS['acknowledgement']
+            cls = COMMAND_SET.acknowledgement
             if len(frame.payload) != cls.SIZE:
                 return None
             ack = cls.parse(frame.payload)
@@ -407,7 +400,7 @@ class Host:
             self._timer_deadline = None
             return
         seconds = self.setting(timer)
-        if _TIMER_IS_RATE.get(timer):
+        if TIMER_IS_RATE.get(timer):
             rate = seconds
             if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
                 rate = min(rate, NMEA_MAX_RATE_HZ)

@@ -1,5 +1,6 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/motion.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """A seeded motion profile and the sensors that see it: the synthetic data of the virtual AHRS.
 
 Frames (section 1.1, Fig. 1.2, Table 6.6 note 2). The Earth-level frame is East-North-Up (ENU).

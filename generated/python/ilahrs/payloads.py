@@ -7,25 +7,19 @@ reserved bytes verbatim). Engineering values come from the `*_<unit>` accessors 
 Decoding never range-checks (every byte string of the right size decodes); `build()` and
 `from_raw()` refuse out-of-range values with IlahrsError(OUT_OF_RANGE) naming the field.
 Which table a 50- or 52-byte payload follows depends on context (E7): see the host session.
+The code every class shares is `ilahrs.codec.PayloadBase`; a class holds its table.
 """
 
 from __future__ import annotations
 
-import math
 import struct
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, ClassVar, Final, Protocol, Self
+from typing import ClassVar, Final
 
-from .encodings import (
-    Variant,
-    calibration_accuracy_deg,
-    declination_is_computed,
-    declination_is_valid,
-    decode_date,
-)
-from .errors import ErrorKind, IlahrsError
+from .codec import FLOAT32_MAX, FieldInfo, Payload, PayloadBase
+from .encodings import Variant, calibration_accuracy_deg, declination_is_computed, decode_date
 from .status import UnitStatusWord
 
 __all__ = [
@@ -48,134 +42,36 @@ __all__ = [
     "Quaternion",
 ]
 
-Buffer = bytes | bytearray | memoryview
-FLOAT32_MAX: Final = 3.4028234663852886e38
-
 
 @dataclass(frozen=True, slots=True)
-class FieldInfo:
-    """Where and what a field is: name, ICD spelling, offset, size, wire type, unit and scale."""
-
-    name: str
-    icd_name: str
-    offset: int
-    size: int
-    type: str
-    unit: str | None
-    multiplier: int
-    divisor: int | str
-
-
-class Payload(Protocol):
-    """What every payload class offers."""
-
-    NAME: ClassVar[str]
-    ICD: ClassVar[str]
-    SIZE: ClassVar[int]
-    FIELDS: ClassVar[tuple[FieldInfo, ...]]
-
-    @classmethod
-    def parse(cls, data: Buffer) -> Self: ...
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self: ...
-
-    def build(self) -> bytes: ...
-
-    def check(self) -> None: ...
-
-    def raw(self) -> dict[str, int | float | str | bytes]: ...
-
-    def values(self, variant: Variant | None = None) -> dict[str, float]: ...
-
-
-def _size_error(size: int, expected: int) -> IlahrsError:
-    if size < expected:
-        return IlahrsError(ErrorKind.TRUNCATED, size, None, f"payload of {size} bytes, expected {expected}")
-    return IlahrsError(ErrorKind.TRAILING_DATA, expected, None, f"payload of {size} bytes, expected {expected}")
-
-
-def _text(raw: bytes) -> str:
-    return raw.rstrip(b"\x00").decode("latin-1")
-
-
-def _check_int(value: object, low: int, high: int, name: str, offset: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not an integer")
-    if not low <= value <= high:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value} outside {low}..{high}")
-
-
-def _check_float(value: object, low: float, high: float, name: str, offset: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not a number")
-    if not math.isfinite(value) or not low <= value <= high:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} outside {low!r}..{high!r}")
-
-
-def _check_declination(value: object, name: str, offset: int) -> None:
-    _check_float(value, -FLOAT32_MAX, FLOAT32_MAX, name, offset)
-    assert isinstance(value, (int, float))
-    if not declination_is_valid(value):
-        detail = f"{value!r} is neither a declination nor the compute request"
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, detail)
-
-
-def _check_text(value: object, size: int, name: str, offset: int) -> None:
-    if not isinstance(value, str):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not text")
-    try:
-        encoded = value.encode("latin-1")
-    except UnicodeEncodeError as exc:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, "text must be Latin-1") from exc
-    if len(encoded) > size:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{len(encoded)} bytes do not fit {size}")
-
-
-def _check_bytes(value: object, size: int, name: str, offset: int) -> None:
-    if not isinstance(value, (bytes, bytearray)) or len(value) != size:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"needs exactly {size} bytes")
-
-
-def _from_raw(cls: type[Any], values: Mapping[str, object]) -> Any:
-    known = {f.name for f in cls.FIELDS}
-    for key in values:
-        if key not in known:
-            raise IlahrsError(ErrorKind.MALFORMED, None, key, f"{cls.NAME} has no field {key!r}")
-    result = cls(**values)
-    result.check()
-    return result
-
-
-@dataclass(frozen=True, slots=True)
-class FullOutput:
+class FullOutput(PayloadBase):
     """Full Output Data (Table 6.4), 34 bytes, device to host.
 
     Output block after AHRScont1 / AHRSreq1.
     """
 
-    NAME: ClassVar[str] = 'full_output'
-    ICD: ClassVar[str] = 'Table 6.4'
-    TITLE: ClassVar[str] = 'Full Output Data'
+    NAME: ClassVar[str] = "full_output"
+    ICD: ClassVar[str] = "Table 6.4"
+    TITLE: ClassVar[str] = "Full Output Data"
     SIZE: ClassVar[int] = 34
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('heading', 'Heading', 0, 2, 'u16', 'deg', 1, 100),
-        FieldInfo('pitch', 'Pitch', 2, 2, 's16', 'deg', 1, 100),
-        FieldInfo('roll', 'Roll', 4, 2, 's16', 'deg', 1, 100),
-        FieldInfo('ugyro_x', 'Ugyro', 6, 2, 's16', 'adc', 1, 1),
-        FieldInfo('ugyro_y', 'Ugyro', 8, 2, 's16', 'adc', 1, 1),
-        FieldInfo('ugyro_z', 'Ugyro', 10, 2, 's16', 'adc', 1, 1),
-        FieldInfo('uacc_x', 'Uacc', 12, 2, 's16', 'adc', 1, 1),
-        FieldInfo('uacc_y', 'Uacc', 14, 2, 's16', 'adc', 1, 1),
-        FieldInfo('uacc_z', 'Uacc', 16, 2, 's16', 'adc', 1, 1),
-        FieldInfo('umag_x', 'Umag', 18, 2, 's16', 'adc', 1, 1),
-        FieldInfo('umag_y', 'Umag', 20, 2, 's16', 'adc', 1, 1),
-        FieldInfo('umag_z', 'Umag', 22, 2, 's16', 'adc', 1, 1),
-        FieldInfo('reserved', 'Reserved', 24, 4, 'reserved', None, 1, 1),
-        FieldInfo('usw', 'USW', 28, 2, 'u16', None, 1, 1),
-        FieldInfo('vdd', 'Vdd', 30, 2, 'u16', 'V', 1, 1000),
-        FieldInfo('utermo', 'Utermo', 32, 2, 's16', 'adc', 1, 1),
+        FieldInfo("heading", "Heading", 0, 2, "u16", "deg", 1, 100, 0, 35999),
+        FieldInfo("pitch", "Pitch", 2, 2, "s16", "deg", 1, 100, -9000, 9000),
+        FieldInfo("roll", "Roll", 4, 2, "s16", "deg", 1, 100, -18000, 18000),
+        FieldInfo("ugyro_x", "Ugyro", 6, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("ugyro_y", "Ugyro", 8, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("ugyro_z", "Ugyro", 10, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("uacc_x", "Uacc", 12, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("uacc_y", "Uacc", 14, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("uacc_z", "Uacc", 16, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("umag_x", "Umag", 18, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("umag_y", "Umag", 20, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("umag_z", "Umag", 22, 2, "s16", "adc", 1, 1, -32768, 32767),
+        FieldInfo("reserved", "Reserved", 24, 4, "reserved", None, 1, 1),
+        FieldInfo("usw", "USW", 28, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
+        FieldInfo("vdd", "Vdd", 30, 2, "u16", "V", 1, 1000, 0, 65535, multiplexed=2),
+        FieldInfo("utermo", "Utermo", 32, 2, "s16", "adc", 1, 1, -32768, 32767, multiplexed=7),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<Hhhhhhhhhhhh4sHHh")
 
@@ -216,89 +112,14 @@ class FullOutput:
     does not say which. (s16, at offset 32, unit adc, ICD: Utermo; erratum E19) Multiplexed: 7 quantities
     in successive frames."""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 34 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 34:
-            raise _size_error(len(data), 34)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.heading, 0, 35999, 'heading', 0)
-        _check_int(self.pitch, -9000, 9000, 'pitch', 2)
-        _check_int(self.roll, -18000, 18000, 'roll', 4)
-        _check_int(self.ugyro_x, -32768, 32767, 'ugyro_x', 6)
-        _check_int(self.ugyro_y, -32768, 32767, 'ugyro_y', 8)
-        _check_int(self.ugyro_z, -32768, 32767, 'ugyro_z', 10)
-        _check_int(self.uacc_x, -32768, 32767, 'uacc_x', 12)
-        _check_int(self.uacc_y, -32768, 32767, 'uacc_y', 14)
-        _check_int(self.uacc_z, -32768, 32767, 'uacc_z', 16)
-        _check_int(self.umag_x, -32768, 32767, 'umag_x', 18)
-        _check_int(self.umag_y, -32768, 32767, 'umag_y', 20)
-        _check_int(self.umag_z, -32768, 32767, 'umag_z', 22)
-        _check_bytes(self.reserved, 4, 'reserved', 24)
-        _check_int(self.usw, 0, 65535, 'usw', 28)
-        _check_int(self.vdd, 0, 65535, 'vdd', 30)
-        _check_int(self.utermo, -32768, 32767, 'utermo', 32)
-
-    def build(self) -> bytes:
-        """Encode the 34-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.heading,
-            self.pitch,
-            self.roll,
-            self.ugyro_x,
-            self.ugyro_y,
-            self.ugyro_z,
-            self.uacc_x,
-            self.uacc_y,
-            self.uacc_z,
-            self.umag_x,
-            self.umag_y,
-            self.umag_z,
-            self.reserved,
-            self.usw,
-            self.vdd,
-            self.utermo,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'heading': self.heading,
-            'pitch': self.pitch,
-            'roll': self.roll,
-            'ugyro_x': self.ugyro_x,
-            'ugyro_y': self.ugyro_y,
-            'ugyro_z': self.ugyro_z,
-            'uacc_x': self.uacc_x,
-            'uacc_y': self.uacc_y,
-            'uacc_z': self.uacc_z,
-            'umag_x': self.umag_x,
-            'umag_y': self.umag_y,
-            'umag_z': self.umag_z,
-            'reserved': self.reserved,
-            'usw': self.usw,
-            'vdd': self.vdd,
-            'utermo': self.utermo,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
         result: dict[str, float] = {}
-        result['heading'] = self.heading / 100
-        result['pitch'] = self.pitch / 100
-        result['roll'] = self.roll / 100
-        result['vdd'] = self.vdd / 1000
+        result["heading"] = self.heading / 100
+        result["pitch"] = self.pitch / 100
+        result["roll"] = self.roll / 100
+        result["vdd"] = self.vdd / 1000
         return result
 
     @property
@@ -328,29 +149,29 @@ class FullOutput:
 
 
 @dataclass(frozen=True, slots=True)
-class Quaternion:
+class Quaternion(PayloadBase):
     """Quaternion of Orientation (Table 6.5), 34 bytes, device to host.
 
     Output block after AHRScont2 / AHRSreq2.
     """
 
-    NAME: ClassVar[str] = 'quaternion'
-    ICD: ClassVar[str] = 'Table 6.5'
-    TITLE: ClassVar[str] = 'Quaternion of Orientation'
+    NAME: ClassVar[str] = "quaternion"
+    ICD: ClassVar[str] = "Table 6.5"
+    TITLE: ClassVar[str] = "Quaternion of Orientation"
     SIZE: ClassVar[int] = 34
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('heading', 'Heading', 0, 2, 'u16', 'deg', 1, 100),
-        FieldInfo('pitch', 'Pitch', 2, 2, 's16', 'deg', 1, 100),
-        FieldInfo('roll', 'Roll', 4, 2, 's16', 'deg', 1, 100),
-        FieldInfo('lk0', 'Lk0', 6, 2, 's16', 'one', 1, 10000),
-        FieldInfo('lk1', 'Lk1', 8, 2, 's16', 'one', 1, 10000),
-        FieldInfo('lk2', 'Lk2', 10, 2, 's16', 'one', 1, 10000),
-        FieldInfo('lk3', 'Lk3', 12, 2, 's16', 'one', 1, 10000),
-        FieldInfo('reserved', 'Reserved', 14, 14, 'reserved', None, 1, 1),
-        FieldInfo('usw', 'USW', 28, 2, 'u16', None, 1, 1),
-        FieldInfo('vdd', 'Vdd', 30, 2, 'u16', 'V', 1, 1000),
-        FieldInfo('utermo', 'Utermo', 32, 2, 's16', 'degC', 1, 10),
+        FieldInfo("heading", "Heading", 0, 2, "u16", "deg", 1, 100, 0, 35999),
+        FieldInfo("pitch", "Pitch", 2, 2, "s16", "deg", 1, 100, -9000, 9000),
+        FieldInfo("roll", "Roll", 4, 2, "s16", "deg", 1, 100, -18000, 18000),
+        FieldInfo("lk0", "Lk0", 6, 2, "s16", "one", 1, 10000, -10000, 10000),
+        FieldInfo("lk1", "Lk1", 8, 2, "s16", "one", 1, 10000, -10000, 10000),
+        FieldInfo("lk2", "Lk2", 10, 2, "s16", "one", 1, 10000, -10000, 10000),
+        FieldInfo("lk3", "Lk3", 12, 2, "s16", "one", 1, 10000, -10000, 10000),
+        FieldInfo("reserved", "Reserved", 14, 14, "reserved", None, 1, 1),
+        FieldInfo("usw", "USW", 28, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
+        FieldInfo("vdd", "Vdd", 30, 2, "u16", "V", 1, 1000, 0, 65535),
+        FieldInfo("utermo", "Utermo", 32, 2, "s16", "degC", 1, 10, -32768, 32767),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<Hhhhhhh14sHHh")
 
@@ -381,79 +202,19 @@ class Quaternion:
     utermo: int = 0
     """Average temperature of the 3 accelerometers. (s16, at offset 32, raw = degC x 10, ICD: Utermo)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 34 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 34:
-            raise _size_error(len(data), 34)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.heading, 0, 35999, 'heading', 0)
-        _check_int(self.pitch, -9000, 9000, 'pitch', 2)
-        _check_int(self.roll, -18000, 18000, 'roll', 4)
-        _check_int(self.lk0, -10000, 10000, 'lk0', 6)
-        _check_int(self.lk1, -10000, 10000, 'lk1', 8)
-        _check_int(self.lk2, -10000, 10000, 'lk2', 10)
-        _check_int(self.lk3, -10000, 10000, 'lk3', 12)
-        _check_bytes(self.reserved, 14, 'reserved', 14)
-        _check_int(self.usw, 0, 65535, 'usw', 28)
-        _check_int(self.vdd, 0, 65535, 'vdd', 30)
-        _check_int(self.utermo, -32768, 32767, 'utermo', 32)
-
-    def build(self) -> bytes:
-        """Encode the 34-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.heading,
-            self.pitch,
-            self.roll,
-            self.lk0,
-            self.lk1,
-            self.lk2,
-            self.lk3,
-            self.reserved,
-            self.usw,
-            self.vdd,
-            self.utermo,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'heading': self.heading,
-            'pitch': self.pitch,
-            'roll': self.roll,
-            'lk0': self.lk0,
-            'lk1': self.lk1,
-            'lk2': self.lk2,
-            'lk3': self.lk3,
-            'reserved': self.reserved,
-            'usw': self.usw,
-            'vdd': self.vdd,
-            'utermo': self.utermo,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
         result: dict[str, float] = {}
-        result['heading'] = self.heading / 100
-        result['pitch'] = self.pitch / 100
-        result['roll'] = self.roll / 100
-        result['lk0'] = self.lk0 / 10000
-        result['lk1'] = self.lk1 / 10000
-        result['lk2'] = self.lk2 / 10000
-        result['lk3'] = self.lk3 / 10000
-        result['vdd'] = self.vdd / 1000
-        result['utermo'] = self.utermo / 10
+        result["heading"] = self.heading / 100
+        result["pitch"] = self.pitch / 100
+        result["roll"] = self.roll / 100
+        result["lk0"] = self.lk0 / 10000
+        result["lk1"] = self.lk1 / 10000
+        result["lk2"] = self.lk2 / 10000
+        result["lk3"] = self.lk3 / 10000
+        result["vdd"] = self.vdd / 1000
+        result["utermo"] = self.utermo / 10
         return result
 
     @property
@@ -508,34 +269,34 @@ class Quaternion:
 
 
 @dataclass(frozen=True, slots=True)
-class OrientationSensors:
+class OrientationSensors(PayloadBase):
     """Orientation + Sensor Outputs (Table 6.6), 34 bytes, device to host.
 
     Output block after AHRScont3 / AHRSreq3 (the default format, section 6.2).
     """
 
-    NAME: ClassVar[str] = 'orientation_sensors'
-    ICD: ClassVar[str] = 'Table 6.6'
-    TITLE: ClassVar[str] = 'Orientation + Sensor Outputs'
+    NAME: ClassVar[str] = "orientation_sensors"
+    ICD: ClassVar[str] = "Table 6.6"
+    TITLE: ClassVar[str] = "Orientation + Sensor Outputs"
     SIZE: ClassVar[int] = 34
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('heading', 'Heading', 0, 2, 'u16', 'deg', 1, 100),
-        FieldInfo('pitch', 'Pitch', 2, 2, 's16', 'deg', 1, 100),
-        FieldInfo('roll', 'Roll', 4, 2, 's16', 'deg', 1, 100),
-        FieldInfo('gyro_x', 'GyroX', 6, 2, 's16', 'deg_per_s', 1, 'KG'),
-        FieldInfo('gyro_y', 'GyroY', 8, 2, 's16', 'deg_per_s', 1, 'KG'),
-        FieldInfo('gyro_z', 'GyroZ', 10, 2, 's16', 'deg_per_s', 1, 'KG'),
-        FieldInfo('acc_x', 'AccX', 12, 2, 's16', 'g', 1, 'KA'),
-        FieldInfo('acc_y', 'AccY', 14, 2, 's16', 'g', 1, 'KA'),
-        FieldInfo('acc_z', 'AccZ', 16, 2, 's16', 'g', 1, 'KA'),
-        FieldInfo('mag_x', 'MagX', 18, 2, 's16', 'nT', 10, 1),
-        FieldInfo('mag_y', 'MagY', 20, 2, 's16', 'nT', 10, 1),
-        FieldInfo('mag_z', 'MagZ', 22, 2, 's16', 'nT', 10, 1),
-        FieldInfo('reserved', 'Reserved', 24, 4, 'reserved', None, 1, 1),
-        FieldInfo('usw', 'USW', 28, 2, 'u16', None, 1, 1),
-        FieldInfo('vdd', 'Vdd', 30, 2, 'u16', 'V', 1, 1000),
-        FieldInfo('utermo', 'Utermo', 32, 2, 's16', 'degC', 1, 10),
+        FieldInfo("heading", "Heading", 0, 2, "u16", "deg", 1, 100, 0, 35999),
+        FieldInfo("pitch", "Pitch", 2, 2, "s16", "deg", 1, 100, -9000, 9000),
+        FieldInfo("roll", "Roll", 4, 2, "s16", "deg", 1, 100, -18000, 18000),
+        FieldInfo("gyro_x", "GyroX", 6, 2, "s16", "deg_per_s", 1, "kg", -32768, 32767),
+        FieldInfo("gyro_y", "GyroY", 8, 2, "s16", "deg_per_s", 1, "kg", -32768, 32767),
+        FieldInfo("gyro_z", "GyroZ", 10, 2, "s16", "deg_per_s", 1, "kg", -32768, 32767),
+        FieldInfo("acc_x", "AccX", 12, 2, "s16", "g", 1, "ka", -32768, 32767),
+        FieldInfo("acc_y", "AccY", 14, 2, "s16", "g", 1, "ka", -32768, 32767),
+        FieldInfo("acc_z", "AccZ", 16, 2, "s16", "g", 1, "ka", -32768, 32767),
+        FieldInfo("mag_x", "MagX", 18, 2, "s16", "nT", 10, 1, -32768, 32767),
+        FieldInfo("mag_y", "MagY", 20, 2, "s16", "nT", 10, 1, -32768, 32767),
+        FieldInfo("mag_z", "MagZ", 22, 2, "s16", "nT", 10, 1, -32768, 32767),
+        FieldInfo("reserved", "Reserved", 24, 4, "reserved", None, 1, 1),
+        FieldInfo("usw", "USW", 28, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
+        FieldInfo("vdd", "Vdd", 30, 2, "u16", "V", 1, 1000, 0, 65535),
+        FieldInfo("utermo", "Utermo", 32, 2, "s16", "degC", 1, 10, -32768, 32767),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<Hhhhhhhhhhhh4sHHh")
 
@@ -572,104 +333,29 @@ class OrientationSensors:
     utermo: int = 0
     """Average temperature of the 3 accelerometers. (s16, at offset 32, raw = degC x 10, ICD: Utermo)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 34 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 34:
-            raise _size_error(len(data), 34)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.heading, 0, 35999, 'heading', 0)
-        _check_int(self.pitch, -9000, 9000, 'pitch', 2)
-        _check_int(self.roll, -18000, 18000, 'roll', 4)
-        _check_int(self.gyro_x, -32768, 32767, 'gyro_x', 6)
-        _check_int(self.gyro_y, -32768, 32767, 'gyro_y', 8)
-        _check_int(self.gyro_z, -32768, 32767, 'gyro_z', 10)
-        _check_int(self.acc_x, -32768, 32767, 'acc_x', 12)
-        _check_int(self.acc_y, -32768, 32767, 'acc_y', 14)
-        _check_int(self.acc_z, -32768, 32767, 'acc_z', 16)
-        _check_int(self.mag_x, -32768, 32767, 'mag_x', 18)
-        _check_int(self.mag_y, -32768, 32767, 'mag_y', 20)
-        _check_int(self.mag_z, -32768, 32767, 'mag_z', 22)
-        _check_bytes(self.reserved, 4, 'reserved', 24)
-        _check_int(self.usw, 0, 65535, 'usw', 28)
-        _check_int(self.vdd, 0, 65535, 'vdd', 30)
-        _check_int(self.utermo, -32768, 32767, 'utermo', 32)
-
-    def build(self) -> bytes:
-        """Encode the 34-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.heading,
-            self.pitch,
-            self.roll,
-            self.gyro_x,
-            self.gyro_y,
-            self.gyro_z,
-            self.acc_x,
-            self.acc_y,
-            self.acc_z,
-            self.mag_x,
-            self.mag_y,
-            self.mag_z,
-            self.reserved,
-            self.usw,
-            self.vdd,
-            self.utermo,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'heading': self.heading,
-            'pitch': self.pitch,
-            'roll': self.roll,
-            'gyro_x': self.gyro_x,
-            'gyro_y': self.gyro_y,
-            'gyro_z': self.gyro_z,
-            'acc_x': self.acc_x,
-            'acc_y': self.acc_y,
-            'acc_z': self.acc_z,
-            'mag_x': self.mag_x,
-            'mag_y': self.mag_y,
-            'mag_z': self.mag_z,
-            'reserved': self.reserved,
-            'usw': self.usw,
-            'vdd': self.vdd,
-            'utermo': self.utermo,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields (the variant-dependent ones only with a `variant`)."""
         result: dict[str, float] = {}
-        result['heading'] = self.heading / 100
-        result['pitch'] = self.pitch / 100
-        result['roll'] = self.roll / 100
+        result["heading"] = self.heading / 100
+        result["pitch"] = self.pitch / 100
+        result["roll"] = self.roll / 100
         if variant is not None:
-            result['gyro_x'] = self.gyro_x / variant.kg
+            result["gyro_x"] = self.gyro_x / variant.kg
         if variant is not None:
-            result['gyro_y'] = self.gyro_y / variant.kg
+            result["gyro_y"] = self.gyro_y / variant.kg
         if variant is not None:
-            result['gyro_z'] = self.gyro_z / variant.kg
+            result["gyro_z"] = self.gyro_z / variant.kg
         if variant is not None:
-            result['acc_x'] = self.acc_x / variant.ka
+            result["acc_x"] = self.acc_x / variant.ka
         if variant is not None:
-            result['acc_y'] = self.acc_y / variant.ka
+            result["acc_y"] = self.acc_y / variant.ka
         if variant is not None:
-            result['acc_z'] = self.acc_z / variant.ka
-        result['mag_x'] = float(self.mag_x * 10)
-        result['mag_y'] = float(self.mag_y * 10)
-        result['mag_z'] = float(self.mag_z * 10)
-        result['vdd'] = self.vdd / 1000
-        result['utermo'] = self.utermo / 10
+            result["acc_z"] = self.acc_z / variant.ka
+        result["mag_x"] = float(self.mag_x * 10)
+        result["mag_y"] = float(self.mag_y * 10)
+        result["mag_z"] = float(self.mag_z * 10)
+        result["vdd"] = self.vdd / 1000
+        result["utermo"] = self.utermo / 10
         return result
 
     @property
@@ -743,32 +429,32 @@ class OrientationSensors:
 
 
 @dataclass(frozen=True, slots=True)
-class InitialAlignment:
+class InitialAlignment(PayloadBase):
     """Initial alignment data (Table 6.8), 50 bytes, device to host.
 
     Sent once when initial alignment completes, before continuous / on-request output or a calibration run
     starts (6.3.1 - 6.3.3, 6.4). Note the ICD order: heading, roll, pitch.
     """
 
-    NAME: ClassVar[str] = 'initial_alignment'
-    ICD: ClassVar[str] = 'Table 6.8'
-    TITLE: ClassVar[str] = 'Initial alignment data'
+    NAME: ClassVar[str] = "initial_alignment"
+    ICD: ClassVar[str] = "Table 6.8"
+    TITLE: ClassVar[str] = "Initial alignment data"
     SIZE: ClassVar[int] = 50
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('gyro_bias_x', 'Gyros bias', 0, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('gyro_bias_y', 'Gyros bias', 4, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('gyro_bias_z', 'Gyros bias', 8, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_acc_x', 'Average acceleration', 12, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_acc_y', 'Average acceleration', 16, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_acc_z', 'Average acceleration', 20, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_mag_x', 'Average magn. field', 24, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_mag_y', 'Average magn. field', 28, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('average_mag_z', 'Average magn. field', 32, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('initial_heading', 'Initial Heading', 36, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('initial_roll', 'Initial Roll', 40, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('initial_pitch', 'Initial Pitch', 44, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('usw', 'USW', 48, 2, 'u16', None, 1, 1),
+        FieldInfo("gyro_bias_x", "Gyros bias", 0, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("gyro_bias_y", "Gyros bias", 4, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("gyro_bias_z", "Gyros bias", 8, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_acc_x", "Average acceleration", 12, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_acc_y", "Average acceleration", 16, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_acc_z", "Average acceleration", 20, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_mag_x", "Average magn. field", 24, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_mag_y", "Average magn. field", 28, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("average_mag_z", "Average magn. field", 32, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("initial_heading", "Initial Heading", 36, 4, "f32", "deg", 1, 1, 0.0, 360.0),
+        FieldInfo("initial_roll", "Initial Roll", 40, 4, "f32", "deg", 1, 1, -180.0, 180.0),
+        FieldInfo("initial_pitch", "Initial Pitch", 44, 4, "f32", "deg", 1, 1, -90.0, 90.0),
+        FieldInfo("usw", "USW", 48, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<ffffffffffffH")
 
@@ -800,72 +486,6 @@ class InitialAlignment:
     """Unit Status Word: 0 after a successful alignment, non-zero otherwise. (u16, at offset 48, ICD: USW;
     erratum E27)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 50 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 50:
-            raise _size_error(len(data), 50)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_float(self.gyro_bias_x, -3.4028234663852886e+38, 3.4028234663852886e+38, 'gyro_bias_x', 0)
-        _check_float(self.gyro_bias_y, -3.4028234663852886e+38, 3.4028234663852886e+38, 'gyro_bias_y', 4)
-        _check_float(self.gyro_bias_z, -3.4028234663852886e+38, 3.4028234663852886e+38, 'gyro_bias_z', 8)
-        _check_float(self.average_acc_x, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_acc_x', 12)
-        _check_float(self.average_acc_y, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_acc_y', 16)
-        _check_float(self.average_acc_z, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_acc_z', 20)
-        _check_float(self.average_mag_x, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_mag_x', 24)
-        _check_float(self.average_mag_y, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_mag_y', 28)
-        _check_float(self.average_mag_z, -3.4028234663852886e+38, 3.4028234663852886e+38, 'average_mag_z', 32)
-        _check_float(self.initial_heading, 0.0, 360.0, 'initial_heading', 36)
-        _check_float(self.initial_roll, -180.0, 180.0, 'initial_roll', 40)
-        _check_float(self.initial_pitch, -90.0, 90.0, 'initial_pitch', 44)
-        _check_int(self.usw, 0, 65535, 'usw', 48)
-
-    def build(self) -> bytes:
-        """Encode the 50-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.gyro_bias_x,
-            self.gyro_bias_y,
-            self.gyro_bias_z,
-            self.average_acc_x,
-            self.average_acc_y,
-            self.average_acc_z,
-            self.average_mag_x,
-            self.average_mag_y,
-            self.average_mag_z,
-            self.initial_heading,
-            self.initial_roll,
-            self.initial_pitch,
-            self.usw,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'gyro_bias_x': self.gyro_bias_x,
-            'gyro_bias_y': self.gyro_bias_y,
-            'gyro_bias_z': self.gyro_bias_z,
-            'average_acc_x': self.average_acc_x,
-            'average_acc_y': self.average_acc_y,
-            'average_acc_z': self.average_acc_z,
-            'average_mag_x': self.average_mag_x,
-            'average_mag_y': self.average_mag_y,
-            'average_mag_z': self.average_mag_z,
-            'initial_heading': self.initial_heading,
-            'initial_roll': self.initial_roll,
-            'initial_pitch': self.initial_pitch,
-            'usw': self.usw,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
@@ -879,30 +499,54 @@ class InitialAlignment:
 
 
 @dataclass(frozen=True, slots=True)
-class AhrsParametersLoad:
+class AhrsParametersLoad(PayloadBase):
     """Parameters to load (Table 6.9), 50 bytes, host to device.
 
     The data message the host sends right after LoadAHRSPar (6.3.6). Read the block first (ReadAHRSPar),
     change it, send it back.
     """
 
-    NAME: ClassVar[str] = 'ahrs_parameters_load'
-    ICD: ClassVar[str] = 'Table 6.9'
-    TITLE: ClassVar[str] = 'Parameters to load'
+    NAME: ClassVar[str] = "ahrs_parameters_load"
+    ICD: ClassVar[str] = "Table 6.9"
+    TITLE: ClassVar[str] = "Parameters to load"
     SIZE: ClassVar[int] = 50
-    DIRECTION: ClassVar[str] = 'host_to_device'
+    DIRECTION: ClassVar[str] = "host_to_device"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('update_rate', 'Update rate', 0, 2, 'u16', 'Hz', 1, 1),
-        FieldInfo('alignment_time', 'Initial alignment time', 2, 2, 'u16', 's', 1, 1),
-        FieldInfo('declination', 'Magnetic declination, Mdec', 4, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('latitude', 'Latitude', 8, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('longitude', 'Longitude', 12, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('altitude', 'Altitude', 16, 4, 'f32', 'm', 1, 1),
-        FieldInfo('date', 'Date (Year, Month, Day)', 20, 4, 'f32', 'year', 1, 1),
-        FieldInfo('alignment_angle_a1', 'Alignment angle A1', 24, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('alignment_angle_a2', 'Alignment angle A2', 28, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('alignment_angle_a3', 'Alignment angle A3', 32, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('reserved', 'Reserved', 36, 14, 'reserved', None, 1, 1),
+        FieldInfo("update_rate", "Update rate", 0, 2, "u16", "Hz", 1, 1, 1, 100),
+        FieldInfo("alignment_time", "Initial alignment time", 2, 2, "u16", "s", 1, 1, 1, 65535),
+        FieldInfo(
+            "declination",
+            "Magnetic declination, Mdec",
+            4,
+            4,
+            "f32",
+            "deg",
+            1,
+            1,
+            -FLOAT32_MAX,
+            FLOAT32_MAX,
+            encoding="declination",
+        ),
+        FieldInfo("latitude", "Latitude", 8, 4, "f32", "deg", 1, 1, -90.0, 90.0),
+        FieldInfo("longitude", "Longitude", 12, 4, "f32", "deg", 1, 1, -180.0, 180.0),
+        FieldInfo("altitude", "Altitude", 16, 4, "f32", "m", 1, 1, -20000.0, 100000.0),
+        FieldInfo(
+            "date",
+            "Date (Year, Month, Day)",
+            20,
+            4,
+            "f32",
+            "year",
+            1,
+            1,
+            1900.002685546875,
+            2200.001708984375,
+            encoding="date",
+        ),
+        FieldInfo("alignment_angle_a1", "Alignment angle A1", 24, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("alignment_angle_a2", "Alignment angle A2", 28, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("alignment_angle_a3", "Alignment angle A3", 32, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("reserved", "Reserved", 36, 14, "reserved", None, 1, 1),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<HHffffffff14s")
 
@@ -937,66 +581,6 @@ class AhrsParametersLoad:
     reserved: bytes = b"\x00" * 14
     """Should be all zeros. (reserved[14], at offset 36, ICD: Reserved)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 50 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 50:
-            raise _size_error(len(data), 50)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.update_rate, 1, 100, 'update_rate', 0)
-        _check_int(self.alignment_time, 1, 65535, 'alignment_time', 2)
-        _check_declination(self.declination, 'declination', 4)
-        _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
-        _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
-        _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 20)
-        _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
-        _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
-        _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
-        _check_bytes(self.reserved, 14, 'reserved', 36)
-
-    def build(self) -> bytes:
-        """Encode the 50-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.update_rate,
-            self.alignment_time,
-            self.declination,
-            self.latitude,
-            self.longitude,
-            self.altitude,
-            self.date,
-            self.alignment_angle_a1,
-            self.alignment_angle_a2,
-            self.alignment_angle_a3,
-            self.reserved,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'update_rate': self.update_rate,
-            'alignment_time': self.alignment_time,
-            'declination': self.declination,
-            'latitude': self.latitude,
-            'longitude': self.longitude,
-            'altitude': self.altitude,
-            'date': self.date,
-            'alignment_angle_a1': self.alignment_angle_a1,
-            'alignment_angle_a2': self.alignment_angle_a2,
-            'alignment_angle_a3': self.alignment_angle_a3,
-            'reserved': self.reserved,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
@@ -1004,41 +588,65 @@ class AhrsParametersLoad:
         return result
 
     @property
-    def date_ymd(self) -> tuple[int, int, int]:
-        """date as (year, month, day) (E15)."""
-        return decode_date(self.date)
-
-    @property
     def declination_computed(self) -> bool:
         """True if the AHRS computes the declination itself (value above the threshold)."""
         return declination_is_computed(self.declination)
 
+    @property
+    def date_ymd(self) -> tuple[int, int, int]:
+        """date as (year, month, day) (E15)."""
+        return decode_date(self.date)
+
 
 @dataclass(frozen=True, slots=True)
-class AhrsParametersRead:
+class AhrsParametersRead(PayloadBase):
     """Parameters read (Table 6.10), 50 bytes, device to host.
 
     The AHRS answer to ReadAHRSPar (6.3.7).
     """
 
-    NAME: ClassVar[str] = 'ahrs_parameters_read'
-    ICD: ClassVar[str] = 'Table 6.10'
-    TITLE: ClassVar[str] = 'Parameters read'
+    NAME: ClassVar[str] = "ahrs_parameters_read"
+    ICD: ClassVar[str] = "Table 6.10"
+    TITLE: ClassVar[str] = "Parameters read"
     SIZE: ClassVar[int] = 50
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('update_rate', 'Measurement rate', 0, 2, 'u16', 'Hz', 1, 1),
-        FieldInfo('alignment_time', 'Initial alignment time', 2, 2, 'u16', 's', 1, 1),
-        FieldInfo('declination', 'Magnetic declination', 4, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('latitude', 'Latitude', 8, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('longitude', 'Longitude', 12, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('altitude', 'Altitude', 16, 4, 'f32', 'm', 1, 1),
-        FieldInfo('date', 'Date (Year, Month, Day)', 20, 4, 'f32', 'year', 1, 1),
-        FieldInfo('alignment_angle_a1', 'Alignment angle A1', 24, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('alignment_angle_a2', 'Alignment angle A2', 28, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('alignment_angle_a3', 'Alignment angle A3', 32, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('device_id', 'Device ID', 36, 8, 'char', None, 1, 1),
-        FieldInfo('reserved', 'Reserved', 44, 6, 'reserved', None, 1, 1),
+        FieldInfo("update_rate", "Measurement rate", 0, 2, "u16", "Hz", 1, 1, 1, 100),
+        FieldInfo("alignment_time", "Initial alignment time", 2, 2, "u16", "s", 1, 1, 1, 65535),
+        FieldInfo(
+            "declination",
+            "Magnetic declination",
+            4,
+            4,
+            "f32",
+            "deg",
+            1,
+            1,
+            -FLOAT32_MAX,
+            FLOAT32_MAX,
+            encoding="declination",
+        ),
+        FieldInfo("latitude", "Latitude", 8, 4, "f32", "deg", 1, 1, -90.0, 90.0),
+        FieldInfo("longitude", "Longitude", 12, 4, "f32", "deg", 1, 1, -180.0, 180.0),
+        FieldInfo("altitude", "Altitude", 16, 4, "f32", "m", 1, 1, -20000.0, 100000.0),
+        FieldInfo(
+            "date",
+            "Date (Year, Month, Day)",
+            20,
+            4,
+            "f32",
+            "year",
+            1,
+            1,
+            1900.002685546875,
+            2200.001708984375,
+            encoding="date",
+        ),
+        FieldInfo("alignment_angle_a1", "Alignment angle A1", 24, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("alignment_angle_a2", "Alignment angle A2", 28, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("alignment_angle_a3", "Alignment angle A3", 32, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("device_id", "Device ID", 36, 8, "char", None, 1, 1),
+        FieldInfo("reserved", "Reserved", 44, 6, "reserved", None, 1, 1),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<HHffffffff8s6s")
 
@@ -1068,144 +676,45 @@ class AhrsParametersRead:
     alignment_angle_a3: float = 0.0
     """Mounting angle 3 (Appendix B). (f32, at offset 32, unit deg, range -360..360, ICD: Alignment angle A3;
     erratum E31)"""
-    device_id: str = ''
+    device_id: str = ""
     """Device identifier (read only). (char[8], at offset 36, ICD: Device ID)"""
     reserved: bytes = b"\x00" * 6
     """(reserved[6], at offset 44, ICD: Reserved)"""
-
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 50 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 50:
-            raise _size_error(len(data), 50)
-        values: list[Any] = list(cls._STRUCT.unpack(data))
-        values[10] = _text(values[10])
-        return cls(*values)
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.update_rate, 1, 100, 'update_rate', 0)
-        _check_int(self.alignment_time, 1, 65535, 'alignment_time', 2)
-        _check_declination(self.declination, 'declination', 4)
-        _check_float(self.latitude, -90.0, 90.0, 'latitude', 8)
-        _check_float(self.longitude, -180.0, 180.0, 'longitude', 12)
-        _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 16)
-        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 20)
-        _check_float(self.alignment_angle_a1, -360.0, 360.0, 'alignment_angle_a1', 24)
-        _check_float(self.alignment_angle_a2, -360.0, 360.0, 'alignment_angle_a2', 28)
-        _check_float(self.alignment_angle_a3, -360.0, 360.0, 'alignment_angle_a3', 32)
-        _check_text(self.device_id, 8, 'device_id', 36)
-        _check_bytes(self.reserved, 6, 'reserved', 44)
-
-    def build(self) -> bytes:
-        """Encode the 50-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.update_rate,
-            self.alignment_time,
-            self.declination,
-            self.latitude,
-            self.longitude,
-            self.altitude,
-            self.date,
-            self.alignment_angle_a1,
-            self.alignment_angle_a2,
-            self.alignment_angle_a3,
-            self.device_id.encode("latin-1"),
-            self.reserved,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'update_rate': self.update_rate,
-            'alignment_time': self.alignment_time,
-            'declination': self.declination,
-            'latitude': self.latitude,
-            'longitude': self.longitude,
-            'altitude': self.altitude,
-            'date': self.date,
-            'alignment_angle_a1': self.alignment_angle_a1,
-            'alignment_angle_a2': self.alignment_angle_a2,
-            'alignment_angle_a3': self.alignment_angle_a3,
-            'device_id': self.device_id,
-            'reserved': self.reserved,
-        }
 
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
         result: dict[str, float] = {}
         return result
-
-    @property
-    def date_ymd(self) -> tuple[int, int, int]:
-        """date as (year, month, day) (E15)."""
-        return decode_date(self.date)
 
     @property
     def declination_computed(self) -> bool:
         """True if the AHRS computes the declination itself (value above the threshold)."""
         return declination_is_computed(self.declination)
 
+    @property
+    def date_ymd(self) -> tuple[int, int, int]:
+        """date as (year, month, day) (E15)."""
+        return decode_date(self.date)
+
 
 @dataclass(frozen=True, slots=True)
-class FirmwareVersion:
+class FirmwareVersion(PayloadBase):
     """Firmware version (Table 6.11), 50 bytes, device to host.
 
     The AHRS answer to GetVerFirmware (6.3.10).
     """
 
-    NAME: ClassVar[str] = 'firmware_version'
-    ICD: ClassVar[str] = 'Table 6.11'
-    TITLE: ClassVar[str] = 'Firmware version'
+    NAME: ClassVar[str] = "firmware_version"
+    ICD: ClassVar[str] = "Table 6.11"
+    TITLE: ClassVar[str] = "Firmware version"
     SIZE: ClassVar[int] = 50
-    DIRECTION: ClassVar[str] = 'device_to_host'
-    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('version', 'Firmware version', 0, 50, 'char', None, 1, 1),
-    )
+    DIRECTION: ClassVar[str] = "device_to_host"
+    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (FieldInfo("version", "Firmware version", 0, 50, "char", None, 1, 1),)
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<50s")
 
-    version: str = ''
+    version: str = ""
     """Firmware version text, NUL-padded. (char[50], at offset 0, ICD: Firmware version)"""
-
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 50 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 50:
-            raise _size_error(len(data), 50)
-        values: list[Any] = list(cls._STRUCT.unpack(data))
-        values[0] = _text(values[0])
-        return cls(*values)
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_text(self.version, 50, 'version', 0)
-
-    def build(self) -> bytes:
-        """Encode the 50-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.version.encode("latin-1"),
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'version': self.version,
-        }
 
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
@@ -1215,20 +724,20 @@ class FirmwareVersion:
 
 
 @dataclass(frozen=True, slots=True)
-class BitResult:
+class BitResult(PayloadBase):
     """Built-in test answer (Table 6.12), 4 bytes, device to host.
 
     The AHRS answer to GetBIT (6.3.11).
     """
 
-    NAME: ClassVar[str] = 'bit_result'
-    ICD: ClassVar[str] = 'Table 6.12'
-    TITLE: ClassVar[str] = 'Built-in test answer'
+    NAME: ClassVar[str] = "bit_result"
+    ICD: ClassVar[str] = "Table 6.12"
+    TITLE: ClassVar[str] = "Built-in test answer"
     SIZE: ClassVar[int] = 4
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('utermo100', 'Utermo100', 0, 2, 's16', 'degC', 1, 100),
-        FieldInfo('usw', 'USW', 2, 2, 'u16', None, 1, 1),
+        FieldInfo("utermo100", "Utermo100", 0, 2, "s16", "degC", 1, 100, -32768, 32767),
+        FieldInfo("usw", "USW", 2, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<hH")
 
@@ -1237,44 +746,11 @@ class BitResult:
     usw: int = 0
     """Unit Status Word (section 6.5). (u16, at offset 2, ICD: USW)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 4 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 4:
-            raise _size_error(len(data), 4)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.utermo100, -32768, 32767, 'utermo100', 0)
-        _check_int(self.usw, 0, 65535, 'usw', 2)
-
-    def build(self) -> bytes:
-        """Encode the 4-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.utermo100,
-            self.usw,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'utermo100': self.utermo100,
-            'usw': self.usw,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
         result: dict[str, float] = {}
-        result['utermo100'] = self.utermo100 / 100
+        result["utermo100"] = self.utermo100 / 100
         return result
 
     @property
@@ -1289,25 +765,37 @@ class BitResult:
 
 
 @dataclass(frozen=True, slots=True)
-class CalibrationParameters:
+class CalibrationParameters(PayloadBase):
     """Calibration parameters (Table 6.13), 22 bytes, host to device.
 
     The data message the host sends right after Start3DClb, Start2D2TClb or Start2DClb (6.4.1, 6.4.5,
     6.4.8).
     """
 
-    NAME: ClassVar[str] = 'calibration_parameters'
-    ICD: ClassVar[str] = 'Table 6.13'
-    TITLE: ClassVar[str] = 'Calibration parameters'
+    NAME: ClassVar[str] = "calibration_parameters"
+    ICD: ClassVar[str] = "Table 6.13"
+    TITLE: ClassVar[str] = "Calibration parameters"
     SIZE: ClassVar[int] = 22
-    DIRECTION: ClassVar[str] = 'host_to_device'
+    DIRECTION: ClassVar[str] = "host_to_device"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('reference_azimuth', 'Reserved', 0, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('accumulation_time', 'Time of data accumulation in one run', 4, 2, 'u16', 's', 1, 1),
-        FieldInfo('latitude', 'Latitude', 6, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('longitude', 'Longitude', 10, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('altitude', 'Altitude', 14, 4, 'f32', 'm', 1, 1),
-        FieldInfo('date', 'Date (Year, Month, Day)', 18, 4, 'f32', 'year', 1, 1),
+        FieldInfo("reference_azimuth", "Reserved", 0, 4, "f32", "deg", 1, 1, -360.0, 360.0),
+        FieldInfo("accumulation_time", "Time of data accumulation in one run", 4, 2, "u16", "s", 1, 1, 1, 65535),
+        FieldInfo("latitude", "Latitude", 6, 4, "f32", "deg", 1, 1, -90.0, 90.0),
+        FieldInfo("longitude", "Longitude", 10, 4, "f32", "deg", 1, 1, -180.0, 180.0),
+        FieldInfo("altitude", "Altitude", 14, 4, "f32", "m", 1, 1, -20000.0, 100000.0),
+        FieldInfo(
+            "date",
+            "Date (Year, Month, Day)",
+            18,
+            4,
+            "f32",
+            "year",
+            1,
+            1,
+            1900.002685546875,
+            2200.001708984375,
+            encoding="date",
+        ),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<fHffff")
 
@@ -1327,51 +815,6 @@ class CalibrationParameters:
     """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, range
     1900.002685546875..2200.001708984375, ICD: Date (Year, Month, Day))"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 22 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 22:
-            raise _size_error(len(data), 22)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_float(self.reference_azimuth, -360.0, 360.0, 'reference_azimuth', 0)
-        _check_int(self.accumulation_time, 1, 65535, 'accumulation_time', 4)
-        _check_float(self.latitude, -90.0, 90.0, 'latitude', 6)
-        _check_float(self.longitude, -180.0, 180.0, 'longitude', 10)
-        _check_float(self.altitude, -20000.0, 100000.0, 'altitude', 14)
-        _check_float(self.date, 1900.002685546875, 2200.001708984375, 'date', 18)
-
-    def build(self) -> bytes:
-        """Encode the 22-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.reference_azimuth,
-            self.accumulation_time,
-            self.latitude,
-            self.longitude,
-            self.altitude,
-            self.date,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'reference_azimuth': self.reference_azimuth,
-            'accumulation_time': self.accumulation_time,
-            'latitude': self.latitude,
-            'longitude': self.longitude,
-            'altitude': self.altitude,
-            'date': self.date,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
@@ -1385,34 +828,34 @@ class CalibrationParameters:
 
 
 @dataclass(frozen=True, slots=True)
-class CalibrationResult:
+class CalibrationResult(PayloadBase):
     """Calibration result (Table 6.14), 52 bytes, device to host.
 
     Sent when a calibration completes (after the accumulation time, StopClbRun, or FinishClb).
     """
 
-    NAME: ClassVar[str] = 'calibration_result'
-    ICD: ClassVar[str] = 'Table 6.14'
-    TITLE: ClassVar[str] = 'Calibration result'
+    NAME: ClassVar[str] = "calibration_result"
+    ICD: ClassVar[str] = "Table 6.14"
+    TITLE: ClassVar[str] = "Calibration result"
     SIZE: ClassVar[int] = 52
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('calibration_type', 'Type of calibration', 0, 1, 'u8', None, 1, 1),
-        FieldInfo('runs_used', 'Number of used calibration runs', 1, 1, 'u8', None, 1, 1),
-        FieldInfo('data_used', 'Percent of used data points', 2, 1, 'u8', 'percent', 1, 1),
-        FieldInfo('success', 'Calibration success', 3, 1, 'u8', None, 1, 1),
-        FieldInfo('tm_c_11', 'Matrix for soft iron correction', 4, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_12', 'Matrix for soft iron correction', 8, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_13', 'Matrix for soft iron correction', 12, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_21', 'Matrix for soft iron correction', 16, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_22', 'Matrix for soft iron correction', 20, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_23', 'Matrix for soft iron correction', 24, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_31', 'Matrix for soft iron correction', 28, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_32', 'Matrix for soft iron correction', 32, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_33', 'Matrix for soft iron correction', 36, 4, 'f32', 'one', 1, 1),
-        FieldInfo('hm_0_x', 'Matrix for hard iron correction', 40, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('hm_0_y', 'Matrix for hard iron correction', 44, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('hm_0_z', 'Matrix for hard iron correction', 48, 4, 'f32', 'adc', 1, 1),
+        FieldInfo("calibration_type", "Type of calibration", 0, 1, "u8", None, 1, 1, 1, 3),
+        FieldInfo("runs_used", "Number of used calibration runs", 1, 1, "u8", None, 1, 1, 0, 255),
+        FieldInfo("data_used", "Percent of used data points", 2, 1, "u8", "percent", 1, 1, 0, 100),
+        FieldInfo("success", "Calibration success", 3, 1, "u8", None, 1, 1, 0, 255, encoding="calibration_success"),
+        FieldInfo("tm_c_11", "Matrix for soft iron correction", 4, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_12", "Matrix for soft iron correction", 8, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_13", "Matrix for soft iron correction", 12, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_21", "Matrix for soft iron correction", 16, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_22", "Matrix for soft iron correction", 20, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_23", "Matrix for soft iron correction", 24, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_31", "Matrix for soft iron correction", 28, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_32", "Matrix for soft iron correction", 32, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_33", "Matrix for soft iron correction", 36, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_x", "Matrix for hard iron correction", 40, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_y", "Matrix for hard iron correction", 44, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_z", "Matrix for hard iron correction", 48, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<BBBBffffffffffff")
 
@@ -1463,81 +906,6 @@ class CalibrationResult:
     """Hard-iron vector Hm_0 component 3. (f32, at offset 48, unit adc, ICD: Matrix for hard iron correction;
     erratum E1)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 52 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 52:
-            raise _size_error(len(data), 52)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.calibration_type, 1, 3, 'calibration_type', 0)
-        _check_int(self.runs_used, 0, 255, 'runs_used', 1)
-        _check_int(self.data_used, 0, 100, 'data_used', 2)
-        _check_int(self.success, 0, 255, 'success', 3)
-        _check_float(self.tm_c_11, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_11', 4)
-        _check_float(self.tm_c_12, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_12', 8)
-        _check_float(self.tm_c_13, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_13', 12)
-        _check_float(self.tm_c_21, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_21', 16)
-        _check_float(self.tm_c_22, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_22', 20)
-        _check_float(self.tm_c_23, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_23', 24)
-        _check_float(self.tm_c_31, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_31', 28)
-        _check_float(self.tm_c_32, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_32', 32)
-        _check_float(self.tm_c_33, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_33', 36)
-        _check_float(self.hm_0_x, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_x', 40)
-        _check_float(self.hm_0_y, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_y', 44)
-        _check_float(self.hm_0_z, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_z', 48)
-
-    def build(self) -> bytes:
-        """Encode the 52-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.calibration_type,
-            self.runs_used,
-            self.data_used,
-            self.success,
-            self.tm_c_11,
-            self.tm_c_12,
-            self.tm_c_13,
-            self.tm_c_21,
-            self.tm_c_22,
-            self.tm_c_23,
-            self.tm_c_31,
-            self.tm_c_32,
-            self.tm_c_33,
-            self.hm_0_x,
-            self.hm_0_y,
-            self.hm_0_z,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'calibration_type': self.calibration_type,
-            'runs_used': self.runs_used,
-            'data_used': self.data_used,
-            'success': self.success,
-            'tm_c_11': self.tm_c_11,
-            'tm_c_12': self.tm_c_12,
-            'tm_c_13': self.tm_c_13,
-            'tm_c_21': self.tm_c_21,
-            'tm_c_22': self.tm_c_22,
-            'tm_c_23': self.tm_c_23,
-            'tm_c_31': self.tm_c_31,
-            'tm_c_32': self.tm_c_32,
-            'tm_c_33': self.tm_c_33,
-            'hm_0_x': self.hm_0_x,
-            'hm_0_y': self.hm_0_y,
-            'hm_0_z': self.hm_0_z,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
@@ -1551,27 +919,27 @@ class CalibrationResult:
 
 
 @dataclass(frozen=True, slots=True)
-class CalibrationRunResult:
+class CalibrationRunResult(PayloadBase):
     """2D-2T calibration run result (Table 6.15), 30 bytes, device to host.
 
     Sent after each run of a 2D-2T calibration (6.4.5).
     """
 
-    NAME: ClassVar[str] = 'calibration_run_result'
-    ICD: ClassVar[str] = 'Table 6.15'
-    TITLE: ClassVar[str] = '2D-2T calibration run result'
+    NAME: ClassVar[str] = "calibration_run_result"
+    ICD: ClassVar[str] = "Table 6.15"
+    TITLE: ClassVar[str] = "2D-2T calibration run result"
     SIZE: ClassVar[int] = 30
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('calibration_type', 'Type of calibration', 0, 1, 'u8', None, 1, 1),
-        FieldInfo('run', 'Calibration run', 1, 1, 'u8', None, 1, 1),
-        FieldInfo('data_used', 'Percent of used data points', 2, 1, 'u8', 'percent', 1, 1),
-        FieldInfo('success', 'Calibration success', 3, 1, 'u8', None, 1, 1),
-        FieldInfo('reserved_1', 'Reserved', 4, 4, 'reserved', None, 1, 1),
-        FieldInfo('average_pitch', 'Average pitch, deg', 8, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('average_roll', 'Average roll, deg', 12, 4, 'f32', 'deg', 1, 1),
-        FieldInfo('reserved_2', 'Reserved', 16, 12, 'reserved', None, 1, 1),
-        FieldInfo('usw', 'USW', 28, 2, 'u16', None, 1, 1),
+        FieldInfo("calibration_type", "Type of calibration", 0, 1, "u8", None, 1, 1, 2, 2),
+        FieldInfo("run", "Calibration run", 1, 1, "u8", None, 1, 1, 1, 255),
+        FieldInfo("data_used", "Percent of used data points", 2, 1, "u8", "percent", 1, 1, 0, 100),
+        FieldInfo("success", "Calibration success", 3, 1, "u8", None, 1, 1, 0, 255, encoding="calibration_success"),
+        FieldInfo("reserved_1", "Reserved", 4, 4, "reserved", None, 1, 1),
+        FieldInfo("average_pitch", "Average pitch, deg", 8, 4, "f32", "deg", 1, 1, -90.0, 90.0),
+        FieldInfo("average_roll", "Average roll, deg", 12, 4, "f32", "deg", 1, 1, -180.0, 180.0),
+        FieldInfo("reserved_2", "Reserved", 16, 12, "reserved", None, 1, 1),
+        FieldInfo("usw", "USW", 28, 2, "u16", None, 1, 1, 0, 65535, encoding="usw"),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<BBBB4sff12sH")
 
@@ -1596,127 +964,41 @@ class CalibrationRunResult:
     usw: int = 0
     """Unit Status Word (section 6.5). (u16, at offset 28, ICD: USW)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 30 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 30:
-            raise _size_error(len(data), 30)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.calibration_type, 2, 2, 'calibration_type', 0)
-        _check_int(self.run, 1, 255, 'run', 1)
-        _check_int(self.data_used, 0, 100, 'data_used', 2)
-        _check_int(self.success, 0, 255, 'success', 3)
-        _check_bytes(self.reserved_1, 4, 'reserved_1', 4)
-        _check_float(self.average_pitch, -90.0, 90.0, 'average_pitch', 8)
-        _check_float(self.average_roll, -180.0, 180.0, 'average_roll', 12)
-        _check_bytes(self.reserved_2, 12, 'reserved_2', 16)
-        _check_int(self.usw, 0, 65535, 'usw', 28)
-
-    def build(self) -> bytes:
-        """Encode the 30-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.calibration_type,
-            self.run,
-            self.data_used,
-            self.success,
-            self.reserved_1,
-            self.average_pitch,
-            self.average_roll,
-            self.reserved_2,
-            self.usw,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'calibration_type': self.calibration_type,
-            'run': self.run,
-            'data_used': self.data_used,
-            'success': self.success,
-            'reserved_1': self.reserved_1,
-            'average_pitch': self.average_pitch,
-            'average_roll': self.average_roll,
-            'reserved_2': self.reserved_2,
-            'usw': self.usw,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
         result: dict[str, float] = {}
         return result
-
-    @property
-    def usw_status(self) -> UnitStatusWord:
-        """usw decoded: flags and mode."""
-        return UnitStatusWord(self.usw)
 
     @property
     def success_accuracy_deg(self) -> float | None:
         """Predicted 3-sigma heading error in degrees, or None (failed, or no estimate)."""
         return calibration_accuracy_deg(self.success)
 
+    @property
+    def usw_status(self) -> UnitStatusWord:
+        """usw decoded: flags and mode."""
+        return UnitStatusWord(self.usw)
+
 
 @dataclass(frozen=True, slots=True)
-class CalibrationRunParameters:
+class CalibrationRunParameters(PayloadBase):
     """Calibration run parameters (Table 6.16), 6 bytes, host to device.
 
     The data message the host sends right after StartClbRun (6.4.6); its 6 bytes do not influence 2D-2T
     calibration and may be any, e.g. zeros.
     """
 
-    NAME: ClassVar[str] = 'calibration_run_parameters'
-    ICD: ClassVar[str] = 'Table 6.16'
-    TITLE: ClassVar[str] = 'Calibration run parameters'
+    NAME: ClassVar[str] = "calibration_run_parameters"
+    ICD: ClassVar[str] = "Table 6.16"
+    TITLE: ClassVar[str] = "Calibration run parameters"
     SIZE: ClassVar[int] = 6
-    DIRECTION: ClassVar[str] = 'host_to_device'
-    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('reserved', 'Reserved', 0, 6, 'reserved', None, 1, 1),
-    )
+    DIRECTION: ClassVar[str] = "host_to_device"
+    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (FieldInfo("reserved", "Reserved", 0, 6, "reserved", None, 1, 1),)
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<6s")
 
     reserved: bytes = b"\x00" * 6
     """(reserved[6], at offset 0, ICD: Reserved; erratum E32)"""
-
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 6 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 6:
-            raise _size_error(len(data), 6)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_bytes(self.reserved, 6, 'reserved', 0)
-
-    def build(self) -> bytes:
-        """Encode the 6-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.reserved,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'reserved': self.reserved,
-        }
 
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
@@ -1726,34 +1008,34 @@ class CalibrationRunParameters:
 
 
 @dataclass(frozen=True, slots=True)
-class CalibrationStatus:
+class CalibrationStatus(PayloadBase):
     """Calibration results read back (Table 6.17), 52 bytes, device to host.
 
     The AHRS answer to GetClbRes (6.4.10).
     """
 
-    NAME: ClassVar[str] = 'calibration_status'
-    ICD: ClassVar[str] = 'Table 6.17'
-    TITLE: ClassVar[str] = 'Calibration results read back'
+    NAME: ClassVar[str] = "calibration_status"
+    ICD: ClassVar[str] = "Table 6.17"
+    TITLE: ClassVar[str] = "Calibration results read back"
     SIZE: ClassVar[int] = 52
-    DIRECTION: ClassVar[str] = 'device_to_host'
+    DIRECTION: ClassVar[str] = "device_to_host"
     FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('calibration_type', 'Type of calibration performed', 0, 1, 'u8', None, 1, 1),
-        FieldInfo('runs_used', 'Number of used calibration runs', 1, 1, 'u8', None, 1, 1),
-        FieldInfo('reserved', 'Reserved', 2, 1, 'reserved', None, 1, 1),
-        FieldInfo('success', 'Calibration success', 3, 1, 'u8', None, 1, 1),
-        FieldInfo('tm_c_11', 'Matrix for soft iron correction', 4, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_12', 'Matrix for soft iron correction', 8, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_13', 'Matrix for soft iron correction', 12, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_21', 'Matrix for soft iron correction', 16, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_22', 'Matrix for soft iron correction', 20, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_23', 'Matrix for soft iron correction', 24, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_31', 'Matrix for soft iron correction', 28, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_32', 'Matrix for soft iron correction', 32, 4, 'f32', 'one', 1, 1),
-        FieldInfo('tm_c_33', 'Matrix for soft iron correction', 36, 4, 'f32', 'one', 1, 1),
-        FieldInfo('hm_0_x', 'Matrix for hard iron correction', 40, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('hm_0_y', 'Matrix for hard iron correction', 44, 4, 'f32', 'adc', 1, 1),
-        FieldInfo('hm_0_z', 'Matrix for hard iron correction', 48, 4, 'f32', 'adc', 1, 1),
+        FieldInfo("calibration_type", "Type of calibration performed", 0, 1, "u8", None, 1, 1, 0, 255),
+        FieldInfo("runs_used", "Number of used calibration runs", 1, 1, "u8", None, 1, 1, 0, 255),
+        FieldInfo("reserved", "Reserved", 2, 1, "reserved", None, 1, 1),
+        FieldInfo("success", "Calibration success", 3, 1, "u8", None, 1, 1, 0, 255, encoding="calibration_success"),
+        FieldInfo("tm_c_11", "Matrix for soft iron correction", 4, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_12", "Matrix for soft iron correction", 8, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_13", "Matrix for soft iron correction", 12, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_21", "Matrix for soft iron correction", 16, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_22", "Matrix for soft iron correction", 20, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_23", "Matrix for soft iron correction", 24, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_31", "Matrix for soft iron correction", 28, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_32", "Matrix for soft iron correction", 32, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("tm_c_33", "Matrix for soft iron correction", 36, 4, "f32", "one", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_x", "Matrix for hard iron correction", 40, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_y", "Matrix for hard iron correction", 44, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
+        FieldInfo("hm_0_z", "Matrix for hard iron correction", 48, 4, "f32", "adc", 1, 1, -FLOAT32_MAX, FLOAT32_MAX),
     )
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<BB1sBffffffffffff")
 
@@ -1804,81 +1086,6 @@ class CalibrationStatus:
     """Hard-iron vector Hm_0 component 3. (f32, at offset 48, unit adc, ICD: Matrix for hard iron correction;
     erratum E2)"""
 
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 52 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 52:
-            raise _size_error(len(data), 52)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.calibration_type, 0, 255, 'calibration_type', 0)
-        _check_int(self.runs_used, 0, 255, 'runs_used', 1)
-        _check_bytes(self.reserved, 1, 'reserved', 2)
-        _check_int(self.success, 0, 255, 'success', 3)
-        _check_float(self.tm_c_11, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_11', 4)
-        _check_float(self.tm_c_12, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_12', 8)
-        _check_float(self.tm_c_13, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_13', 12)
-        _check_float(self.tm_c_21, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_21', 16)
-        _check_float(self.tm_c_22, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_22', 20)
-        _check_float(self.tm_c_23, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_23', 24)
-        _check_float(self.tm_c_31, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_31', 28)
-        _check_float(self.tm_c_32, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_32', 32)
-        _check_float(self.tm_c_33, -3.4028234663852886e+38, 3.4028234663852886e+38, 'tm_c_33', 36)
-        _check_float(self.hm_0_x, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_x', 40)
-        _check_float(self.hm_0_y, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_y', 44)
-        _check_float(self.hm_0_z, -3.4028234663852886e+38, 3.4028234663852886e+38, 'hm_0_z', 48)
-
-    def build(self) -> bytes:
-        """Encode the 52-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.calibration_type,
-            self.runs_used,
-            self.reserved,
-            self.success,
-            self.tm_c_11,
-            self.tm_c_12,
-            self.tm_c_13,
-            self.tm_c_21,
-            self.tm_c_22,
-            self.tm_c_23,
-            self.tm_c_31,
-            self.tm_c_32,
-            self.tm_c_33,
-            self.hm_0_x,
-            self.hm_0_y,
-            self.hm_0_z,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'calibration_type': self.calibration_type,
-            'runs_used': self.runs_used,
-            'reserved': self.reserved,
-            'success': self.success,
-            'tm_c_11': self.tm_c_11,
-            'tm_c_12': self.tm_c_12,
-            'tm_c_13': self.tm_c_13,
-            'tm_c_21': self.tm_c_21,
-            'tm_c_22': self.tm_c_22,
-            'tm_c_23': self.tm_c_23,
-            'tm_c_31': self.tm_c_31,
-            'tm_c_32': self.tm_c_32,
-            'tm_c_33': self.tm_c_33,
-            'hm_0_x': self.hm_0_x,
-            'hm_0_y': self.hm_0_y,
-            'hm_0_z': self.hm_0_z,
-        }
-
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
         del variant
@@ -1892,54 +1099,22 @@ class CalibrationStatus:
 
 
 @dataclass(frozen=True, slots=True)
-class Acknowledgement:
+class Acknowledgement(PayloadBase):
     """Acknowledgement (6.3.1 (Table 6.2 with a one-word payload)), 2 bytes, device to host.
 
     The checksum of the message the AHRS received (E12).
     """
 
-    NAME: ClassVar[str] = 'acknowledgement'
-    ICD: ClassVar[str] = '6.3.1 (Table 6.2 with a one-word payload)'
-    TITLE: ClassVar[str] = 'Acknowledgement'
+    NAME: ClassVar[str] = "acknowledgement"
+    ICD: ClassVar[str] = "6.3.1 (Table 6.2 with a one-word payload)"
+    TITLE: ClassVar[str] = "Acknowledgement"
     SIZE: ClassVar[int] = 2
-    DIRECTION: ClassVar[str] = 'device_to_host'
-    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (
-        FieldInfo('checksum', 'Check sum', 0, 2, 'u16', None, 1, 1),
-    )
+    DIRECTION: ClassVar[str] = "device_to_host"
+    FIELDS: ClassVar[tuple[FieldInfo, ...]] = (FieldInfo("checksum", "Check sum", 0, 2, "u16", None, 1, 1, 0, 65535),)
     _STRUCT: ClassVar[struct.Struct] = struct.Struct("<H")
 
     checksum: int = 0
     """Checksum of the acknowledged message, message type through payload. (u16, at offset 0, ICD: Check sum)"""
-
-    @classmethod
-    def parse(cls, data: Buffer) -> Self:
-        """Decode exactly 2 bytes (truncated / trailing_data otherwise)."""
-        if len(data) != 2:
-            raise _size_error(len(data), 2)
-        return cls(*cls._STRUCT.unpack(data))
-
-    @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
-        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
-        result: Self = _from_raw(cls, values)
-        return result
-
-    def check(self) -> None:
-        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
-        _check_int(self.checksum, 0, 65535, 'checksum', 0)
-
-    def build(self) -> bytes:
-        """Encode the 2-byte payload; refuse out-of-range values."""
-        self.check()
-        return self._STRUCT.pack(
-            self.checksum,
-        )
-
-    def raw(self) -> dict[str, int | float | str | bytes]:
-        """Every field's raw value, in table order."""
-        return {
-            'checksum': self.checksum,
-        }
 
     def values(self, variant: Variant | None = None) -> dict[str, float]:
         """Engineering values of the scaled fields."""
@@ -1950,20 +1125,20 @@ class Acknowledgement:
 
 PAYLOADS: Final[Mapping[str, type[Payload]]] = MappingProxyType(
     {
-        'full_output': FullOutput,
-        'quaternion': Quaternion,
-        'orientation_sensors': OrientationSensors,
-        'initial_alignment': InitialAlignment,
-        'ahrs_parameters_load': AhrsParametersLoad,
-        'ahrs_parameters_read': AhrsParametersRead,
-        'firmware_version': FirmwareVersion,
-        'bit_result': BitResult,
-        'calibration_parameters': CalibrationParameters,
-        'calibration_result': CalibrationResult,
-        'calibration_run_result': CalibrationRunResult,
-        'calibration_run_parameters': CalibrationRunParameters,
-        'calibration_status': CalibrationStatus,
-        'acknowledgement': Acknowledgement,
+        "full_output": FullOutput,
+        "quaternion": Quaternion,
+        "orientation_sensors": OrientationSensors,
+        "initial_alignment": InitialAlignment,
+        "ahrs_parameters_load": AhrsParametersLoad,
+        "ahrs_parameters_read": AhrsParametersRead,
+        "firmware_version": FirmwareVersion,
+        "bit_result": BitResult,
+        "calibration_parameters": CalibrationParameters,
+        "calibration_result": CalibrationResult,
+        "calibration_run_result": CalibrationRunResult,
+        "calibration_run_parameters": CalibrationRunParameters,
+        "calibration_status": CalibrationStatus,
+        "acknowledgement": Acknowledgement,
     }
 )
 """Every payload class by spec name."""

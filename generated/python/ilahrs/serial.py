@@ -1,5 +1,6 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/serial.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
 pyserial is the optional dependency (`pip install ilahrs[serial]`) and is imported only when a
@@ -35,11 +36,35 @@ from .errors import ErrorKind, IlahrsError
 from .host import DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import PahrSentence
 from .payloads import PAYLOADS, Payload
-from .statemachine import INITIAL, TIMER_EVENTS, lookup
+from .roles import (
+    ACCEPT,
+    BUILT_IN_TEST,
+    CALIBRATION_RESULTS,
+    CLEAR_CALIBRATION,
+    FINISH,
+    FIRMWARE,
+    GET_DATA,
+    LOAD_PARAMETERS,
+    LOW_POWER_OFF,
+    LOW_POWER_ON,
+    READ_PARAMETERS,
+    START_RUN,
+    START_RUNS,
+    STOP,
+    STOP_RUN,
+)
+from .spec import SERIAL_LINE
+from .statemachine import INITIAL, TIMER_EVENTS, command_event, lookup
 
 __all__ = ["LINE", "AhrsClient", "ClientError"]
 
-LINE: Final[Mapping[str, object]] = {'baudrate': 115200, 'bytesize': 8, 'parity': 'N', 'stopbits': 1}
+_PARITY: Final = {"none": "N", "even": "E", "odd": "O"}
+LINE: Final[Mapping[str, object]] = {
+    "baudrate": SERIAL_LINE["baud_rate"],
+    "bytesize": SERIAL_LINE["data_bits"],
+    "parity": _PARITY[str(SERIAL_LINE["parity"])],
+    "stopbits": SERIAL_LINE["stop_bits"],
+}
 """pyserial settings of the AHRS line (section 6)."""
 _POLL: Final = 0.01
 
@@ -150,7 +175,7 @@ class AhrsClient:
         device to be idle (6.3.5: send Stop before any other command)."""
         self._draining = True
         try:
-            self._write(build_command('Stop'))
+            self._write(build_command(STOP))
             deadline = self._clock() + max(2.0, 4 * self.quiet)
             quiet_since = self._clock()
             while self._clock() < deadline:
@@ -237,26 +262,26 @@ class AhrsClient:
     # --- Flows -------------------------------------------------------------------------------
 
     def read_parameters(self) -> Payload:
-        """ReadAHRSPar: the parameter block (Table 6.10 form)."""
-        return self._block(self.request('ReadAHRSPar'))
+        """READ_PARAMETERS: the parameter block (Table 6.10 form)."""
+        return self._block(self.request(READ_PARAMETERS))
 
     def load_parameters(self, block: Payload | Mapping[str, object]) -> None:
-        """LoadAHRSPar and the block (Table 6.9, a payload object or raw values; values
+        """LOAD_PARAMETERS and the block (Table 6.9, a payload object or raw values; values
         the load table does not have, such as a read block's device id, are left out)."""
         if isinstance(block, Mapping):
-            table = PAYLOADS[COMMANDS['LoadAHRSPar'].parameter_block or ""]
+            table = PAYLOADS[COMMANDS[LOAD_PARAMETERS].parameter_block or ""]
             names = {f.name for f in table.FIELDS if f.type != "reserved"}
             block = table.from_raw({k: v for k, v in block.items() if k in names})
-        self.request('LoadAHRSPar', block)
+        self.request(LOAD_PARAMETERS, block)
 
     def firmware_version(self) -> str:
-        """GetVerFirmware: the firmware version text."""
-        block = self._block(self.request('GetVerFirmware'))
+        """FIRMWARE: the firmware version text."""
+        block = self._block(self.request(FIRMWARE))
         return str(next(iter(block.raw().values())))
 
     def built_in_test(self) -> Payload:
-        """GetBIT: temperature and Unit Status Word."""
-        return self._block(self.request('GetBIT'))
+        """BUILT_IN_TEST: temperature and Unit Status Word."""
+        return self._block(self.request(BUILT_IN_TEST))
 
     def start(self, command: str) -> Payload:
         """Start output (a command that starts continuous or on-request mode): wait for the
@@ -290,28 +315,28 @@ class AhrsClient:
         return blocks
 
     def get_data(self) -> Payload | PahrSentence:
-        """GetDataReq: one output block in on-request mode."""
-        for event in self.request('GetDataReq'):
+        """GET_DATA: one output block in on-request mode."""
+        for event in self.request(GET_DATA):
             if isinstance(event, Output):
                 return event.data
         raise ClientError(ErrorKind.UNEXPECTED_MESSAGE, None, None, "no output block in the answer")
 
     def low_power(self, on: bool) -> Payload | PahrSentence | None:
-        """LowPowerOn or LowPowerOff. Going to sleep from continuous output returns the last
+        """LOW_POWER_ON or LOW_POWER_OFF. Going to sleep from continuous output returns the last
         block, which carries the sleep mode bits (E35)."""
-        command = 'LowPowerOn' if on else 'LowPowerOff'
+        command = LOW_POWER_ON if on else LOW_POWER_OFF
         for event in self.request(command):
             if isinstance(event, Output):
                 return event.data
         return None
 
     def get_calibration_results(self) -> Payload:
-        """GetClbRes: the results of the last calibration (Table 6.17)."""
-        return self._block(self.request('GetClbRes'))
+        """CALIBRATION_RESULTS: the results of the last calibration (Table 6.17)."""
+        return self._block(self.request(CALIBRATION_RESULTS))
 
     def clear_calibration(self) -> None:
-        """ClearClb: clear the hard/soft-iron calibration."""
-        self.request('ClearClb')
+        """CLEAR_CALIBRATION: clear the hard/soft-iron calibration."""
+        self.request(CLEAR_CALIBRATION)
 
     def calibrate_2d2t(
         self,
@@ -321,12 +346,12 @@ class AhrsClient:
         accept: bool = True,
         stop_after: Mapping[int, float] | None = None,
     ) -> tuple[list[Payload], Payload]:
-        """A 2D-2T calibration (6.4.5 - 6.4.7): Start2D2TClb with `parameters` (Table 6.13), `runs`
-        runs (StartClbRun; run number -> seconds of accumulation after which StopClbRun ends it early,
-        in `stop_after`), FinishClb, then AcceptClb (or ExitClb if not `accept`). Returns the
+        """A 2D-2T calibration (6.4.5 - 6.4.7): START_RUNS with `parameters` (Table 6.13), `runs`
+        runs (START_RUN; run number -> seconds of accumulation after which STOP_RUN ends it early,
+        in `stop_after`), FINISH, then ACCEPT (or the STOP code, which leaves calibration, if not `accept`). Returns the
         run results (Table 6.15) and the calibration result (Table 6.14)."""
-        start = 'Start2D2TClb'
-        run_table = PAYLOADS[COMMANDS['StartClbRun'].parameter_block or ""]
+        start = START_RUNS
+        run_table = PAYLOADS[COMMANDS[START_RUN].parameter_block or ""]
         block = _as_block(COMMANDS[start].parameter_block, parameters)
         early = stop_after or {}
 
@@ -334,14 +359,14 @@ class AhrsClient:
             self._request(start, block)
             results: list[Payload] = []
             for run in range(1, runs + 1):
-                self._request('StartClbRun', run_table())
+                self._request(START_RUN, run_table())
                 self.wait_for(
                     lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["alignment"],
                     self.host.setting("alignment") + 2 * self.host.reply_timeout,
                 )
                 if run in early:
                     self.poll(early[run])
-                    results.append(self._block(self._request('StopClbRun', None)))
+                    results.append(self._block(self._request(STOP_RUN, None)))
                 else:
                     event = self.wait_for(
                         lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["accumulation"],
@@ -349,8 +374,9 @@ class AhrsClient:
                     )
                     assert isinstance(event, DataBlock)
                     results.append(event.payload)
-            final = self._block(self._request('FinishClb', None))
-            self._request('AcceptClb' if accept else 'ExitClb', None)
+            final = self._block(self._request(FINISH, None))
+            leave = command_event(COMMANDS[STOP].code, self.host.state) or STOP
+            self._request(ACCEPT if accept else leave, None)
             return results, final
 
         result: tuple[list[Payload], Payload] = self._retry(start, attempt)

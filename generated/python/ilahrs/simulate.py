@@ -1,9 +1,10 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/simulate.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """The virtual AHRS on a serial line: the device model behind a pseudo-terminal or a loopback
 socket, in real time.
 
-`run_pty()` opens a pty whose device end is set to the AHRS line (115200 baud, 8N1, raw), prints
+`run_pty()` opens a pty whose device end is set to the AHRS line (BAUDRATE, 8N1, raw), prints
 its path as the first line of output, and serves the device model there; any serial client
 (pyserial, `screen`) can talk to it. `run_tcp()` serves one client on a loopback address instead
 (never another address) and prints `HOST:PORT` first. Output is paced by the device model's own
@@ -31,12 +32,13 @@ from types import FrameType
 from typing import Final, TextIO
 
 from .device import Device
+from .spec import SERIAL_LINE
 from .stream import StreamDecoder
 
 __all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "run_pty", "run_tcp"]
 
-BAUDRATE: Final = 115200
-"""The AHRS serial line (section 6): 115200 baud, 8 data bits, no parity, 1 stop bit."""
+BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
+"""The baud rate of the AHRS serial line (section 6; 8 data bits, no parity, 1 stop bit: `ilahrs.spec`)."""
 _BUFFER_LIMIT: Final = 65536
 """Bytes the line holds for a reader that does not read; beyond them output is lost, as on a UART."""
 _TICK: Final = 0.02
@@ -192,15 +194,19 @@ def _serve(
 
 
 def _configure_pty(fd: int) -> None:
-    """Raw mode at 115200 baud, 8 data bits, no parity, 1 stop bit, no flow control."""
+    """Raw mode on the AHRS line (SERIAL_LINE: baud rate, data bits, parity, stop bits), no flow control."""
     import termios
     import tty
 
     tty.setraw(fd)
     attrs = termios.tcgetattr(fd)
     attrs[2] &= ~(termios.PARENB | termios.CSTOPB | termios.CSIZE | termios.CRTSCTS)
-    attrs[2] |= termios.CS8 | termios.CLOCAL | termios.CREAD
-    attrs[4] = attrs[5] = termios.B115200
+    attrs[2] |= getattr(termios, f"CS{SERIAL_LINE['data_bits']}") | termios.CLOCAL | termios.CREAD
+    if SERIAL_LINE["parity"] != "none":
+        attrs[2] |= termios.PARENB | (termios.PARODD if SERIAL_LINE["parity"] == "odd" else 0)
+    if SERIAL_LINE["stop_bits"] == 2:
+        attrs[2] |= termios.CSTOPB
+    attrs[4] = attrs[5] = getattr(termios, f"B{BAUDRATE}")
     termios.tcsetattr(fd, termios.TCSANOW, attrs)
 
 

@@ -48,11 +48,11 @@ class UswFlag(IntFlag):
 class UswMode(StrEnum):
     """The mode shown by USW bits 7 and 15 (Table 6.19)."""
 
-    READINESS = 'readiness'
+    READINESS = "readiness"
     """Normal operation."""
-    SLEEP = 'sleep'
+    SLEEP = "sleep"
     """In the last data block the AHRS sends before it goes to Sleep mode."""
-    UNKNOWN = 'unknown'
+    UNKNOWN = "unknown"
     """A combination of mode bits the ICD does not define (E18)."""
 
 

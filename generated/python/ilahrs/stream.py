@@ -1,5 +1,6 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
-# Do not edit: change the spec or the generator and run `make generate`.
+# Copied from generator/targets/python/runtime/stream.py;
+# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
 """A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
 
 At each position a valid frame or a valid sentence is accepted and consumed; otherwise one byte
@@ -28,11 +29,9 @@ from .frame import (
     MessageType,
 )
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
+from .spec import MAX_MESSAGE_SIZE
 
 __all__ = ["MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
-
-MAX_MESSAGE_SIZE: Final = 82
-"""The most bytes the decoder ever holds: the longest frame or sentence."""
 
 _NEED_MORE: Final = -1
 _INVALID: Final = 0

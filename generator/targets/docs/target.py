@@ -7,6 +7,7 @@ from typing import Any
 
 from generator.model import Field, Spec, StateMachine, Transition
 from generator.render import Output
+from generator.targets.python.runtime import diagram
 
 # Files in generated/docs/ that are rendered from generated files by make (mk/docs.mk), not by
 # templates: the drift check leaves them to `make check-docs`.
@@ -55,23 +56,13 @@ def send_text(t: Transition) -> str:
 
 def edges(sm: StateMachine) -> list[dict[str, Any]]:
     """The diagram's arrows: one per (from, to, firmware condition), labelled with one line per
-    answer listing the events that give it. Wildcard rows read `any other command`."""
-    grouped: dict[tuple[str, str, str | None], dict[tuple[str, ...], list[str]]] = {}
-    for t in sm.transitions:
-        lines = grouped.setdefault((t.state, t.to, t.firmware_before), {})
-        events = lines.setdefault(t.send, [])
-        name = "any other command" if t.wildcard else t.event
-        if name not in events:
-            events.append(name)
-    result = []
-    for (state, to, firmware), lines in grouped.items():
-        label = "\\n".join(
-            ", ".join(events) + (" / " + ", ".join(send) if send else "") for send, events in lines.items()
-        )
-        if firmware:
-            label += f"\\n(firmware < {firmware})"
-        result.append({"from": state, "to": to, "label": label, "legacy": firmware is not None})
-    return result
+    answer listing the events that give it (the folding of `ilahrs diagram`, shared with the Python
+    runtime). Wildcard rows read `any other command`."""
+    rows = [(t.state, t.event, t.to, t.send, t.wildcard, t.firmware_before) for t in sm.transitions]
+    return [
+        {"from": e.state, "to": e.to, "label": e.label("\\n"), "legacy": e.firmware is not None}
+        for e in diagram.fold(rows)
+    ]
 
 
 FILTERS: dict[str, Callable[..., Any]] = {

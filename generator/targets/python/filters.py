@@ -6,7 +6,7 @@ from collections.abc import Callable
 from typing import Any
 
 from generator import naming
-from generator.model import Field, Payload, StatusWord
+from generator.model import FLOAT32_MAX, Field, Payload, StatusWord
 
 _STRUCT_CODES = {"u8": "B", "s8": "b", "u16": "H", "s16": "h", "u32": "I", "s32": "i", "f32": "f"}
 
@@ -114,6 +114,37 @@ def field_doc(field: Field) -> str:
     return text
 
 
+def _bound(value: float, is_float: bool) -> str:
+    if is_float and abs(value) == FLOAT32_MAX:
+        return "-FLOAT32_MAX" if value < 0 else "FLOAT32_MAX"
+    return py_number(value, is_float)
+
+
+def field_info(field: Field) -> str:
+    """A field's row of its class's FIELDS table: `FieldInfo("heading", "Heading", 0, 2, ...)`."""
+    scale = field.scale
+    divisor: int | str = 1
+    if scale is not None:
+        divisor = scale.divisor_parameter.lower() if scale.divisor_parameter else (scale.divisor or 1)
+    args = [
+        repr(field.name),
+        repr(field.icd_name),
+        str(field.offset),
+        str(field.size),
+        repr(field.type.name),
+        repr(field.unit.key if field.unit is not None else None),
+        str(scale.multiplier if scale is not None else 1),
+        repr(divisor),
+    ]
+    if field.bounds is not None:
+        args += [_bound(field.bounds[0], field.is_float), _bound(field.bounds[1], field.is_float)]
+    if field.encoding is not None:
+        args.append(f"encoding={field.encoding!r}")
+    if field.multiplexed_count:
+        args.append(f"multiplexed={field.multiplexed_count}")
+    return f"FieldInfo({', '.join(args)})"
+
+
 def class_name(payload: Payload) -> str:
     return naming.pascal(payload.name)
 
@@ -136,6 +167,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "class_name": class_name,
     "field_doc": field_doc,
     "literal": literal,
+    "field_info": field_info,
 }
 
 
@@ -168,3 +200,22 @@ def all_sorted(names: list[str]) -> list[str]:
 
 
 FILTERS["all_sorted"] = all_sorted
+
+
+# The property a field of each value encoding gets: (name suffix, type, doc, function of its raw value).
+ENCODING_PROPERTIES = {
+    "usw": ("status", "UnitStatusWord", "FIELD decoded: flags and mode.", "UnitStatusWord"),
+    "date": ("ymd", "tuple[int, int, int]", "FIELD as (year, month, day) (E15).", "decode_date"),
+    "declination": (
+        "computed",
+        "bool",
+        "True if the AHRS computes the declination itself (value above the threshold).",
+        "declination_is_computed",
+    ),
+    "calibration_success": (
+        "accuracy_deg",
+        "float | None",
+        "Predicted 3-sigma heading error in degrees, or None (failed, or no estimate).",
+        "calibration_accuracy_deg",
+    ),
+}

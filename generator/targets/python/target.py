@@ -1,34 +1,82 @@
-"""The Python target: the `ilahrs` package in generated/python/."""
+"""The Python target: the `ilahrs` package in generated/python/.
+
+Templates write what the spec decides (the tables, the payload and sentence classes, the enums and
+constants); the modules of runtime/ are the code that reads them, copied as they are. Everything
+is formatted by `ruff format`, with the package's settings given on the command line.
+"""
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from generator.formatting import run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
 
-from .behaviour import FILTERS as BEHAVIOUR_FILTERS
-from .behaviour import GLOBALS
+from .filters import ENCODING_PROPERTIES
 from .filters import FILTERS as CODEC_FILTERS
+from .roles import roles
+from .tables import FILTERS as TABLE_FILTERS
+from .tables import GLOBALS as TABLE_GLOBALS
 
-__all__ = ["FILTERS", "GLOBALS", "outputs"]
+__all__ = ["FILTERS", "GLOBALS", "format", "outputs"]
 
-FILTERS = {**CODEC_FILTERS, **BEHAVIOUR_FILTERS}
+FILTERS = {**CODEC_FILTERS, **TABLE_FILTERS}
+GLOBALS = {**TABLE_GLOBALS, "roles": roles, "encoding_properties": ENCODING_PROPERTIES}
 
-MODULES = ("errors", "frame", "encodings", "status", "payloads", "commands", "nmea", "stream")
-# The protocol's behaviour: the state-machine table, the device model and the host session (sans-I/O),
-# then the edge: the virtual device on a pty or loopback socket, the serial client, the command line.
-BEHAVIOUR_MODULES = ("statemachine", "motion", "device", "host", "simulate", "serial", "__main__")
+PACKAGE = "python/ilahrs"
+# Generated modules: the spec's facts, from the bottom of the import graph up.
+TABLES = ("spec", "encodings", "status", "payloads", "commands", "nmea")
+# Runtime modules: the codec (errors, frame, value encodings, payloads, sentences, commands) and the
+# stream decoder.
+CODEC = ("errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream")
+# The protocol's behaviour: the state-machine table and the roles of the commands (generated), the
+# device model and the host session (sans-I/O), then the edge: the virtual device on a pty or loopback
+# socket, the serial client, the command line.
+BEHAVIOUR_TABLES = ("statemachine", "roles")
+BEHAVIOUR = ("diagram", "machine", "synthetic", "motion", "device", "host", "simulate", "serial", "__main__")
+# What a spec must have for the package to be generated.
+REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibration_success", "ack_payload")
+
+LINE_LENGTH = 120
+"""The package's line length (the repository's ruff setting)."""
 
 
 def outputs(spec: Spec) -> list[Output | Runtime]:
-    base = "python/ilahrs"
-    files: list[Output | Runtime] = [Output(f"{base}/{name}.py", f"{name}.py.j2") for name in MODULES]
+    missing = [name for name in REQUIRED if getattr(spec, name) is None]
+    if missing:
+        raise ValueError(f"the Python target needs the spec's {', '.join(missing)}")
+    files: list[Output | Runtime] = [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in TABLES]
+    files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CODEC]
     if spec.state_machine is not None:
-        files += [Output(f"{base}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_MODULES]
+        files += [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_TABLES]
+        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in BEHAVIOUR]
     files += [
-        Output(f"{base}/__init__.py", "__init__.py.j2"),
-        Output(f"{base}/py.typed", "py.typed.j2"),
-        Runtime(f"{base}/pcapng.py", "pcapng.py"),
+        Output(f"{PACKAGE}/__init__.py", "__init__.py.j2"),
+        Output(f"{PACKAGE}/py.typed", "py.typed.j2"),
+        Runtime(f"{PACKAGE}/pcapng.py", "pcapng.py"),
         Output("python/pyproject.toml", "pyproject.toml.j2"),
         Output("python/README.md", "README.md.j2"),
     ]
     return files
+
+
+def _fit_notice(text: str) -> str:
+    """Break a copied file's notice line (render.runtime_notice) at its semicolon, to fit the line length."""
+    first, newline, rest = text.partition("\n")
+    if first.startswith("# Copied from ") and len(first) > LINE_LENGTH and "; " in first:
+        head, _, tail = first.partition("; ")
+        first = f"{head};\n# {tail}"
+    return first + newline + rest
+
+
+def format(files: dict[str, str]) -> dict[str, str]:
+    """Format the package's Python files and the Python examples of its README with the pinned ruff,
+    with settings that do not depend on the machine."""
+    files = {path: _fit_notice(text) if path.endswith(".py") else text for path, text in files.items()}
+
+    def command(paths: list[Path]) -> list[str]:
+        settings = ["--isolated", "--no-cache", f"--line-length={LINE_LENGTH}", "--target-version=py311"]
+        return [tool("ruff"), "format", *settings, *map(str, paths)]
+
+    return run_formatter(files, (".py", ".md"), command)

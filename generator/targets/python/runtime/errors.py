@@ -1,20 +1,10 @@
-{% include "_header.j2" %}
-"""Errors: one list of kinds for every ilahrs binding (spec `errors`)."""
+"""Errors: one list of kinds for every ilahrs binding (the spec's `errors`, in `ilahrs.spec`)."""
 
 from __future__ import annotations
 
-from enum import StrEnum
+from .spec import ErrorKind
 
 __all__ = ["ErrorKind", "IlahrsError"]
-
-
-class ErrorKind(StrEnum):
-    """What went wrong. The values are the spec's names, shared by every binding."""
-
-{% for e in spec.errors %}
-    {{ e.name | upper }} = {{ e.name | literal }}
-    """{{ e.doc | docstring }}"""
-{% endfor %}
 
 
 class IlahrsError(ValueError):

@@ -1,9 +1,7 @@
-{% include "_header.j2" %}
-{% set b = behaviour(spec) %}
 """The virtual AHRS on a serial line: the device model behind a pseudo-terminal or a loopback
 socket, in real time.
 
-`run_pty()` opens a pty whose device end is set to the AHRS line ({{ b.serial_line.baudrate }} baud, 8N1, raw), prints
+`run_pty()` opens a pty whose device end is set to the AHRS line (BAUDRATE, 8N1, raw), prints
 its path as the first line of output, and serves the device model there; any serial client
 (pyserial, `screen`) can talk to it. `run_tcp()` serves one client on a loopback address instead
 (never another address) and prints `HOST:PORT` first. Output is paced by the device model's own
@@ -31,12 +29,13 @@ from types import FrameType
 from typing import Final, TextIO
 
 from .device import Device
+from .spec import SERIAL_LINE
 from .stream import StreamDecoder
 
 __all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "run_pty", "run_tcp"]
 
-BAUDRATE: Final = {{ b.serial_line.baudrate }}
-"""The AHRS serial line (section 6): {{ b.serial_line.baudrate }} baud, 8 data bits, no parity, 1 stop bit."""
+BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
+"""The baud rate of the AHRS serial line (section 6; 8 data bits, no parity, 1 stop bit: `ilahrs.spec`)."""
 _BUFFER_LIMIT: Final = 65536
 """Bytes the line holds for a reader that does not read; beyond them output is lost, as on a UART."""
 _TICK: Final = 0.02
@@ -192,15 +191,19 @@ def _serve(
 
 
 def _configure_pty(fd: int) -> None:
-    """Raw mode at {{ b.serial_line.baudrate }} baud, 8 data bits, no parity, 1 stop bit, no flow control."""
+    """Raw mode on the AHRS line (SERIAL_LINE: baud rate, data bits, parity, stop bits), no flow control."""
     import termios
     import tty
 
     tty.setraw(fd)
     attrs = termios.tcgetattr(fd)
     attrs[2] &= ~(termios.PARENB | termios.CSTOPB | termios.CSIZE | termios.CRTSCTS)
-    attrs[2] |= termios.CS8 | termios.CLOCAL | termios.CREAD
-    attrs[4] = attrs[5] = termios.B{{ b.serial_line.baudrate }}
+    attrs[2] |= getattr(termios, f"CS{SERIAL_LINE['data_bits']}") | termios.CLOCAL | termios.CREAD
+    if SERIAL_LINE["parity"] != "none":
+        attrs[2] |= termios.PARENB | (termios.PARODD if SERIAL_LINE["parity"] == "odd" else 0)
+    if SERIAL_LINE["stop_bits"] == 2:
+        attrs[2] |= termios.CSTOPB
+    attrs[4] = attrs[5] = getattr(termios, f"B{BAUDRATE}")
     termios.tcsetattr(fd, termios.TCSANOW, attrs)
 
 

@@ -1,5 +1,3 @@
-{% include "_header.j2" %}
-{% set b = behaviour(spec) %}
 """Command line: `ilahrs simulate` (a virtual AHRS on a pty or loopback socket) and `ilahrs
 diagram` (the state machine as a Mermaid diagram). Run `ilahrs simulate --help` for the options."""
 
@@ -10,12 +8,12 @@ import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
 
-from . import SPEC_VERSION
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
 from .encodings import VARIANTS
 from .errors import IlahrsError
-from .payloads import {{ spec.payload(b.read_block) | class_name }}
-from .simulate import Faults, Line, run_pty, run_tcp
+from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
+from .simulate import BAUDRATE, Faults, Line, run_pty, run_tcp
+from .spec import SPEC_VERSION
 from .statemachine import DEFAULT_FIRMWARE, TIMER_FIELDS, mermaid
 
 __all__ = ["main"]
@@ -35,14 +33,14 @@ def _parser() -> argparse.ArgumentParser:
         "simulate",
         help="run a virtual AHRS on a pseudo-terminal (default) or a loopback TCP port",
         description="Run a virtual AHRS. The first line of output is the device path (or HOST:PORT with --tcp); "
-        "connect at {{ b.serial_line.baudrate }} baud 8N1. Stop with Ctrl-C or SIGTERM.",
+        f"connect at {BAUDRATE} baud 8N1. Stop with Ctrl-C or SIGTERM.",
     )
     sim.add_argument("--tcp", metavar="HOST:PORT", help="serve one client on a loopback address (port 0: any port)")
     sim.add_argument("--seed", type=int, default=0, help="seed of the motion, noise, calibration and faults")
     sim.add_argument("--variant", choices=sorted(VARIANTS), default=DEFAULT_VARIANT, help="device variant (KG, KA)")
     sim.add_argument("--firmware", default=DEFAULT_FIRMWARE, help=f"firmware version (default {DEFAULT_FIRMWARE})")
-    sim.add_argument("--firmware-text", help="the GetVerFirmware answer")
-    sim.add_argument("--device-id", default=DEFAULT_DEVICE_ID, help="the device id of ReadAHRSPar")
+    sim.add_argument("--firmware-text", help=f"the {FIRMWARE} answer")
+    sim.add_argument("--device-id", default=DEFAULT_DEVICE_ID, help=f"the device id of {READ_PARAMETERS}")
     sim.add_argument("--alignment-time", type=int, metavar="S", help="initial alignment time in seconds")
     sim.add_argument("--update-rate", type=int, metavar="HZ", help="output rate in Hz")
     sim.add_argument("--corrupt-rate", type=_rate, default=0.0, metavar="P", help="probability of corrupting a byte")
@@ -61,7 +59,7 @@ def _device(args: argparse.Namespace) -> Device:
     for timer, value in settings.items():
         if value is not None:
             raw[TIMER_FIELDS[timer][1]] = value
-    parameters = {{ spec.payload(b.read_block) | class_name }}.from_raw(raw)
+    parameters = ParameterBlock.from_raw(raw)
     return Device(
         seed=args.seed,
         variant=args.variant,

@@ -1,4 +1,3 @@
-{% include "_header.j2" %}
 """A seeded motion profile and the sensors that see it: the synthetic data of the virtual AHRS.
 
 Frames (section 1.1, Fig. 1.2, Table 6.6 note 2). The Earth-level frame is East-North-Up (ENU).

@@ -1,6 +1,3 @@
-{% include "_header.j2" %}
-{% set b = behaviour(spec) %}
-{% set sm = spec.state_machine %}
 """The reference model of the AHRS: what the device does with every message, as time passes.
 
 Sans-I/O (h11 style): `Device.receive(data)` takes the bytes the host sends and returns the bytes
@@ -15,8 +12,9 @@ message; a timer), looks the transition up, sends what it lists and enters the n
 
 The data are synthetic but physically consistent (`ilahrs.motion`): angles, quaternion, gyros,
 accelerometers and magnetometers describe one seeded motion, scaled per device variant (KG, KA of
-Table 6.6). Parameter blocks are read with the payload classes and kept, so ReadAHRSPar shows what
-LoadAHRSPar wrote and the alignment time, update rate and accumulation time take effect.
+Table 6.6). Parameter blocks are read with the payload classes and kept, so the read command shows
+what the load command wrote (READ_PARAMETERS and LOAD_PARAMETERS of `ilahrs.roles`) and the
+alignment time, update rate and accumulation time take effect.
 
 >>> from ilahrs import build_command
 >>> device = Device(seed=1)
@@ -35,13 +33,16 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Final
 
+from .codec import FieldInfo, Payload, field_kind
 from .commands import COMMANDS, ack_for
 from .encodings import CALIBRATION_FAILED, CALIBRATION_NO_ESTIMATE, VARIANTS, Variant, encode_date
 from .errors import ErrorKind, IlahrsError
 from .frame import Frame, MessageType
 from .motion import Motion, Sensors
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
-from .payloads import PAYLOADS, {{ spec.payload(b.read_block) | class_name }}, Payload
+from .payloads import PAYLOADS
+from .roles import CALIBRATION_RESULTS, FINISH, FIRMWARE, LOAD_PARAMETERS, STOP_RUN, ParameterBlock
+from .spec import ICD_DATE
 from .statemachine import (
     ACK,
     BLOCK_TIMEOUT,
@@ -61,6 +62,7 @@ from .statemachine import (
     STATES,
     TIMER_EVENTS,
     TIMER_FIELDS,
+    TIMER_IS_RATE,
     UNKNOWN,
     Transition,
     command_event,
@@ -68,76 +70,78 @@ from .statemachine import (
     lookup,
     timer_transition,
 )
+from .status import _MODES
 from .stream import StreamDecoder
+from .synthetic import quantity as synthetic_quantity
 
 __all__ = ["DEFAULT_DEVICE_ID", "DEFAULT_VARIANT", "Device", "default_parameters"]
 
-DEFAULT_VARIANT: Final = {{ spec.variants[0].name | literal }}
+DEFAULT_VARIANT: Final = next(iter(VARIANTS))
+"""The first variant the spec lists."""
 DEFAULT_DEVICE_ID: Final = "VIRT0001"
 _NS: Final = 1_000_000_000
-_READ_BLOCK: Final = {{ b.read_block | literal }}
-_LOAD_BLOCK: Final = {{ b.load_block | literal }}
-_FINAL_RESULT: Final = {{ b.final_result | literal }}
-_RUN_RESULT: Final = {{ b.run_result | literal }}
-_STATUS_BLOCK: Final = {{ b.status_block | literal }}
-_FIRMWARE_BLOCK: Final = {{ b.firmware_block | literal }}
-_FIRMWARE_FIELD: Final = {{ b.firmware_field | literal }}
-_DEVICE_ID_FIELD: Final = {{ b.device_id_field | literal }}
-_DECLINATION_FIELD: Final = {{ b.declination_field | literal }}
-_LATITUDE_FIELD: Final = {{ b.physics_fields.latitude | literal }}
-_CAL_TYPE: Final = {{ b.calibration_fields.type | literal }}
-_CAL_RUN: Final = {{ b.calibration_fields.run | literal }}
-_CAL_RUNS_USED: Final = {{ b.calibration_fields.runs_used | literal }}
-_CAL_DATA_USED: Final = {{ b.calibration_fields.data_used | literal }}
-_CAL_SUCCESS: Final = {{ b.calibration_fields.success | literal }}
-{% set read = spec.payload(b.read_block) %}
-_DATE_FIELDS: Final = {{ read.fields | selectattr("encoding", "equalto", "date") | map(attribute="name") | list | tuple_literal }}
-_DEFAULT_DATE: Final = ({{ spec.icd_date.split("-") | map("int") | join(", ") }})
-"""The date a new device holds: the ICD's ({{ spec.icd_date }})."""
-_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({{ b.usw_modes | literal }})
+
+
+def _text_field(table: type[Payload]) -> str:
+    return next(f.name for f in table.FIELDS if field_kind(f) == "char")
+
+
+# The tables the device treats specially, by the part their command plays (`ilahrs.roles`).
+_LOAD_BLOCK: Final = COMMANDS[LOAD_PARAMETERS].parameter_block or ""
+_FINAL_RESULT: Final = COMMANDS[FINISH].response_payloads[0]
+_RUN_RESULT: Final = next(p for p in COMMANDS[STOP_RUN].response_payloads if p != _FINAL_RESULT)
+_STATUS_BLOCK: Final = COMMANDS[CALIBRATION_RESULTS].response_payloads[0]
+_FIRMWARE_BLOCK: Final = COMMANDS[FIRMWARE].response_payloads[0]
+_FIRMWARE_FIELD: Final = _text_field(PAYLOADS[_FIRMWARE_BLOCK])
+_DEVICE_ID_FIELD: Final = _text_field(ParameterBlock)
+_DECLINATION_FIELD: Final = next(f.name for f in ParameterBlock.FIELDS if f.encoding == "declination")
+_DATE_FIELDS: Final = tuple(f.name for f in ParameterBlock.FIELDS if f.encoding == "date")
+
+# The values the device model fills fields with from its own context, by field name.
+_LATITUDE_FIELD: Final = "latitude"
+"""The parameter the sensor model reads (the Earth field depends on it)."""
+_CAL_TYPE: Final = "calibration_type"
+_CAL_RUN: Final = "run"
+_CAL_RUNS_USED: Final = "runs_used"
+_CAL_DATA_USED: Final = "data_used"
+_CAL_SUCCESS: Final = "success"
+_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({mode.value: bits for bits, mode in _MODES.items()})
 """USW mode name -> its bits (Table 6.19)."""
-_TIMER_IS_RATE: Final[Mapping[str, bool]] = MappingProxyType(
-    {
-{% for timer, (payload, name) in b.timer_fields.items() %}
-        {{ timer | literal }}: {{ (spec.payload(payload).field(name).unit.key == "Hz") | literal }},
-{% endfor %}
-    }
-)
-"""Whether a timer's field is a rate (Hz) rather than a duration (s)."""
 
 _FillRow = tuple[str, tuple[str, ...], int, int | str, float | None, float | None, str]
+
+
+def _fill_row(info: FieldInfo) -> _FillRow:
+    """(field, synthetic quantities, multiplier, divisor, low, high, kind): a multiplexed field
+    lists its quantities in turn (Table 6.4 notes 2 and 3)."""
+    quantities = synthetic_quantity(info.name, info.unit, info.type, info.encoding, info.multiplexed)
+    return (info.name, quantities, info.multiplier, info.divisor, info.low, info.high, field_kind(info))
+
+
 _FILL: Final[Mapping[str, tuple[_FillRow, ...]]] = MappingProxyType(
     {
-{% for p in spec.payloads if p.direction == "device_to_host" %}
-        {{ p.name | literal }}: (
-{% for row in p | fill_rows %}
-            {{ row | py_row(12) }},
-{% endfor %}
-        ),
-{% endfor %}
+        name: tuple(_fill_row(info) for info in table.FIELDS)
+        for name, table in PAYLOADS.items()
+        if table.DIRECTION == "device_to_host"
     }
 )
-"""Per device-to-host table: (field, synthetic quantities, multiplier, divisor, low, high, kind);
-a multiplexed field lists its quantities in turn (Table 6.4 notes 2 and 3)."""
-{% if spec.nmea %}
-_NMEA_FILL: Final[tuple[tuple[str, str, int, int, int], ...]] = (
-{% for f in spec.nmea.fields %}
-    ({{ f.name | literal }}, {{ f.name | nmea_quantity(f.unit) | literal }}, {{ f.divisor }}, {{ f.min }}, {{ f.max }}),
-{% endfor %}
+"""Per device-to-host table: how the device fills each field."""
+_NMEA_FILL: Final = tuple(
+    (name, synthetic_quantity(name, unit, "", None, 0)[0], 10**decimals, low, high)
+    for name, _kind, _width, decimals, low, high, unit in PahrSentence._SPEC
 )
 """Per $PAHR field: (field, synthetic quantity, 10**decimals, low, high)."""
-{% endif %}
 
 
-def default_parameters(device_id: str = DEFAULT_DEVICE_ID) -> {{ spec.payload(b.read_block) | class_name }}:
+def default_parameters(device_id: str = DEFAULT_DEVICE_ID) -> ParameterBlock:
     """The parameter block (Table 6.10 form) of a new device: the defaults of Table 6.9 and the given id."""
     load = PAYLOADS[_LOAD_BLOCK]()
-    fields = {f.name for f in {{ spec.payload(b.read_block) | class_name }}.FIELDS if f.type != "reserved"}
+    fields = {f.name for f in ParameterBlock.FIELDS if f.type != "reserved"}
     values: dict[str, object] = {k: v for k, v in load.raw().items() if k in fields}
     for name in _DATE_FIELDS:
-        values[name] = encode_date(*_DEFAULT_DATE)
+        values[name] = encode_date(*ICD_DATE)
     values[_DEVICE_ID_FIELD] = device_id
-    return {{ spec.payload(b.read_block) | class_name }}.from_raw(values)
+    return ParameterBlock.from_raw(values)
 
 
 def _round(value: float) -> int:
@@ -172,16 +176,16 @@ class _Calibration:
     last: dict[str, object] | None = None
     """The evaluation of the accumulation that ended last."""
     result: dict[str, object] | None = None
-    """The result sent last (Table 6.14 form), which AcceptClb saves."""
+    """The result sent last (Table 6.14 form), which ACCEPT saves."""
 
 
 class Device:
     """The AHRS as the ICD describes it (sections 6.1, 6.3, 6.4), driven by bytes and a clock.
 
     Options: `seed` (motion, noise and calibration outcomes), `variant` (a name of
-    ilahrs.VARIANTS or a Variant: KG, KA), `firmware` (version; before {{ b.default_firmware }} the legacy rows of
+    ilahrs.VARIANTS or a Variant: KG, KA), `firmware` (version; before DEFAULT_FIRMWARE the legacy rows of
     the table apply, e.g. 0x20 between 2D-2T runs finishes the calibration), `firmware_text`
-    (the GetVerFirmware answer), `parameters` (the initial parameter block, Table 6.10 form) and
+    (the FIRMWARE answer), `parameters` (the initial parameter block, Table 6.10 form) and
     `device_id` (overrides the id in `parameters`).
     """
 
@@ -192,7 +196,7 @@ class Device:
         variant: str | Variant = DEFAULT_VARIANT,
         firmware: str = DEFAULT_FIRMWARE,
         firmware_text: str | None = None,
-        parameters: {{ spec.payload(b.read_block) | class_name }} | None = None,
+        parameters: ParameterBlock | None = None,
         device_id: str | None = None,
     ) -> None:
         self.variant = VARIANTS[variant] if isinstance(variant, str) else variant
@@ -203,9 +207,9 @@ class Device:
         self._memory: dict[str, object] = {k: v for k, v in params.raw().items() if not isinstance(v, bytes)}
         if device_id is not None:
             self._memory[_DEVICE_ID_FIELD] = device_id
-        {{ spec.payload(b.read_block) | class_name }}.from_raw(self._memory).check()
+        ParameterBlock.from_raw(self._memory).check()
         self._calibration_memory: dict[str, object] = {}
-        """The calibration saved by AcceptClb (what GetClbRes reads, Table 6.17)."""
+        """The calibration saved by ACCEPT (what CALIBRATION_RESULTS reads, Table 6.17)."""
         self._received: dict[str, Payload] = {}
         """The last parameter block accepted, per table."""
         self._rng = random.Random(seed ^ 0xCA1)
@@ -252,9 +256,9 @@ class Device:
         return self._decoder.discarded
 
     @property
-    def parameters(self) -> {{ spec.payload(b.read_block) | class_name }}:
-        """The parameter block as ReadAHRSPar returns it."""
-        return {{ spec.payload(b.read_block) | class_name }}.from_raw(self._memory)
+    def parameters(self) -> ParameterBlock:
+        """The parameter block as READ_PARAMETERS returns it."""
+        return ParameterBlock.from_raw(self._memory)
 
     @property
     def next_event_in(self) -> float | None:
@@ -358,13 +362,13 @@ class Device:
         elif name in self._memory:
             value = self._memory[name]
         else:
-            value = DEFAULT_UPDATE_RATE_HZ if _TIMER_IS_RATE[timer] else DEFAULT_ALIGNMENT_TIME_S
+            value = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE[timer] else DEFAULT_ALIGNMENT_TIME_S
         assert isinstance(value, (int, float))
         return float(value)
 
     def _duration(self, timer: str) -> float:
         value = self._setting(timer)
-        if not _TIMER_IS_RATE[timer]:
+        if not TIMER_IS_RATE[timer]:
             return value
         if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
             value = min(value, NMEA_MAX_RATE_HZ)  # E22
@@ -380,7 +384,7 @@ class Device:
             return
         self._received[cls.NAME] = block
         if cls.NAME == _LOAD_BLOCK:
-            read = {f.name: f for f in {{ spec.payload(b.read_block) | class_name }}.FIELDS}
+            read = {f.name: f for f in ParameterBlock.FIELDS}
             for f in cls.FIELDS:
                 same = read.get(f.name)
                 if same is not None and same.type == f.type and same.size == f.size and f.type != "reserved":
@@ -452,16 +456,12 @@ class Device:
         if fmt is not None:
             payload = self._build(fmt, values, self._outputs_sent - 1)
             return Frame(MessageType.DATA, payload).build()
-{% if spec.nmea %}
         sentence: dict[str, int] = {}
         for name, quantity, divisor, low, high in _NMEA_FILL:
             value = values.get(quantity, 0)
             assert isinstance(value, (int, float))
             sentence[name] = max(low, min(high, _round(value * divisor)))
         return PahrSentence(**sentence).build().encode("ascii")
-{% else %}
-        return b""
-{% endif %}
 
     # --- Calibration (6.4) ----------------------------------------------------------------------
 
@@ -544,4 +544,3 @@ class Device:
             for j in range(3):
                 result[f"soft_iron_{i + 1}{j + 1}"] = (2.0 if i == j else 0.0) - soft[i][j] + self._rng.gauss(0, 0.002)
         return result
-

@@ -1,5 +1,3 @@
-{% include "_header.j2" %}
-{% set sm = spec.state_machine %}
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
 The host builds commands and the parameter block that must follow them (E5, E13), and keeps track
@@ -24,7 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Final
 
-from .commands import COMMANDS, build_command
+from .commands import COMMAND_SET, COMMANDS, build_command
 from .errors import ErrorKind, IlahrsError
 from .frame import Frame, MessageType
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -40,6 +38,7 @@ from .statemachine import (
     PARAMETER_BLOCK,
     STATES,
     TIMER_FIELDS,
+    TIMER_IS_RATE,
     command_event,
     lookup,
     timer_transition,
@@ -63,21 +62,11 @@ DEFAULT_REPLY_TIMEOUT_S: Final = 1.0
 0.5 s a calibration result may take, E38)."""
 _NS: Final = 1_000_000_000
 _USW_FIELDS: Final = {
-{% for p in spec.payloads %}
-{% for f in p.fields if f.encoding == "usw" %}
-    {{ p.name | literal }}: {{ f.name | literal }},
-{% endfor %}
-{% endfor %}
+    name: info.name for name, table in PAYLOADS.items() for info in table.FIELDS if info.encoding == "usw"
 }
 """Payload table -> its USW field."""
-{% if spec.nmea %}
-_SENTENCE_USW: Final = {{ (spec.nmea.fields | selectattr("format", "equalto", "hex") | first).name | literal }}
-{% endif %}
-_TIMER_IS_RATE: Final = {
-{% for timer, (payload, name) in behaviour(spec).timer_fields.items() %}
-    {{ timer | literal }}: {{ (spec.payload(payload).field(name).unit.key == "Hz") | literal }},
-{% endfor %}
-}
+_SENTENCE_USW: Final = next(name for name, kind, *_rest in PahrSentence._SPEC if kind == "hex")
+"""The sentence's USW field."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -210,7 +199,7 @@ class Host:
     def setting(self, timer: str) -> float:
         """What the host knows of a timer's parameter (alignment time, accumulation time in s;
         update rate in Hz): learned from blocks sent and parameter blocks read, else the default."""
-        default = DEFAULT_UPDATE_RATE_HZ if _TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
+        default = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
         return self._settings.get(timer, default)
 
     def resync(self, state: str = INITIAL) -> None:
@@ -356,7 +345,7 @@ class Host:
         if frame is None or frame.message_type != MessageType.DATA:
             return None
         if item == ACK:
-            cls = PAYLOADS[{{ spec.ack_payload | literal }}]
+            cls = COMMAND_SET.acknowledgement
             if len(frame.payload) != cls.SIZE:
                 return None
             ack = cls.parse(frame.payload)
@@ -408,7 +397,7 @@ class Host:
             self._timer_deadline = None
             return
         seconds = self.setting(timer)
-        if _TIMER_IS_RATE.get(timer):
+        if TIMER_IS_RATE.get(timer):
             rate = seconds
             if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
                 rate = min(rate, NMEA_MAX_RATE_HZ)

@@ -1,4 +1,3 @@
-{% include "_header.j2" %}
 """A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
 
 At each position a valid frame or a valid sentence is accepted and consumed; otherwise one byte
@@ -27,11 +26,9 @@ from .frame import (
     MessageType,
 )
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
+from .spec import MAX_MESSAGE_SIZE
 
 __all__ = ["MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
-
-MAX_MESSAGE_SIZE: Final = {{ spec.max_message_size }}
-"""The most bytes the decoder ever holds: the longest frame or sentence."""
 
 _NEED_MORE: Final = -1
 _INVALID: Final = 0

@@ -1,24 +1,38 @@
-{% include "_header.j2" %}
-{% set fr = spec.frame %}
-{% set mt = fr.field("message_type") %}
-{% set rs = fr.field("reserved") %}
-{% set ml = fr.field("message_length") %}
-"""The binary frame ({{ fr.icd }}) and its checksum.
+"""The binary frame and its checksum.
 
-A frame is the header {{ fr.header | map("hex_byte") | join(" ") }}, then message type, reserved byte and message
-length, then the payload, then the checksum. The message length counts every byte after the
-header; the checksum is the sum, modulo 2**16, of the bytes from the message type through the
-payload. Every multi-byte value is little-endian.
+A frame is the header (HEADER), then the fields FRAME_FIELDS (message type, reserved byte and
+message length), then the payload, then the checksum. The message length counts every byte after
+the header; the checksum is the sum, modulo 2**16, of the bytes from the message type through the
+payload. Every multi-byte value is little-endian. The layout is the spec's (`ilahrs.spec`).
 """
 
 from __future__ import annotations
 
 import struct
 from dataclasses import dataclass
-from enum import IntEnum
 from typing import Final
 
 from .errors import ErrorKind, IlahrsError
+from .spec import (
+    CHECKSUM_SIZE,
+    FRAME_FIELDS,
+    FRAME_FORMAT,
+    FRAME_OVERHEAD,
+    HEADER,
+    HEADER_SIZE,
+    LENGTH_BIAS,
+    MAX_FRAME_SIZE,
+    MAX_MESSAGE_LENGTH,
+    MAX_PAYLOAD_SIZE,
+    MESSAGE_LENGTH_OFFSET,
+    MESSAGE_TYPE_OFFSET,
+    MIN_FRAME_SIZE,
+    MIN_MESSAGE_LENGTH,
+    MIN_PAYLOAD_SIZE,
+    PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    MessageType,
+)
 
 __all__ = [
     "CHECKSUM_SIZE",
@@ -41,41 +55,9 @@ __all__ = [
     "checksum",
 ]
 
-HEADER: Final = bytes(({{ fr.header | map("hex_byte") | join(", ") }},))
-"""The two bytes every frame starts with."""
-HEADER_SIZE: Final = {{ fr.header_size }}
-MESSAGE_TYPE_OFFSET: Final = {{ mt.offset }}
-RESERVED_OFFSET: Final = {{ rs.offset }}
-MESSAGE_LENGTH_OFFSET: Final = {{ ml.offset }}
-PAYLOAD_OFFSET: Final = {{ fr.payload_offset }}
-CHECKSUM_SIZE: Final = {{ fr.checksum.size }}
-FRAME_OVERHEAD: Final = {{ fr.overhead }}
-"""Bytes in a frame besides the payload."""
-LENGTH_BIAS: Final = {{ fr.length_bias }}
-"""message_length = payload size + LENGTH_BIAS."""
-MIN_MESSAGE_LENGTH: Final = {{ fr.min_length }}
-"""Smallest message length a decoder accepts (E17)."""
-MAX_MESSAGE_LENGTH: Final = {{ fr.max_length }}
-"""Largest message length a decoder accepts (E17)."""
-MIN_PAYLOAD_SIZE: Final = {{ fr.min_payload }}
-MAX_PAYLOAD_SIZE: Final = {{ fr.max_payload }}
-MIN_FRAME_SIZE: Final = {{ fr.min_frame_size }}
-MAX_FRAME_SIZE: Final = {{ fr.max_frame_size }}
-
 _LENGTH: Final = struct.Struct("<H")
-_PREFIX: Final = struct.Struct("{{ fr.fields | struct_format }}")
-"""The fields between header and payload: {{ fr.fields | map(attribute="name") | join(", ") }}."""
-
-
-class MessageType(IntEnum):
-    """The message type byte ({{ fr.icd }})."""
-
-{% for t in fr.message_types %}
-    {{ t.name | upper }} = {{ t.value }}
-    """{{ t.doc | docstring }}"""
-{% endfor %}
-
-
+_PREFIX: Final = struct.Struct(FRAME_FORMAT)
+"""The fields between header and payload, in FRAME_FIELDS order."""
 _MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 
 
@@ -150,8 +132,12 @@ class Frame:
 
     def _body(self) -> bytes:
         """The checksummed bytes: the fields between header and payload, then the payload."""
-{% set exprs = {"message_type": "self.message_type", "reserved": "self.reserved", "message_length": "len(self.payload) + LENGTH_BIAS"} %}
-        return _PREFIX.pack({% for f in fr.fields %}{{ exprs[f.name] }}{{ ", " if not loop.last }}{% endfor %}) + self.payload
+        values = {
+            "message_type": self.message_type,
+            "reserved": self.reserved,
+            "message_length": len(self.payload) + LENGTH_BIAS,
+        }
+        return _PREFIX.pack(*(values[name] for name in FRAME_FIELDS)) + self.payload
 
     @property
     def checksum(self) -> int:

@@ -1,0 +1,202 @@
+"""What every payload class is made of: its field table (FieldInfo), the Payload protocol, and the
+code that decodes, checks and encodes a payload by walking the table (PayloadBase).
+
+A payload class (`ilahrs.payloads`) declares NAME, SIZE, FIELDS and the `struct` layout of its
+fields, and its fields as dataclass fields in wire order; everything else is here.
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Self
+
+from .encodings import Variant, declination_is_valid
+from .errors import ErrorKind, IlahrsError
+from .valuecodec import FLOAT32_MAX
+
+__all__ = ["FLOAT32_MAX", "Buffer", "FieldInfo", "Payload", "PayloadBase", "field_kind"]
+
+Buffer = bytes | bytearray | memoryview
+
+
+@dataclass(frozen=True, slots=True)
+class FieldInfo:
+    """Where and what a field is: name, ICD spelling, offset, size, wire type, unit and scale;
+    `low`..`high`, the raw values a builder accepts (None for text and reserved bytes); the value
+    `encoding` it follows (usw, date, declination, calibration_success), if any; and how many
+    quantities it carries in turn in successive frames (`multiplexed`, 0 for one)."""
+
+    name: str
+    icd_name: str
+    offset: int
+    size: int
+    type: str
+    unit: str | None
+    multiplier: int
+    divisor: int | str
+    low: float | None = None
+    high: float | None = None
+    encoding: str | None = None
+    multiplexed: int = 0
+
+
+def field_kind(info: FieldInfo) -> str:
+    """What a field's wire type holds: "integer", "float", "char" (text) or "reserved" (bytes)."""
+    if info.type in ("char", "reserved"):
+        return info.type
+    return "float" if info.type == "f32" else "integer"
+
+
+class Payload(Protocol):
+    """What every payload class offers."""
+
+    NAME: ClassVar[str]
+    ICD: ClassVar[str]
+    TITLE: ClassVar[str]
+    SIZE: ClassVar[int]
+    DIRECTION: ClassVar[str]
+    """host_to_device or device_to_host."""
+    FIELDS: ClassVar[tuple[FieldInfo, ...]]
+
+    @classmethod
+    def parse(cls, data: Buffer) -> Self: ...
+
+    @classmethod
+    def from_raw(cls, values: Mapping[str, object]) -> Self: ...
+
+    def build(self) -> bytes: ...
+
+    def check(self) -> None: ...
+
+    def raw(self) -> dict[str, int | float | str | bytes]: ...
+
+    def values(self, variant: Variant | None = None) -> dict[str, float]: ...
+
+
+def _size_error(size: int, expected: int) -> IlahrsError:
+    if size < expected:
+        return IlahrsError(ErrorKind.TRUNCATED, size, None, f"payload of {size} bytes, expected {expected}")
+    return IlahrsError(ErrorKind.TRAILING_DATA, expected, None, f"payload of {size} bytes, expected {expected}")
+
+
+def _text(raw: bytes) -> str:
+    return raw.rstrip(b"\x00").decode("latin-1")
+
+
+def _check_int(value: object, low: int, high: int, name: str, offset: int) -> None:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not an integer")
+    if not low <= value <= high:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value} outside {low}..{high}")
+
+
+def _check_float(value: object, low: float, high: float, name: str, offset: int) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not a number")
+    if not math.isfinite(value) or not low <= value <= high:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} outside {low!r}..{high!r}")
+
+
+def _check_declination(value: object, name: str, offset: int) -> None:
+    _check_float(value, -FLOAT32_MAX, FLOAT32_MAX, name, offset)
+    assert isinstance(value, (int, float))
+    if not declination_is_valid(value):
+        detail = f"{value!r} is neither a declination nor the compute request"
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, detail)
+
+
+def _check_text(value: object, size: int, name: str, offset: int) -> None:
+    if not isinstance(value, str):
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not text")
+    try:
+        encoded = value.encode("latin-1")
+    except UnicodeEncodeError as exc:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, "text must be Latin-1") from exc
+    if len(encoded) > size:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{len(encoded)} bytes do not fit {size}")
+
+
+def _check_bytes(value: object, size: int, name: str, offset: int) -> None:
+    if not isinstance(value, (bytes, bytearray)) or len(value) != size:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"needs exactly {size} bytes")
+
+
+def _check_field(info: FieldInfo, value: object) -> None:
+    """Raise IlahrsError(OUT_OF_RANGE) if a builder must refuse `value` for the field."""
+    kind = field_kind(info)
+    if info.encoding == "declination":
+        _check_declination(value, info.name, info.offset)
+    elif kind in ("char", "reserved"):
+        check = _check_text if kind == "char" else _check_bytes
+        check(value, info.size, info.name, info.offset)
+    else:
+        assert info.low is not None and info.high is not None
+        if kind == "float":
+            _check_float(value, info.low, info.high, info.name, info.offset)
+        else:
+            _check_int(value, int(info.low), int(info.high), info.name, info.offset)
+
+
+class PayloadBase:
+    """The code of every payload class: exact-inverse `parse` and `build`, `from_raw`, `check`
+    and `raw`, all read from the class's FIELDS and _STRUCT."""
+
+    __slots__ = ()
+
+    NAME: ClassVar[str]
+    SIZE: ClassVar[int]
+    FIELDS: ClassVar[tuple[FieldInfo, ...]]
+    _STRUCT: ClassVar[struct.Struct]
+    _TEXT: ClassVar[tuple[int, ...]] = ()
+    """The indices of the text fields: bytes on the wire, str in the class."""
+
+    if TYPE_CHECKING:
+
+        def __init__(self, *values: Any, **named: Any) -> None: ...
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._TEXT = tuple(index for index, info in enumerate(cls.FIELDS) if info.type == "char")
+
+    @classmethod
+    def parse(cls, data: Buffer) -> Self:
+        """Decode exactly SIZE bytes (truncated / trailing_data otherwise)."""
+        if len(data) != cls.SIZE:
+            raise _size_error(len(data), cls.SIZE)
+        if not cls._TEXT:
+            return cls(*cls._STRUCT.unpack(data))
+        values: list[Any] = list(cls._STRUCT.unpack(data))
+        for index in cls._TEXT:
+            values[index] = _text(values[index])
+        return cls(*values)
+
+    @classmethod
+    def from_raw(cls, values: Mapping[str, object]) -> Self:
+        """Build from raw field values (missing fields take their defaults); checked like `build()`."""
+        known = {info.name for info in cls.FIELDS}
+        for key in values:
+            if key not in known:
+                raise IlahrsError(ErrorKind.MALFORMED, None, key, f"{cls.NAME} has no field {key!r}")
+        result = cls(**values)
+        result.check()
+        return result
+
+    def check(self) -> None:
+        """Raise IlahrsError(OUT_OF_RANGE) for the first field a builder must refuse."""
+        for info in self.FIELDS:
+            _check_field(info, getattr(self, info.name))
+
+    def build(self) -> bytes:
+        """Encode the SIZE-byte payload; refuse out-of-range values."""
+        self.check()
+        values = [getattr(self, info.name) for info in self.FIELDS]
+        for index in self._TEXT:
+            values[index] = values[index].encode("latin-1")
+        return self._STRUCT.pack(*values)
+
+    def raw(self) -> dict[str, int | float | str | bytes]:
+        """Every field's raw value, in table order."""
+        return {info.name: getattr(self, info.name) for info in self.FIELDS}
