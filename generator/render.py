@@ -106,7 +106,8 @@ def runtime_text(target: str, source: str) -> str:
 def runtime_notice(spec: Spec, target: str, source: str) -> list[str]:
     """The notice lines of a copied runtime file."""
     return [
-        f"Copied from generator/targets/{target}/runtime/{source}; spec {spec.file}, hash {spec.sha256}.",
+        f"Copied from generator/targets/{target}/runtime/{source} for {spec.file},",
+        f"spec hash {spec.sha256}.",
         "Do not edit: change the runtime source and run `make generate`.",
     ]
 

@@ -86,7 +86,7 @@ def payload_values(payload: ilahrs.Payload, variant: ilahrs.Variant) -> dict[str
 def sentence_values(sentence: ilahrs.PahrSentence) -> dict[str, Value]:
     engineering = sentence.values()
     out: dict[str, Value] = {}
-    for name, kind, _width, _decimals, _low, _high in sentence._SPEC:
+    for name, kind, *_rest in sentence._SPEC:
         value = getattr(sentence, name)
         if kind == "hex":
             out[f"{SENTENCE}.{name}"] = Value("int", value)

@@ -1,7 +1,6 @@
-# Copied from generator/targets/python/runtime/pcapng.py;
-# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Copied from generator/targets/python/runtime/pcapng.py for spec/ilahrs.yaml,
+# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 # Do not edit: change the runtime source and run `make generate`.
-# ruff: noqa: E501, RUF100 -- the notice line render.py puts in front of the copy is over 120 characters
 """A capture file of a serial line: pcapng with one Enhanced Packet Block per chunk read or written.
 
 The format (IETF draft-ietf-opsawg-pcapng) is small: a Section Header Block, one Interface

@@ -1,5 +1,5 @@
-# Copied from generator/targets/python/runtime/stream.py;
-# spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Copied from generator/targets/python/runtime/stream.py for spec/ilahrs.yaml,
+# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 # Do not edit: change the runtime source and run `make generate`.
 """A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
 

@@ -61,19 +61,9 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     return files
 
 
-def _fit_notice(text: str) -> str:
-    """Break a copied file's notice line (render.runtime_notice) at its semicolon, to fit the line length."""
-    first, newline, rest = text.partition("\n")
-    if first.startswith("# Copied from ") and len(first) > LINE_LENGTH and "; " in first:
-        head, _, tail = first.partition("; ")
-        first = f"{head};\n# {tail}"
-    return first + newline + rest
-
-
 def format(files: dict[str, str]) -> dict[str, str]:
     """Format the package's Python files and the Python examples of its README with the pinned ruff,
     with settings that do not depend on the machine."""
-    files = {path: _fit_notice(text) if path.endswith(".py") else text for path, text in files.items()}
 
     def command(paths: list[Path]) -> list[str]:
         settings = ["--isolated", "--no-cache", f"--line-length={LINE_LENGTH}", "--target-version=py311"]

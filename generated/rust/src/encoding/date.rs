@@ -1,4 +1,5 @@
-// Copied from generator/targets/rust/runtime/crate/encoding/date.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Copied from generator/targets/rust/runtime/crate/encoding/date.rs for spec/ilahrs.yaml,
+// spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 // Do not edit: change the runtime source and run `make generate`.
 //! Calendar dates as the ICD sends them: one float of fractional years.
 

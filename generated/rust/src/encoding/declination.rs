@@ -1,4 +1,5 @@
-// Copied from generator/targets/rust/runtime/crate/encoding/declination.rs; spec spec/ilahrs.yaml, hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Copied from generator/targets/rust/runtime/crate/encoding/declination.rs for spec/ilahrs.yaml,
+// spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
 // Do not edit: change the runtime source and run `make generate`.
 //! The magnetic declination field: degrees, or a value above a threshold that asks the AHRS to
 //! compute the declination itself.

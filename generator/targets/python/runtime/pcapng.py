@@ -1,4 +1,3 @@
-# ruff: noqa: E501, RUF100 -- the notice line render.py puts in front of the copy is over 120 characters
 """A capture file of a serial line: pcapng with one Enhanced Packet Block per chunk read or written.
 
 The format (IETF draft-ietf-opsawg-pcapng) is small: a Section Header Block, one Interface
