@@ -13,6 +13,7 @@ from .validate_fields import check_field
 
 # The frame fields the bindings rely on, by name and type.
 REQUIRED_FRAME_FIELDS = {"message_type": "u8", "reserved": "u8", "message_length": "u16"}
+MESSAGE_LENGTH_MAX = 0xFFFF  # what message_length, a u16, holds
 
 
 def check_names(spec: LoadedSpec) -> Names:
@@ -85,7 +86,7 @@ def check_frame(spec: LoadedSpec, frame: dict[str, Any], names: Names) -> None:
     lengths = frame["message_length"]
     if lengths["min"] > lengths["max"]:
         raise spec.error(("frame", "message_length"), f"min {lengths['min']} is above max {lengths['max']}")
-    if lengths["max"] > 0xFFFF:
+    if lengths["max"] > MESSAGE_LENGTH_MAX:
         raise spec.error(("frame", "message_length", "max"), "the message length is a u16")
 
 
