@@ -36,6 +36,7 @@ def build(loaded: LoadedSpec) -> Spec:
     d = loaded.data
     units = {key: Unit(key=key, suffix=u["suffix"], doc=prose(u["doc"])) for key, u in d.get("units", {}).items()}
     encodings = d.get("encodings", {})
+    date_bounds = _date_bounds(encodings["date"]) if encodings.get("date") else None
     status_word = _status_word(d["status_word"]) if "status_word" in d else None
     variants = d.get("variants", {"parameters": {}, "list": []})
     ack = d.get("acknowledgement", {})
@@ -57,7 +58,7 @@ def build(loaded: LoadedSpec) -> Spec:
         commands=tuple(_command(c, i) for i, c in enumerate(d["commands"])),
         ack_payload=ack.get("payload"),
         ack_doc=prose(ack.get("doc")),
-        payloads=_payloads(d["payloads"], units, _date_bounds(encodings["date"]) if encodings.get("date") else None),
+        payloads=_payloads(d["payloads"], units, date_bounds),
         enums=tuple(_enum(name, e) for name, e in d.get("enums", {}).items()),
         date=_date(encodings["date"]) if "date" in encodings else None,
         declination=_declination(encodings["declination"]) if "declination" in encodings else None,
