@@ -9,7 +9,7 @@ $(ILAHRS_STAMP): $(VENV)/.stamp generated/python/pyproject.toml
 
 SETUP_TARGETS += $(ILAHRS_STAMP)
 
-PY_LINT_PATHS := generator generated/python $(wildcard tests/*.py conformance/*.py conformance/runners/*.py conformance/tools/*.py conformance/tools/*/*.py bench/python/*.py)
+PY_LINT_PATHS := generator generated/python tools/generator_stats.py $(wildcard tests/*.py conformance/*.py conformance/runners/*.py conformance/tools/*.py conformance/tools/*/*.py bench/python/*.py)
 # Helper scripts of one binding live in tests/<binding>/; each folder is checked on its own, since
 # their module names may repeat across folders.
 PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
