@@ -2,6 +2,8 @@
 #
 #   make bench-mavlink   throughput fed whole and a byte at a time, instructions per byte (callgrind,
 #                        -Os and -O2) and Cortex-M4 text and RAM of each decoder, ours / theirs
+#   make test-mavlink    the same harness on 256 KiB captures, its report checked for every figure
+#                        and for the decoders' message counts (tests/mavlink/check_report.py; no timing)
 #   make lint-mavlink    ruff and mypy on bench/mavlink/*.py
 #
 # MAVLink is not kept here: pymavlink (bench/mavlink/requirements.txt, pinned) is installed into
@@ -32,9 +34,10 @@ MAV_COMPARE = $(PY) bench/mavlink/compare.py --bench-o2 $(MAV_OUT)/bench_o2 --be
 	--ilahrs generated/c --mavlink $(MAV_OUT)/c/bench --cc $(MAV_ARM_CC) --flags "$(MAV_ARM_FLAGS)"
 
 BENCH_TARGETS += bench-mavlink
+TEST_TARGETS += test-mavlink
 LINT_TARGETS += lint-mavlink
 
-.PHONY: setup-mavlink bench-mavlink lint-mavlink
+.PHONY: setup-mavlink bench-mavlink test-mavlink lint-mavlink
 
 $(MAV_STAMP): bench/mavlink/requirements.txt $(VENV)/.stamp
 	$(PIP) install --quiet --disable-pip-version-check -r bench/mavlink/requirements.txt
@@ -59,7 +62,12 @@ $(MAV_OUT)/bench_o2 $(MAV_OUT)/bench_os: $(MAV_DEPS)
 bench-mavlink: setup-mavlink $(MAV_OUT)/bench_o2 $(MAV_OUT)/bench_os
 	$(MAV_COMPARE) --out $(MAV_OUT) | tee $(MAV_OUT)/report.txt
 
-# bench/mavlink is outside the Python lint paths of mk/python.mk.
+test-mavlink: setup-mavlink $(MAV_OUT)/bench_o2 $(MAV_OUT)/bench_os
+	@mkdir -p $(MAV_OUT)/smoke
+	$(MAV_COMPARE) --out $(MAV_OUT)/smoke --size 262144 --callgrind-size 262144 | tee $(MAV_OUT)/smoke/report.txt \
+		| $(PY) tests/mavlink/check_report.py
+
+# bench/mavlink is outside the Python lint paths of mk/python.mk (tests/mavlink is inside them).
 lint-mavlink: setup
 	$(VENV)/bin/ruff check bench/mavlink
 	$(VENV)/bin/ruff format --check bench/mavlink
