@@ -82,10 +82,12 @@
 extern "C" {
 #endif
 
-#define ILAHRS_SPEC_VERSION "1.0.0" /**< Version of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH \
-    "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f" /**< SHA-256 of that spec. */
-#define ILAHRS_ICD_REVISION "1.7"                                      /**< Revision of the ICD the spec describes. */
+/** Version of the spec this file was generated from. */
+#define ILAHRS_SPEC_VERSION "1.0.0"
+/** SHA-256 of the spec this file was generated from. */
+#define ILAHRS_SPEC_HASH "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"
+/** Revision of the ICD the spec describes. */
+#define ILAHRS_ICD_REVISION "1.7"
 
 /** 1 (the default): names and by-name lookups; 0: none (see "Build switches" above). */
 #ifndef ILAHRS_NAMES
@@ -743,7 +745,7 @@ const char *ilahrs_usw_flag_name(unsigned bit);
 #endif
 
 /* ======================================================================================== */
-/* Errors                                                                                   */
+/* Error reports                                                                            */
 /* ======================================================================================== */
 
 /** `offset` of an error that refers to no particular byte. */
@@ -764,7 +766,7 @@ typedef struct ilahrs_error {
 const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind);
 
 /* ======================================================================================== */
-/* Frames                                                                                   */
+/* Frames: decoding and building                                                           */
 /* ======================================================================================== */
 
 /**
@@ -806,7 +808,7 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
 size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /* ======================================================================================== */
-/* Commands                                                                                 */
+/* Commands: names, properties, frames                                                      */
 /* ======================================================================================== */
 
 /** A decoded command frame: its code and every command with that code, sorted by name. */
@@ -875,7 +877,7 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
 size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /* ======================================================================================== */
-/* Device variants                                                                          */
+/* Device variants: parameters and names                                                    */
 /* ======================================================================================== */
 
 /** The value of a variant parameter; 0 for an unknown variant or parameter. */

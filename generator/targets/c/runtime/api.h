@@ -1,5 +1,5 @@
 /* ======================================================================================== */
-/* Errors                                                                                   */
+/* Error reports                                                                            */
 /* ======================================================================================== */
 
 /** `offset` of an error that refers to no particular byte. */
@@ -20,7 +20,7 @@ typedef struct ilahrs_error {
 const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind);
 
 /* ======================================================================================== */
-/* Frames                                                                                   */
+/* Frames: decoding and building                                                           */
 /* ======================================================================================== */
 
 /**
@@ -62,7 +62,7 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
 size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /* ======================================================================================== */
-/* Commands                                                                                 */
+/* Commands: names, properties, frames                                                      */
 /* ======================================================================================== */
 
 /** A decoded command frame: its code and every command with that code, sorted by name. */
@@ -131,7 +131,7 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
 size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t cap, ilahrs_error_t *err);
 
 /* ======================================================================================== */
-/* Device variants                                                                          */
+/* Device variants: parameters and names                                                    */
 /* ======================================================================================== */
 
 /** The value of a variant parameter; 0 for an unknown variant or parameter. */
