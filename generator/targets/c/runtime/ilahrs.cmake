@@ -1,3 +1,6 @@
+# Build ilahrs as a library for those who prefer linking to copying ilahrs.h and ilahrs.c:
+#   cmake -S generated/c -B build/ilahrs && cmake --build build/ilahrs && cmake --install build/ilahrs
+# Then link with `find_package(ilahrs)` (target ilahrs::ilahrs) or `pkg-config --cflags --libs ilahrs`.
 
 include(GNUInstallDirs)
 
