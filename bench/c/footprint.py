@@ -45,7 +45,7 @@ MACHINE = ["ilahrs_transition_on", "ilahrs_event_for_frame", "ilahrs_state_timer
 # Host conveniences that take engineering values as doubles (done in integers: no soft-float).
 DOUBLE_HELPERS = {"ilahrs_field_check", "ilahrs_pahr_from_array", "ilahrs_pahr_from_values"}
 TARGETS = {"stream decoder": 512, "stream decoder, frames only": 512, "sentence parser": None,
-           "frame and command builders": None, "payload builder": None, "state machine": None, "firmware": None,
+           "frame and command builders": None, "payload builder": None, "state machine": None, "firmware": 4096,
            "firmware core": None,
            "whole library without the double helpers": 8 * 1024, "whole library": 8 * 1024,
            "firmware, names off": None, "whole library, names off": 8 * 1024}

@@ -88,7 +88,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check(out[ILAHRS_FRAME_PAYLOAD_OFFSET] == rest[ILAHRS_FRAME_PAYLOAD_OFFSET] && match.code == rest[ILAHRS_FRAME_PAYLOAD_OFFSET]);
     }
     /* The stream decoder takes the input as one sentence exactly when the sentence parser does
-     * (its own, one-pass validator when optimized for size), with the same values. */
+     * (both end in the one sentence scanner, after their own search for the end), with the same
+     * values. */
     {
         ilahrs_stream_t decoder = { 0 };
         ilahrs_message_t msg;

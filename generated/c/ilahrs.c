@@ -1,46 +1,90 @@
 /* Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
  * Do not edit: change the spec or the generator and run `make generate`.
- */
-/*
- * The library is table-driven where that keeps it small: one payload codec walks the field
- * table below, one sentence codec walks the $PAHR field table, and names live in string pools
- * (one for every name that only the name functions use, one per kind for the names errors
- * report). All tables are const; nothing here is mutable after start-up.
+ *
+ * The spec's tables, then the library's fixed code, which walks them (generator/targets/c/runtime/).
  */
 #include "ilahrs.h"
 
 #include <string.h>
 
 /*
- * Speed or size. 64-bit hosts get word-at-a-time checksums, a zero-copy path through the
- * stream decoder for messages inside the caller's chunk and a fast path for sentences in the
- * canonical layout; 32-bit targets get the smallest code. Both give the same answers. Define
- * ILAHRS_OPTIMIZE_SIZE to 1 or 0 to choose.
+ * How ilahrs.c reads its tables. The tables below this block are generated from the spec; the
+ * code after them is fixed and walks them. Everything is const: nothing here is mutable.
+ *
+ * Names live in string pools (NUL-separated strings; tables hold offsets into them): the names
+ * errors report have a pool per kind, so that a firmware links only the ones it reports; every
+ * other name shares one pool, whose offsets form one table of sections, one per kind. Without
+ * names (ILAHRS_NAMES 0) errors name no field and no name pool is compiled.
  */
-#ifndef ILAHRS_OPTIMIZE_SIZE
-#if SIZE_MAX > 0xFFFFFFFFu
-#define ILAHRS_OPTIMIZE_SIZE 0
+#if ILAHRS_NAMES
+#define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
+#define FIELD_NAME(offset) (ilahrs_field_names + (offset))
+#define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
+#define NAME_DATE (ilahrs_date_names)
 #else
-#define ILAHRS_OPTIMIZE_SIZE 1
+#define NO_NAME ((const char *)NULL)
+#define FRAME_NAME(offset) NO_NAME
+#define FIELD_NAME(offset) NO_NAME
+#define SENTENCE_NAME(offset) NO_NAME
+#define NAME_DATE NO_NAME
 #endif
-#endif
+#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
+#define TEXT(offset) (ilahrs_text_names + (offset))
 
 /*
- * Sentences in the stream decoder. A firmware that never turns on the device's NMEA output can
- * define ILAHRS_STREAM_SENTENCES to 0 for the smallest decoder: it hands back frames only and
- * counts the bytes of $PAHR sentences as discarded. It finds exactly the frames the full decoder
- * finds, in the same order: a valid sentence is printable ASCII ending in CR LF, so no frame
- * starts inside one, and a frame's validity never depends on what precedes it. Only the stream
- * decoder changes; ilahrs_pahr_parse() and the other sentence functions stay.
+ * A payload field (ilahrs_field_info_t) in three small numbers, each column as wide as the spec
+ * needs (KIND_BITS, ENCODING_BITS, TYPE_BITS, OFFSET_BITS and BOUNDS_BITS come with the table):
+ * - name_type: the name's offset in the field-name pool, above the type: the wire kind, an
+ *   encoding a builder checks beyond a range, and the log2 of a number's size;
+ * - place: the member's distance from the wire offset (struct padding so far), above the offset;
+ * - info: an array's size (char and reserved, the last kinds), else the engineering scale (a row of
+ *   ilahrs_scales) above the builder bounds (a row of ilahrs_int_bounds or ilahrs_float_bounds, by
+ *   kind); row 0 of each is "none".
+ * The table has one row per field, written with NUMBER() or ARRAY().
  */
-#ifndef ILAHRS_STREAM_SENTENCES
-#define ILAHRS_STREAM_SENTENCES 1
-#endif
+#define SIZE_LOG2(size) (((size) > 1) + ((size) > 2) + ((size) > 4))
+#define FIELD_NAME_TYPE(name, kind, encoding, size) \
+    (((name) << TYPE_BITS) | (SIZE_LOG2(size) << (KIND_BITS + ENCODING_BITS)) | ((encoding) << KIND_BITS) | (kind))
+#define FIELD_PLACE(offset, member) ((((member) - (offset)) << OFFSET_BITS) | (offset))
+#define NUMBER(name, kind, encoding, size, offset, member, bounds, scale)                                \
+    { FIELD_NAME_TYPE(name, ILAHRS_KIND_##kind, ENCODING_##encoding, size), FIELD_PLACE(offset, member), \
+      (bounds) | ((scale) << BOUNDS_BITS) }
+#define ARRAY(name, kind, size, offset, member) \
+    { FIELD_NAME_TYPE(name, ILAHRS_KIND_##kind, ENCODING_NONE, 1), FIELD_PLACE(offset, member), size }
 
-/* ---- Tables --------------------------------------------------------------------------- */
+#define FIELD_KIND(f) ((unsigned)(f)->name_type & ((1u << KIND_BITS) - 1u))
+#define FIELD_ENCODING(f) (((unsigned)(f)->name_type >> KIND_BITS) & ((1u << ENCODING_BITS) - 1u))
+#define FIELD_NAME_AT(f) ((unsigned)(f)->name_type >> TYPE_BITS)
+#define FIELD_IS_ARRAY(f) (FIELD_KIND(f) >= ILAHRS_KIND_CHAR)
+#define FIELD_ARRAY_SIZE(f) ((unsigned)(f)->info)
+#define FIELD_NUMBER_SIZE(f) \
+    (1u << (((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u)) >> (KIND_BITS + ENCODING_BITS)))
+#define FIELD_SIZE(f) (FIELD_IS_ARRAY(f) ? FIELD_ARRAY_SIZE(f) : FIELD_NUMBER_SIZE(f))
+#define FIELD_OFFSET(f) ((unsigned)(f)->place & ((1u << OFFSET_BITS) - 1u))
+#define FIELD_MEMBER(f) (FIELD_OFFSET(f) + ((unsigned)(f)->place >> OFFSET_BITS))
+#define FIELD_BOUNDS(f) ((unsigned)(f)->info & ((1u << BOUNDS_BITS) - 1u))
+#define FIELD_SCALE(f) ((unsigned)(f)->info >> BOUNDS_BITS)
 
-/* Strings (NUL-separated pools; tables hold offsets into them). Error kind names, the text
- * defaults of char fields and the variants' part numbers are there in every build. */
+/*
+ * The device state machine, if the spec has one: a distinct outcome is the next state above an
+ * answer sequence (OUTCOME()), and a table cell that differs from its state's default is the
+ * (state, event) pair above the cell (CELL(): the outcome's row + 1, 0 for an ignored event).
+ */
+#define OUTCOME(state, sequence) (((unsigned)(state) << SEQUENCE_BITS) | (sequence))
+#define CELL(state, event, cell) ((((unsigned)(state) * ILAHRS_EVENT_COUNT + (unsigned)(event)) << CELL_BITS) | (cell))
+
+/* A little-endian number of 1..4 bytes, its size known at compile time, read in place; and the
+ * write the generated frame code uses (defined with the helpers). */
+#define LE(p, size)                                                        \
+    ((uint32_t)(p)[0] | ((size) > 1 ? (uint32_t)(p)[(size) > 1] << 8 : 0u) \
+     | ((size) > 2 ? (uint32_t)(p)[(size) > 2 ? 2 : 0] << 16 : 0u)         \
+     | ((size) > 3 ? (uint32_t)(p)[(size) > 3 ? 3 : 0] << 24 : 0u))
+static void put_le(uint8_t *p, uint32_t value, size_t size);
+
+/* ---- Tables ---------------------------------------------------------------------------- */
+
+/* Error kind names, the text defaults of char fields and the variants' part numbers: in every
+ * build. */
 static const char ilahrs_error_names[159] =
     "truncated\000"
     "bad_header\000"
@@ -55,8 +99,7 @@ static const char ilahrs_error_names[159] =
     "unexpected_message\000"
     "timeout";
 
-static const char ilahrs_text_names[1] =
-    "";
+static const char ilahrs_text_names[1] = "";
 
 static const char ilahrs_part_names[106] =
     "AHRS-G300-A2-TMGA-C1-V1.1\000"
@@ -64,34 +107,29 @@ static const char ilahrs_part_names[106] =
     "AHRS s/n 11AC0001 - 11AC0009\000"
     "AHRS-G300-A2-TGA-C1-V1.1";
 
-#define ERROR_NAME(offset) (ilahrs_error_names + (offset))
-#define TEXT(offset) (ilahrs_text_names + (offset))
-
 static const uint8_t ilahrs_error_offsets[] = {
-    0, /* truncated */
-    10, /* bad_header */
-    21, /* bad_message_type */
-    38, /* bad_length */
-    49, /* bad_checksum */
-    62, /* trailing_data */
-    76, /* unknown_command */
-    92, /* out_of_range */
-    105, /* malformed */
-    115, /* buffer_too_small */
-    132, /* unexpected_message */
-    151, /* timeout */
+    [ILAHRS_ERR_TRUNCATED - 1] = 0,
+    [ILAHRS_ERR_BAD_HEADER - 1] = 10,
+    [ILAHRS_ERR_BAD_MESSAGE_TYPE - 1] = 21,
+    [ILAHRS_ERR_BAD_LENGTH - 1] = 38,
+    [ILAHRS_ERR_BAD_CHECKSUM - 1] = 49,
+    [ILAHRS_ERR_TRAILING_DATA - 1] = 62,
+    [ILAHRS_ERR_UNKNOWN_COMMAND - 1] = 76,
+    [ILAHRS_ERR_OUT_OF_RANGE - 1] = 92,
+    [ILAHRS_ERR_MALFORMED - 1] = 105,
+    [ILAHRS_ERR_BUFFER_TOO_SMALL - 1] = 115,
+    [ILAHRS_ERR_UNEXPECTED_MESSAGE - 1] = 132,
+    [ILAHRS_ERR_TIMEOUT - 1] = 151,
 };
 
 static const uint8_t ilahrs_part_offsets[ILAHRS_VARIANT_COUNT] = {
-    0, /* g300_a2_tmga */
-    26, /* g300_a6_tmga */
-    52, /* sn_11ac0001_0009 */
-    81, /* g300_a2_tga */
+    [ILAHRS_VARIANT_G300_A2_TMGA] = 0,
+    [ILAHRS_VARIANT_G300_A6_TMGA] = 26,
+    [ILAHRS_VARIANT_SN_11AC0001_0009] = 52,
+    [ILAHRS_VARIANT_G300_A2_TGA] = 81,
 };
 
 #if ILAHRS_NAMES
-/* The names errors report have a pool per kind, so that a firmware links only the ones it
- * reports. */
 static const char ilahrs_frame_names[61] =
     "header\000"
     "payload\000"
@@ -176,18 +214,9 @@ static const char ilahrs_sentence_names[39] =
     "vdd\000"
     "usw";
 
-static const char ilahrs_date_names[5] =
-    "date";
+static const char ilahrs_date_names[5] = "date";
 
-#define FRAME_NAME(offset) (ilahrs_frame_names + (offset))
-#define FIELD_NAME(offset) (ilahrs_field_names + (offset))
-#define SENTENCE_NAME(offset) (ilahrs_sentence_names + (offset))
-#define NAME_DATE (ilahrs_date_names + 0)
-
-/* Every other name, for the name accessors and by-name lookups, in one pool (a name that ends
- * another is stored once, as its tail), and their offsets in one table: one section per kind, in
- * the order of the kind's enum, starting at NAMES_<kind>. A USW bit without a flag has the empty
- * name. Event names are the command names, then those of the other events. */
+/* The name accessors' pool and its offsets, one section per kind in the order of its enum. */
 static const char ilahrs_name_names[1208] =
     "AHRScont1\000"
     "AHRScont2\000"
@@ -271,14 +300,103 @@ static const char ilahrs_name_names[1208] =
     "output_sleep";
 
 static const uint16_t ilahrs_name_offsets[97] = {
-    /* command */ 0, 10, 20, 30, 39, 48, 57, 66, 74, 85, 90, 102, 114, 125, 137, 152, 159, 170, 183, 194, 206, 217, 227, 237, 245, 254,
-    /* event */ 264, 280, 294, 302, 316, 331, 349,
-    /* variant */ 360, 373, 386, 403,
-    /* mode */ 415, 971, 991, 420, 1202,
-    /* payload */ 432, 444, 455, 475, 493, 514, 535, 552, 563, 586, 605, 628, 655, 674,
-    /* flag */ 690, 715, 736, 749, 771, 792, 812, 9, 829, 848, 868, 884, 900, 916, 937,
-    /* state */ 415, 1014, 962, 971, 982, 991, 1202, 1002, 1034, 1055, 1080, 1101, 1126, 1137, 1161, 1174,
-    /* answer */ 1191, 514, 535, 552, 655, 475, 437, 1195, 586, 605,
+    /* command */ 0,
+    10,
+    20,
+    30,
+    39,
+    48,
+    57,
+    66,
+    74,
+    85,
+    90,
+    102,
+    114,
+    125,
+    137,
+    152,
+    159,
+    170,
+    183,
+    194,
+    206,
+    217,
+    227,
+    237,
+    245,
+    254,
+    /* event */ 264,
+    280,
+    294,
+    302,
+    316,
+    331,
+    349,
+    /* variant */ 360,
+    373,
+    386,
+    403,
+    /* mode */ 415,
+    971,
+    991,
+    420,
+    1202,
+    /* payload */ 432,
+    444,
+    455,
+    475,
+    493,
+    514,
+    535,
+    552,
+    563,
+    586,
+    605,
+    628,
+    655,
+    674,
+    /* flag */ 690,
+    715,
+    736,
+    749,
+    771,
+    792,
+    812,
+    9,
+    829,
+    848,
+    868,
+    884,
+    900,
+    916,
+    937,
+    /* state */ 415,
+    1014,
+    962,
+    971,
+    982,
+    991,
+    1202,
+    1002,
+    1034,
+    1055,
+    1080,
+    1101,
+    1126,
+    1137,
+    1161,
+    1174,
+    /* answer */ 1191,
+    514,
+    535,
+    552,
+    655,
+    475,
+    437,
+    1195,
+    586,
+    605,
 };
 #define NAMES_COMMAND 0u
 #define NAMES_EVENT 26u
@@ -286,634 +404,1043 @@ static const uint16_t ilahrs_name_offsets[97] = {
 #define NAMES_MODE 37u
 #define NAMES_PAYLOAD 42u
 #define NAMES_FLAG 56u
+#define NAMES_FLAG_COUNT 15u /* one per USW bit up to the last flag */
 #define NAMES_STATE 71u
 #define NAMES_ANSWER 87u
-#define NAMES_FLAG_COUNT 15u /* one per USW bit up to the last flag */
-typedef char ilahrs_check_event_names[NAMES_EVENT == NAMES_COMMAND + ILAHRS_COMMAND_COUNT ? 1 : -1];
-#else
-/* Without names, errors name no field. */
-#define NO_NAME ((const char *)NULL)
-#define FRAME_NAME(offset) NO_NAME
-#define FIELD_NAME(offset) NO_NAME
-#define SENTENCE_NAME(offset) NO_NAME
-#define NAME_DATE NO_NAME
 #endif
-#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
-#define NAME_FRAME_RESERVED FRAME_NAME(28)
-#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
 #define NAME_FRAME_HEADER FRAME_NAME(0)
 #define NAME_FRAME_PAYLOAD FRAME_NAME(7)
 #define NAME_FRAME_CHECKSUM FRAME_NAME(52)
+#define NAME_FRAME_MESSAGE_TYPE FRAME_NAME(15)
+#define NAME_FRAME_RESERVED FRAME_NAME(28)
+#define NAME_FRAME_MESSAGE_LENGTH FRAME_NAME(37)
+
+/* The frame (frame_get_fields() and frame_put_fields(): the fields between header and payload
+ * but the length, which the library checks and writes itself). */
+typedef uint16_t checksum_t;
+static const uint8_t ilahrs_frame_header[ILAHRS_FRAME_HEADER_SIZE] = { 0xAA, 0x55 };
+#define MESSAGE_TYPE_VALID(type) ((type) == ILAHRS_MESSAGE_TYPE_COMMAND || (type) == ILAHRS_MESSAGE_TYPE_DATA)
+
+static void frame_get_fields(ilahrs_frame_t *frame, const uint8_t *p)
+{
+    frame->message_type = (uint8_t)LE(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE);
+    frame->reserved = (uint8_t)LE(p + ILAHRS_FRAME_RESERVED_OFFSET, ILAHRS_FRAME_RESERVED_SIZE);
+}
+
+static void frame_put_fields(uint8_t *out, const ilahrs_frame_t *frame)
+{
+    put_le(out + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, frame->message_type, ILAHRS_FRAME_MESSAGE_TYPE_SIZE);
+    put_le(out + ILAHRS_FRAME_RESERVED_OFFSET, frame->reserved, ILAHRS_FRAME_RESERVED_SIZE);
+}
 
 /* Command table (Table C.1), one array per column so that a firmware links only the columns it
- * uses: code, modes it is valid in, response, parameter block, payload tables of a data
- * response. */
+ * uses. */
 static const uint8_t ilahrs_command_codes[ILAHRS_COMMAND_COUNT] = {
-0x80, 0x82, 0x83, 0x84, 0x86, 0x87, 0x88, 0x89, 0xCA, 0xFE, 0x40, 0x41, 0xB0, 0xBA, 0x1F, 0x1A, 0x21, 0x22, 0x23, 0x2B, 0x20, 0x2C, 0x2E, 0xFE, 0x2F, 0x2A
+    [ILAHRS_COMMAND_AHRS_CONT1] = ILAHRS_CODE_AHRS_CONT1,
+    [ILAHRS_COMMAND_AHRS_CONT2] = ILAHRS_CODE_AHRS_CONT2,
+    [ILAHRS_COMMAND_AHRS_CONT3] = ILAHRS_CODE_AHRS_CONT3,
+    [ILAHRS_COMMAND_AHRS_REQ1] = ILAHRS_CODE_AHRS_REQ1,
+    [ILAHRS_COMMAND_AHRS_REQ2] = ILAHRS_CODE_AHRS_REQ2,
+    [ILAHRS_COMMAND_AHRS_REQ3] = ILAHRS_CODE_AHRS_REQ3,
+    [ILAHRS_COMMAND_NMEA_CONT] = ILAHRS_CODE_NMEA_CONT,
+    [ILAHRS_COMMAND_NMEA_REQ] = ILAHRS_CODE_NMEA_REQ,
+    [ILAHRS_COMMAND_GET_DATA_REQ] = ILAHRS_CODE_GET_DATA_REQ,
+    [ILAHRS_COMMAND_STOP] = ILAHRS_CODE_STOP,
+    [ILAHRS_COMMAND_LOAD_AHRS_PAR] = ILAHRS_CODE_LOAD_AHRS_PAR,
+    [ILAHRS_COMMAND_READ_AHRS_PAR] = ILAHRS_CODE_READ_AHRS_PAR,
+    [ILAHRS_COMMAND_LOW_POWER_ON] = ILAHRS_CODE_LOW_POWER_ON,
+    [ILAHRS_COMMAND_LOW_POWER_OFF] = ILAHRS_CODE_LOW_POWER_OFF,
+    [ILAHRS_COMMAND_GET_VER_FIRMWARE] = ILAHRS_CODE_GET_VER_FIRMWARE,
+    [ILAHRS_COMMAND_GET_BIT] = ILAHRS_CODE_GET_BIT,
+    [ILAHRS_COMMAND_START_2D_CLB] = ILAHRS_CODE_START_2D_CLB,
+    [ILAHRS_COMMAND_START_2D2T_CLB] = ILAHRS_CODE_START_2D2T_CLB,
+    [ILAHRS_COMMAND_START_3D_CLB] = ILAHRS_CODE_START_3D_CLB,
+    [ILAHRS_COMMAND_START_CLB_RUN] = ILAHRS_CODE_START_CLB_RUN,
+    [ILAHRS_COMMAND_STOP_CLB_RUN] = ILAHRS_CODE_STOP_CLB_RUN,
+    [ILAHRS_COMMAND_FINISH_CLB] = ILAHRS_CODE_FINISH_CLB,
+    [ILAHRS_COMMAND_ACCEPT_CLB] = ILAHRS_CODE_ACCEPT_CLB,
+    [ILAHRS_COMMAND_EXIT_CLB] = ILAHRS_CODE_EXIT_CLB,
+    [ILAHRS_COMMAND_CLEAR_CLB] = ILAHRS_CODE_CLEAR_CLB,
+    [ILAHRS_COMMAND_GET_CLB_RES] = ILAHRS_CODE_GET_CLB_RES,
 };
 
 static const uint8_t ilahrs_command_modes[ILAHRS_COMMAND_COUNT] = {
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont1 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont2 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRScont3 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq1 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq2 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* AHRSreq3 */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* NMEAcont */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* NMEAreq */
-ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* GetDataReq */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* Stop */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* LoadAHRSPar */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* ReadAHRSPar */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* LowPowerOn */
-ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP), /* LowPowerOff */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* GetVerFirmware */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST), /* GetBIT */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start2DClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start2D2TClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* Start3DClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* StartClbRun */
-ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* StopClbRun */
-ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* FinishClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* AcceptClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION), /* ExitClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* ClearClb */
-ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE), /* GetClbRes */
+    [ILAHRS_COMMAND_AHRS_CONT1] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_AHRS_CONT2] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_AHRS_CONT3] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_AHRS_REQ1] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_AHRS_REQ2] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_AHRS_REQ3] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_NMEA_CONT] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_NMEA_REQ] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_GET_DATA_REQ] = ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST),
+    [ILAHRS_COMMAND_STOP] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS)
+                            | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST),
+    [ILAHRS_COMMAND_LOAD_AHRS_PAR] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_READ_AHRS_PAR] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_LOW_POWER_ON] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_CONTINUOUS)
+                                    | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST),
+    [ILAHRS_COMMAND_LOW_POWER_OFF] = ILAHRS_MODE_BIT(ILAHRS_MODE_SLEEP),
+    [ILAHRS_COMMAND_GET_VER_FIRMWARE] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_GET_BIT] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE) | ILAHRS_MODE_BIT(ILAHRS_MODE_ON_REQUEST),
+    [ILAHRS_COMMAND_START_2D_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_START_2D2T_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_START_3D_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_START_CLB_RUN] = ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION),
+    [ILAHRS_COMMAND_STOP_CLB_RUN] = ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION),
+    [ILAHRS_COMMAND_FINISH_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION),
+    [ILAHRS_COMMAND_ACCEPT_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION),
+    [ILAHRS_COMMAND_EXIT_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_CALIBRATION),
+    [ILAHRS_COMMAND_CLEAR_CLB] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
+    [ILAHRS_COMMAND_GET_CLB_RES] = ILAHRS_MODE_BIT(ILAHRS_MODE_IDLE),
 };
 
 static const uint8_t ilahrs_command_responses[ILAHRS_COMMAND_COUNT] = {
-ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_OUTPUT, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_NONE, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_DATA, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_ACK, ILAHRS_RESPONSE_DATA
+    [ILAHRS_COMMAND_AHRS_CONT1] = ILAHRS_RESPONSE_ACK,        [ILAHRS_COMMAND_AHRS_CONT2] = ILAHRS_RESPONSE_ACK,
+    [ILAHRS_COMMAND_AHRS_CONT3] = ILAHRS_RESPONSE_ACK,        [ILAHRS_COMMAND_AHRS_REQ1] = ILAHRS_RESPONSE_ACK,
+    [ILAHRS_COMMAND_AHRS_REQ2] = ILAHRS_RESPONSE_ACK,         [ILAHRS_COMMAND_AHRS_REQ3] = ILAHRS_RESPONSE_ACK,
+    [ILAHRS_COMMAND_NMEA_CONT] = ILAHRS_RESPONSE_ACK,         [ILAHRS_COMMAND_NMEA_REQ] = ILAHRS_RESPONSE_ACK,
+    [ILAHRS_COMMAND_GET_DATA_REQ] = ILAHRS_RESPONSE_OUTPUT,   [ILAHRS_COMMAND_STOP] = ILAHRS_RESPONSE_NONE,
+    [ILAHRS_COMMAND_LOAD_AHRS_PAR] = ILAHRS_RESPONSE_NONE,    [ILAHRS_COMMAND_READ_AHRS_PAR] = ILAHRS_RESPONSE_DATA,
+    [ILAHRS_COMMAND_LOW_POWER_ON] = ILAHRS_RESPONSE_NONE,     [ILAHRS_COMMAND_LOW_POWER_OFF] = ILAHRS_RESPONSE_NONE,
+    [ILAHRS_COMMAND_GET_VER_FIRMWARE] = ILAHRS_RESPONSE_DATA, [ILAHRS_COMMAND_GET_BIT] = ILAHRS_RESPONSE_DATA,
+    [ILAHRS_COMMAND_START_2D_CLB] = ILAHRS_RESPONSE_NONE,     [ILAHRS_COMMAND_START_2D2T_CLB] = ILAHRS_RESPONSE_NONE,
+    [ILAHRS_COMMAND_START_3D_CLB] = ILAHRS_RESPONSE_NONE,     [ILAHRS_COMMAND_START_CLB_RUN] = ILAHRS_RESPONSE_NONE,
+    [ILAHRS_COMMAND_STOP_CLB_RUN] = ILAHRS_RESPONSE_DATA,     [ILAHRS_COMMAND_FINISH_CLB] = ILAHRS_RESPONSE_DATA,
+    [ILAHRS_COMMAND_ACCEPT_CLB] = ILAHRS_RESPONSE_ACK,        [ILAHRS_COMMAND_EXIT_CLB] = ILAHRS_RESPONSE_ACK,
+    [ILAHRS_COMMAND_CLEAR_CLB] = ILAHRS_RESPONSE_ACK,         [ILAHRS_COMMAND_GET_CLB_RES] = ILAHRS_RESPONSE_DATA,
 };
 
 static const int8_t ilahrs_command_blocks[ILAHRS_COMMAND_COUNT] = {
-ILAHRS_PAYLOAD_NONE, /* AHRScont1 */
-ILAHRS_PAYLOAD_NONE, /* AHRScont2 */
-ILAHRS_PAYLOAD_NONE, /* AHRScont3 */
-ILAHRS_PAYLOAD_NONE, /* AHRSreq1 */
-ILAHRS_PAYLOAD_NONE, /* AHRSreq2 */
-ILAHRS_PAYLOAD_NONE, /* AHRSreq3 */
-ILAHRS_PAYLOAD_NONE, /* NMEAcont */
-ILAHRS_PAYLOAD_NONE, /* NMEAreq */
-ILAHRS_PAYLOAD_NONE, /* GetDataReq */
-ILAHRS_PAYLOAD_NONE, /* Stop */
-ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, /* LoadAHRSPar */
-ILAHRS_PAYLOAD_NONE, /* ReadAHRSPar */
-ILAHRS_PAYLOAD_NONE, /* LowPowerOn */
-ILAHRS_PAYLOAD_NONE, /* LowPowerOff */
-ILAHRS_PAYLOAD_NONE, /* GetVerFirmware */
-ILAHRS_PAYLOAD_NONE, /* GetBIT */
-ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start2DClb */
-ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start2D2TClb */
-ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* Start3DClb */
-ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, /* StartClbRun */
-ILAHRS_PAYLOAD_NONE, /* StopClbRun */
-ILAHRS_PAYLOAD_NONE, /* FinishClb */
-ILAHRS_PAYLOAD_NONE, /* AcceptClb */
-ILAHRS_PAYLOAD_NONE, /* ExitClb */
-ILAHRS_PAYLOAD_NONE, /* ClearClb */
-ILAHRS_PAYLOAD_NONE, /* GetClbRes */
+    [ILAHRS_COMMAND_AHRS_CONT1] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_AHRS_CONT2] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_AHRS_CONT3] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_AHRS_REQ1] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_AHRS_REQ2] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_AHRS_REQ3] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_NMEA_CONT] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_NMEA_REQ] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_GET_DATA_REQ] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_STOP] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_LOAD_AHRS_PAR] = ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD,
+    [ILAHRS_COMMAND_READ_AHRS_PAR] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_LOW_POWER_ON] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_LOW_POWER_OFF] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_GET_VER_FIRMWARE] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_GET_BIT] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_START_2D_CLB] = ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS,
+    [ILAHRS_COMMAND_START_2D2T_CLB] = ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS,
+    [ILAHRS_COMMAND_START_3D_CLB] = ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS,
+    [ILAHRS_COMMAND_START_CLB_RUN] = ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS,
+    [ILAHRS_COMMAND_STOP_CLB_RUN] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_FINISH_CLB] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_ACCEPT_CLB] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_EXIT_CLB] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_CLEAR_CLB] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_COMMAND_GET_CLB_RES] = ILAHRS_PAYLOAD_NONE,
 };
 
 static const int8_t ilahrs_command_response_payloads[ILAHRS_COMMAND_COUNT][ILAHRS_RESPONSE_PAYLOADS_MAX] = {
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont1 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont2 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRScont3 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq1 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq2 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AHRSreq3 */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* NMEAcont */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* NMEAreq */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* GetDataReq */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Stop */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LoadAHRSPar */
-    { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE }, /* ReadAHRSPar */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LowPowerOn */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* LowPowerOff */
-    { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE }, /* GetVerFirmware */
-    { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE }, /* GetBIT */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start2DClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start2D2TClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* Start3DClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* StartClbRun */
-    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT }, /* StopClbRun */
-    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE }, /* FinishClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* AcceptClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* ExitClb */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE }, /* ClearClb */
-    { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE }, /* GetClbRes */
+    [ILAHRS_COMMAND_AHRS_CONT1] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_AHRS_CONT2] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_AHRS_CONT3] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_AHRS_REQ1] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_AHRS_REQ2] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_AHRS_REQ3] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_NMEA_CONT] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_NMEA_REQ] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_GET_DATA_REQ] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_STOP] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_LOAD_AHRS_PAR] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_READ_AHRS_PAR] = { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_LOW_POWER_ON] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_LOW_POWER_OFF] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_GET_VER_FIRMWARE] = { ILAHRS_PAYLOAD_FIRMWARE_VERSION, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_GET_BIT] = { ILAHRS_PAYLOAD_BIT_RESULT, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_START_2D_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_START_2D2T_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_START_3D_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_START_CLB_RUN] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_STOP_CLB_RUN] = { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT },
+    [ILAHRS_COMMAND_FINISH_CLB] = { ILAHRS_PAYLOAD_CALIBRATION_RESULT, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_ACCEPT_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_EXIT_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_CLEAR_CLB] = { ILAHRS_PAYLOAD_NONE, ILAHRS_PAYLOAD_NONE },
+    [ILAHRS_COMMAND_GET_CLB_RES] = { ILAHRS_PAYLOAD_CALIBRATION_STATUS, ILAHRS_PAYLOAD_NONE },
 };
 
 /* Commands ordered by code, then ICD name: command_decode() reports all with one code. */
 static const uint8_t ilahrs_commands_by_code[ILAHRS_COMMAND_COUNT] = {
-    ILAHRS_COMMAND_GET_BIT, /* 0x1A GetBIT */
-    ILAHRS_COMMAND_GET_VER_FIRMWARE, /* 0x1F GetVerFirmware */
-    ILAHRS_COMMAND_STOP_CLB_RUN, /* 0x20 StopClbRun */
-    ILAHRS_COMMAND_START_2D_CLB, /* 0x21 Start2DClb */
-    ILAHRS_COMMAND_START_2D2T_CLB, /* 0x22 Start2D2TClb */
-    ILAHRS_COMMAND_START_3D_CLB, /* 0x23 Start3DClb */
-    ILAHRS_COMMAND_GET_CLB_RES, /* 0x2A GetClbRes */
-    ILAHRS_COMMAND_START_CLB_RUN, /* 0x2B StartClbRun */
-    ILAHRS_COMMAND_FINISH_CLB, /* 0x2C FinishClb */
-    ILAHRS_COMMAND_ACCEPT_CLB, /* 0x2E AcceptClb */
-    ILAHRS_COMMAND_CLEAR_CLB, /* 0x2F ClearClb */
-    ILAHRS_COMMAND_LOAD_AHRS_PAR, /* 0x40 LoadAHRSPar */
-    ILAHRS_COMMAND_READ_AHRS_PAR, /* 0x41 ReadAHRSPar */
-    ILAHRS_COMMAND_AHRS_CONT1, /* 0x80 AHRScont1 */
-    ILAHRS_COMMAND_AHRS_CONT2, /* 0x82 AHRScont2 */
-    ILAHRS_COMMAND_AHRS_CONT3, /* 0x83 AHRScont3 */
-    ILAHRS_COMMAND_AHRS_REQ1, /* 0x84 AHRSreq1 */
-    ILAHRS_COMMAND_AHRS_REQ2, /* 0x86 AHRSreq2 */
-    ILAHRS_COMMAND_AHRS_REQ3, /* 0x87 AHRSreq3 */
-    ILAHRS_COMMAND_NMEA_CONT, /* 0x88 NMEAcont */
-    ILAHRS_COMMAND_NMEA_REQ, /* 0x89 NMEAreq */
-    ILAHRS_COMMAND_LOW_POWER_ON, /* 0xB0 LowPowerOn */
-    ILAHRS_COMMAND_LOW_POWER_OFF, /* 0xBA LowPowerOff */
-    ILAHRS_COMMAND_GET_DATA_REQ, /* 0xCA GetDataReq */
-    ILAHRS_COMMAND_EXIT_CLB, /* 0xFE ExitClb */
-    ILAHRS_COMMAND_STOP, /* 0xFE Stop */
+    ILAHRS_COMMAND_GET_BIT,        ILAHRS_COMMAND_GET_VER_FIRMWARE,
+    ILAHRS_COMMAND_STOP_CLB_RUN,   ILAHRS_COMMAND_START_2D_CLB,
+    ILAHRS_COMMAND_START_2D2T_CLB, ILAHRS_COMMAND_START_3D_CLB,
+    ILAHRS_COMMAND_GET_CLB_RES,    ILAHRS_COMMAND_START_CLB_RUN,
+    ILAHRS_COMMAND_FINISH_CLB,     ILAHRS_COMMAND_ACCEPT_CLB,
+    ILAHRS_COMMAND_CLEAR_CLB,      ILAHRS_COMMAND_LOAD_AHRS_PAR,
+    ILAHRS_COMMAND_READ_AHRS_PAR,  ILAHRS_COMMAND_AHRS_CONT1,
+    ILAHRS_COMMAND_AHRS_CONT2,     ILAHRS_COMMAND_AHRS_CONT3,
+    ILAHRS_COMMAND_AHRS_REQ1,      ILAHRS_COMMAND_AHRS_REQ2,
+    ILAHRS_COMMAND_AHRS_REQ3,      ILAHRS_COMMAND_NMEA_CONT,
+    ILAHRS_COMMAND_NMEA_REQ,       ILAHRS_COMMAND_LOW_POWER_ON,
+    ILAHRS_COMMAND_LOW_POWER_OFF,  ILAHRS_COMMAND_GET_DATA_REQ,
+    ILAHRS_COMMAND_EXIT_CLB,       ILAHRS_COMMAND_STOP,
 };
 
 /* The meaning of a shared code in a mode where none of its names is valid (E14). */
 #define CODE_DEFAULT_COUNT 1u
 static const uint8_t ilahrs_code_defaults[1] = { ILAHRS_COMMAND_STOP };
 
-/* Variant parameters (KG, KA). */
-static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][2] = {
-    { 100, 10000 }, /* g300_a2_tmga */
-    { 100, 5000 }, /* g300_a6_tmga */
-    { 50, 10000 }, /* sn_11ac0001_0009 */
-    { 100, 10000 }, /* g300_a2_tga */
+/* Variant parameters: KG, KA. */
+#define VARIANT_PARAMETER_COUNT 2u
+static const int32_t ilahrs_variant_values[ILAHRS_VARIANT_COUNT][VARIANT_PARAMETER_COUNT] = {
+    [ILAHRS_VARIANT_G300_A2_TMGA] = { [ILAHRS_PARAMETER_KG] = 100, [ILAHRS_PARAMETER_KA] = 10000, },
+    [ILAHRS_VARIANT_G300_A6_TMGA] = { [ILAHRS_PARAMETER_KG] = 100, [ILAHRS_PARAMETER_KA] = 5000, },
+    [ILAHRS_VARIANT_SN_11AC0001_0009] = { [ILAHRS_PARAMETER_KG] = 50, [ILAHRS_PARAMETER_KA] = 10000, },
+    [ILAHRS_VARIANT_G300_A2_TGA] = { [ILAHRS_PARAMETER_KG] = 100, [ILAHRS_PARAMETER_KA] = 10000, },
 };
-
 
 /* Builder checks, inclusive; row 0 of each table means "no check: the C type is the range".
- * Integer fields compare as integers; float fields compare their float32 value with the
- * float32 roundings of the bounds, and ilahrs_field_check() compares a double with the exact
- * bounds (a double within them always rounds to a float32 within the rounded ones). */
+ * Integer fields compare as integers; float fields compare their float32 value, by float_key(),
+ * with the float32 roundings of the bounds (exact, and no floating-point code linked), and
+ * ilahrs_field_check() compares a double with the exact bounds as double keys. */
 static const int32_t ilahrs_int_bounds[11][2] = {
-    { 0, 0 },
-    { 0, 35999u },
-    { (-9000), 9000 },
-    { (-18000), 18000 },
-    { (-10000), 10000 },
-    { 1, 100 },
-    { 1, 65535u },
-    { 1, 3 },
-    { 0, 100 },
-    { 2, 2 },
-    { 1, 255 },
+    { 0, 0 }, { 0, 35999u }, { (-9000), 9000 }, { (-18000), 18000 }, { (-10000), 10000 }, { 1, 100 }, { 1, 65535u },
+    { 1, 3 }, { 0, 100 },    { 2, 2 },          { 1, 255 },
 };
 
-/* Float bounds as the keys of their float32 roundings (float_key()), so that a builder checks a
- * float with integer compares: exact, and no floating-point code linked. */
 static const int32_t ilahrs_float_bounds[8][2] = {
-    { 0, 0 }, /* 0.0f .. 0.0f */
+    { 0, 0 },                      /* 0.0f .. 0.0f */
     { (-2139095039), 2139095039 }, /* (-3.4028234663852886e+38f) .. 3.4028234663852886e+38f */
-    { 0, 1135869952 }, /* 0.0f .. 360.0f */
+    { 0, 1135869952 },             /* 0.0f .. 360.0f */
     { (-1127481344), 1127481344 }, /* (-180.0f) .. 180.0f */
     { (-1119092736), 1119092736 }, /* (-90.0f) .. 90.0f */
     { (-1184645120), 1203982336 }, /* (-20000.0f) .. 100000.0f */
-    { 1156415510, 1158250503 }, /* 1900.002685546875f .. 2200.001708984375f */
+    { 1156415510, 1158250503 },    /* 1900.002685546875f .. 2200.001708984375f */
     { (-1135869952), 1135869952 }, /* (-360.0f) .. 360.0f */
 };
 
+static const int64_t ilahrs_exact_bounds[8][2] = {
+    { 0ll, 0ll },                                        /* 0.0 .. 0.0 */
+    { (-5183643170566569984ll), 5183643170566569984ll }, /* (-3.4028234663852886e+38) .. 3.4028234663852886e+38 */
+    { 0ll, 4645040803167600640ll },                      /* 0.0 .. 360.0 */
+    { (-4640537203540230144ll), 4640537203540230144ll }, /* (-180.0) .. 180.0 */
+    { (-4636033603912859648ll), 4636033603912859648ll }, /* (-90.0) .. 90.0 */
+    { (-4671226772094713856ll), 4681608360884174848ll }, /* (-20000.0) .. 100000.0 */
+    { 4656071115628609536ll, 4657056269994033152ll },    /* 1900.002685546875 .. 2200.001708984375 */
+    { (-4645040803167600640ll), 4645040803167600640ll }, /* (-360.0) .. 360.0 */
+};
 
-/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides.
- * Each column has the smallest type that holds it. */
+/* The declination rule as float keys and as double keys of the header's float constants. */
+#define DECLINATION_MIN_KEY (-1127481344)
+#define DECLINATION_MAX_KEY 1127481344
+#define DECLINATION_COMPUTE_ABOVE_KEY 1135869952
+#define DECLINATION_MIN_DKEY (-4640537203540230144ll)
+#define DECLINATION_MAX_DKEY 4640537203540230144ll
+#define DECLINATION_COMPUTE_ABOVE_DKEY 4645040803167600640ll
+
+/* Engineering scales: raw * multiplier / divisor; with a parameter, the variant's value divides. */
+#define NO_PARAMETER 255
 static const struct {
     uint16_t divisor;
     uint8_t multiplier;
     uint8_t parameter;
 } ilahrs_scales[8] = {
-    { 1, 1, 255 },
-    { 100, 1, 255 },
-    { 1000, 1, 255 },
-    { 10000, 1, 255 },
-    { 10, 1, 255 },
-    { 0, 1, 0 },
-    { 0, 1, 1 },
-    { 1, 10, 255 },
+    {
+        .divisor = 1,
+        .multiplier = 1,
+        .parameter = 255,
+    },
+    {
+        .divisor = 100,
+        .multiplier = 1,
+        .parameter = 255,
+    },
+    {
+        .divisor = 1000,
+        .multiplier = 1,
+        .parameter = 255,
+    },
+    {
+        .divisor = 10000,
+        .multiplier = 1,
+        .parameter = 255,
+    },
+    {
+        .divisor = 10,
+        .multiplier = 1,
+        .parameter = 255,
+    },
+    {
+        .divisor = 0,
+        .multiplier = 1,
+        .parameter = 0,
+    },
+    {
+        .divisor = 0,
+        .multiplier = 1,
+        .parameter = 1,
+    },
+    {
+        .divisor = 1,
+        .multiplier = 10,
+        .parameter = 255,
+    },
 };
 
-/* ilahrs_field_info_t, unpacked. A field's type is its wire kind, an encoding a builder checks
- * beyond a range and the log2 of a number's size; char and reserved (the last kinds) are arrays,
- * whose info is their size. A number's info is its builder bounds and its engineering scale. */
+/* Every payload field, table after table, in wire order (runtime/rows.h). */
 #define KIND_BITS 3u
 #define ENCODING_BITS 1u
 #define TYPE_BITS 6u
 #define OFFSET_BITS 6u
 #define BOUNDS_BITS 4u
-#define FIELD_KIND(f) ((unsigned)(f)->name_type & ((1u << KIND_BITS) - 1u))
-#define FIELD_ENCODING(f) (((unsigned)(f)->name_type >> KIND_BITS) & ((1u << ENCODING_BITS) - 1u))
-#define FIELD_NAME_AT(f) ((unsigned)(f)->name_type >> TYPE_BITS)
-#define FIELD_IS_ARRAY(f) (FIELD_KIND(f) >= ILAHRS_KIND_CHAR)
-#define FIELD_ARRAY_SIZE(f) ((unsigned)(f)->info)
-#define FIELD_NUMBER_SIZE(f) (1u << (((unsigned)(f)->name_type & ((1u << TYPE_BITS) - 1u)) >> (KIND_BITS + ENCODING_BITS)))
-#define FIELD_SIZE(f) (FIELD_IS_ARRAY(f) ? FIELD_ARRAY_SIZE(f) : FIELD_NUMBER_SIZE(f))
-#define FIELD_OFFSET(f) ((unsigned)(f)->place & ((1u << OFFSET_BITS) - 1u))
-#define FIELD_MEMBER(f) (FIELD_OFFSET(f) + ((unsigned)(f)->place >> OFFSET_BITS))
-#define FIELD_BOUNDS(f) ((unsigned)(f)->info & ((1u << BOUNDS_BITS) - 1u))
-#define FIELD_SCALE(f) ((unsigned)(f)->info >> BOUNDS_BITS)
 #define ENCODING_NONE 0u
 #define ENCODING_DECLINATION 1u
-#define NO_PARAMETER 255
-
-/* Every payload field, table after table, in wire order: name and type, wire offset and the
- * padding before its struct member, array size or bounds and scale. */
 static const ilahrs_field_info_t ilahrs_fields[131] = {
+    /* NUMBER(name, kind, encoding, size, offset, member, bounds, scale); ARRAY(name, kind, size, offset, member) */
     /* full_output (Table 6.4) */
-    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (0u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 0 }, /* ugyro_x */
-    { (8u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 0 }, /* ugyro_y */
-    { (16u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 0 }, /* ugyro_z */
-    { (24u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 0 }, /* uacc_x */
-    { (31u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 14, 0 }, /* uacc_y */
-    { (38u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 16, 0 }, /* uacc_z */
-    { (45u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 18, 0 }, /* umag_x */
-    { (52u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 20, 0 }, /* umag_y */
-    { (59u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 22, 0 }, /* umag_z */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 24, 4 }, /* reserved */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
-    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 }, /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
+    NUMBER(0, SIGNED, NONE, 2, 6, 6, 0, 0),      /* ugyro_x */
+    NUMBER(8, SIGNED, NONE, 2, 8, 8, 0, 0),      /* ugyro_y */
+    NUMBER(16, SIGNED, NONE, 2, 10, 10, 0, 0),   /* ugyro_z */
+    NUMBER(24, SIGNED, NONE, 2, 12, 12, 0, 0),   /* uacc_x */
+    NUMBER(31, SIGNED, NONE, 2, 14, 14, 0, 0),   /* uacc_y */
+    NUMBER(38, SIGNED, NONE, 2, 16, 16, 0, 0),   /* uacc_z */
+    NUMBER(45, SIGNED, NONE, 2, 18, 18, 0, 0),   /* umag_x */
+    NUMBER(52, SIGNED, NONE, 2, 20, 20, 0, 0),   /* umag_y */
+    NUMBER(59, SIGNED, NONE, 2, 22, 22, 0, 0),   /* umag_z */
+    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 0),   /* utermo */
     /* quaternion (Table 6.5) */
-    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (90u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 4 | (3u << BOUNDS_BITS) }, /* lk0 */
-    { (94u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 4 | (3u << BOUNDS_BITS) }, /* lk1 */
-    { (98u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 4 | (3u << BOUNDS_BITS) }, /* lk2 */
-    { (102u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 4 | (3u << BOUNDS_BITS) }, /* lk3 */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 14, 14 }, /* reserved */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
-    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 | (4u << BOUNDS_BITS) }, /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
+    NUMBER(90, SIGNED, NONE, 2, 6, 6, 4, 3),     /* lk0 */
+    NUMBER(94, SIGNED, NONE, 2, 8, 8, 4, 3),     /* lk1 */
+    NUMBER(98, SIGNED, NONE, 2, 10, 10, 4, 3),   /* lk2 */
+    NUMBER(102, SIGNED, NONE, 2, 12, 12, 4, 3),  /* lk3 */
+    ARRAY(66, RESERVED, 14, 14, 14),             /* reserved */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo */
     /* orientation_sensors (Table 6.6) */
-    { (234u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 1 | (1u << BOUNDS_BITS) }, /* heading */
-    { (263u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 2, 2 | (1u << BOUNDS_BITS) }, /* pitch */
-    { (250u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 4, 3 | (1u << BOUNDS_BITS) }, /* roll */
-    { (1u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 6, 0 | (5u << BOUNDS_BITS) }, /* gyro_x */
-    { (9u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 8, 0 | (5u << BOUNDS_BITS) }, /* gyro_y */
-    { (17u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 10, 0 | (5u << BOUNDS_BITS) }, /* gyro_z */
-    { (25u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 12, 0 | (6u << BOUNDS_BITS) }, /* acc_x */
-    { (32u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 14, 0 | (6u << BOUNDS_BITS) }, /* acc_y */
-    { (39u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 16, 0 | (6u << BOUNDS_BITS) }, /* acc_z */
-    { (46u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 18, 0 | (7u << BOUNDS_BITS) }, /* mag_x */
-    { (53u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 20, 0 | (7u << BOUNDS_BITS) }, /* mag_y */
-    { (60u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 22, 0 | (7u << BOUNDS_BITS) }, /* mag_z */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 24, 4 }, /* reserved */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
-    { (79u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 30, 0 | (2u << BOUNDS_BITS) }, /* vdd */
-    { (83u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 32, 0 | (4u << BOUNDS_BITS) }, /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
+    NUMBER(1, SIGNED, NONE, 2, 6, 6, 0, 5),      /* gyro_x */
+    NUMBER(9, SIGNED, NONE, 2, 8, 8, 0, 5),      /* gyro_y */
+    NUMBER(17, SIGNED, NONE, 2, 10, 10, 0, 5),   /* gyro_z */
+    NUMBER(25, SIGNED, NONE, 2, 12, 12, 0, 6),   /* acc_x */
+    NUMBER(32, SIGNED, NONE, 2, 14, 14, 0, 6),   /* acc_y */
+    NUMBER(39, SIGNED, NONE, 2, 16, 16, 0, 6),   /* acc_z */
+    NUMBER(46, SIGNED, NONE, 2, 18, 18, 0, 7),   /* mag_x */
+    NUMBER(53, SIGNED, NONE, 2, 20, 20, 0, 7),   /* mag_y */
+    NUMBER(60, SIGNED, NONE, 2, 22, 22, 0, 7),   /* mag_z */
+    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo */
     /* initial_alignment (Table 6.8) */
-    { (106u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 0, 1 }, /* gyro_bias_x */
-    { (118u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* gyro_bias_y */
-    { (130u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* gyro_bias_z */
-    { (142u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* average_acc_x */
-    { (156u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* average_acc_y */
-    { (170u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* average_acc_z */
-    { (184u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* average_mag_x */
-    { (198u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* average_mag_y */
-    { (212u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* average_mag_z */
-    { (226u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 2 }, /* initial_heading */
-    { (242u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 3 }, /* initial_roll */
-    { (255u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 4 }, /* initial_pitch */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 48, 0 }, /* usw */
+    NUMBER(106, FLOAT, NONE, 4, 0, 0, 1, 0),     /* gyro_bias_x */
+    NUMBER(118, FLOAT, NONE, 4, 4, 4, 1, 0),     /* gyro_bias_y */
+    NUMBER(130, FLOAT, NONE, 4, 8, 8, 1, 0),     /* gyro_bias_z */
+    NUMBER(142, FLOAT, NONE, 4, 12, 12, 1, 0),   /* average_acc_x */
+    NUMBER(156, FLOAT, NONE, 4, 16, 16, 1, 0),   /* average_acc_y */
+    NUMBER(170, FLOAT, NONE, 4, 20, 20, 1, 0),   /* average_acc_z */
+    NUMBER(184, FLOAT, NONE, 4, 24, 24, 1, 0),   /* average_mag_x */
+    NUMBER(198, FLOAT, NONE, 4, 28, 28, 1, 0),   /* average_mag_y */
+    NUMBER(212, FLOAT, NONE, 4, 32, 32, 1, 0),   /* average_mag_z */
+    NUMBER(226, FLOAT, NONE, 4, 36, 36, 2, 0),   /* initial_heading */
+    NUMBER(242, FLOAT, NONE, 4, 40, 40, 3, 0),   /* initial_roll */
+    NUMBER(255, FLOAT, NONE, 4, 44, 44, 4, 0),   /* initial_pitch */
+    NUMBER(75, UNSIGNED, NONE, 2, 48, 48, 0, 0), /* usw */
     /* ahrs_parameters_load (Table 6.9) */
-    { (269u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 5 }, /* update_rate */
-    { (281u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 6 }, /* alignment_time */
-    { (296u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_DECLINATION << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* declination */
-    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* latitude */
-    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* longitude */
-    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 5 }, /* altitude */
-    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 6 }, /* date */
-    { (341u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 7 }, /* alignment_angle_a1 */
-    { (360u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 7 }, /* alignment_angle_a2 */
-    { (379u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 7 }, /* alignment_angle_a3 */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 36, 14 }, /* reserved */
+    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate */
+    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time */
+    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination */
+    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude */
+    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude */
+    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude */
+    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date */
+    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1 */
+    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2 */
+    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3 */
+    ARRAY(66, RESERVED, 14, 36, 36),                /* reserved */
     /* ahrs_parameters_read (Table 6.10) */
-    { (269u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 5 }, /* update_rate */
-    { (281u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 6 }, /* alignment_time */
-    { (296u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_DECLINATION << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* declination */
-    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* latitude */
-    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* longitude */
-    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 5 }, /* altitude */
-    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 6 }, /* date */
-    { (341u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 7 }, /* alignment_angle_a1 */
-    { (360u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 7 }, /* alignment_angle_a2 */
-    { (379u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 7 }, /* alignment_angle_a3 */
-    { (398u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_CHAR, (0u << OFFSET_BITS) | 36, 8 }, /* device_id */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (1u << OFFSET_BITS) | 44, 6 }, /* reserved */
+    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate */
+    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time */
+    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination */
+    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude */
+    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude */
+    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude */
+    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date */
+    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1 */
+    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2 */
+    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3 */
+    ARRAY(398, CHAR, 8, 36, 36),                    /* device_id */
+    ARRAY(66, RESERVED, 6, 44, 45),                 /* reserved */
     /* firmware_version (Table 6.11) */
-    { (408u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_CHAR, (0u << OFFSET_BITS) | 0, 50 }, /* version */
+    ARRAY(408, CHAR, 50, 0, 0), /* version */
     /* bit_result (Table 6.12) */
-    { (416u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_SIGNED, (0u << OFFSET_BITS) | 0, 0 | (1u << BOUNDS_BITS) }, /* utermo100 */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 0 }, /* usw */
+    NUMBER(416, SIGNED, NONE, 2, 0, 0, 0, 1),  /* utermo100 */
+    NUMBER(75, UNSIGNED, NONE, 2, 2, 2, 0, 0), /* usw */
     /* calibration_parameters (Table 6.13) */
-    { (426u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 0, 7 }, /* reference_azimuth */
-    { (444u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 4, 6 }, /* accumulation_time */
-    { (308u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 6, 4 }, /* latitude */
-    { (317u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 10, 3 }, /* longitude */
-    { (327u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 14, 5 }, /* altitude */
-    { (336u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (2u << OFFSET_BITS) | 18, 6 }, /* date */
+    NUMBER(426, FLOAT, NONE, 4, 0, 0, 7, 0),    /* reference_azimuth */
+    NUMBER(444, UNSIGNED, NONE, 2, 4, 4, 6, 0), /* accumulation_time */
+    NUMBER(308, FLOAT, NONE, 4, 6, 8, 4, 0),    /* latitude */
+    NUMBER(317, FLOAT, NONE, 4, 10, 12, 3, 0),  /* longitude */
+    NUMBER(327, FLOAT, NONE, 4, 14, 16, 5, 0),  /* altitude */
+    NUMBER(336, FLOAT, NONE, 4, 18, 20, 6, 0),  /* date */
     /* calibration_result (Table 6.14) */
-    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 7 }, /* calibration_type */
-    { (479u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 0 }, /* runs_used */
-    { (489u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 8 }, /* data_used */
-    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
-    { (507u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* tm_c_11 */
-    { (515u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* tm_c_12 */
-    { (523u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* tm_c_13 */
-    { (531u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* tm_c_21 */
-    { (539u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* tm_c_22 */
-    { (547u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* tm_c_23 */
-    { (555u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* tm_c_31 */
-    { (563u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* tm_c_32 */
-    { (571u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 1 }, /* tm_c_33 */
-    { (579u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 1 }, /* hm_0_x */
-    { (586u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 1 }, /* hm_0_y */
-    { (593u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 48, 1 }, /* hm_0_z */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 7, 0), /* calibration_type */
+    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used */
+    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0), /* data_used */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success */
+    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11 */
+    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12 */
+    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13 */
+    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21 */
+    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22 */
+    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23 */
+    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31 */
+    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32 */
+    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33 */
+    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x */
+    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y */
+    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z */
     /* calibration_run_result (Table 6.15) */
-    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 9 }, /* calibration_type */
-    { (600u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 10 }, /* run */
-    { (489u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 2, 8 }, /* data_used */
-    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
-    { (604u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 4, 4 }, /* reserved_1 */
-    { (615u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 4 }, /* average_pitch */
-    { (629u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 3 }, /* average_roll */
-    { (642u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 16, 12 }, /* reserved_2 */
-    { (75u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 28, 0 }, /* usw */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 9, 0),  /* calibration_type */
+    NUMBER(600, UNSIGNED, NONE, 1, 1, 1, 10, 0), /* run */
+    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0),  /* data_used */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0),  /* success */
+    ARRAY(604, RESERVED, 4, 4, 4),               /* reserved_1 */
+    NUMBER(615, FLOAT, NONE, 4, 8, 8, 4, 0),     /* average_pitch */
+    NUMBER(629, FLOAT, NONE, 4, 12, 12, 3, 0),   /* average_roll */
+    ARRAY(642, RESERVED, 12, 16, 16),            /* reserved_2 */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
     /* calibration_run_parameters (Table 6.16) */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 0, 6 }, /* reserved */
+    ARRAY(66, RESERVED, 6, 0, 0), /* reserved */
     /* calibration_status (Table 6.17) */
-    { (462u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 0 }, /* calibration_type */
-    { (479u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 1, 0 }, /* runs_used */
-    { (66u << TYPE_BITS) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_RESERVED, (0u << OFFSET_BITS) | 2, 1 }, /* reserved */
-    { (499u << TYPE_BITS) | (0u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 3, 0 }, /* success */
-    { (507u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 4, 1 }, /* tm_c_11 */
-    { (515u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 8, 1 }, /* tm_c_12 */
-    { (523u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 12, 1 }, /* tm_c_13 */
-    { (531u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 16, 1 }, /* tm_c_21 */
-    { (539u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 20, 1 }, /* tm_c_22 */
-    { (547u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 24, 1 }, /* tm_c_23 */
-    { (555u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 28, 1 }, /* tm_c_31 */
-    { (563u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 32, 1 }, /* tm_c_32 */
-    { (571u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 36, 1 }, /* tm_c_33 */
-    { (579u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 40, 1 }, /* hm_0_x */
-    { (586u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 44, 1 }, /* hm_0_y */
-    { (593u << TYPE_BITS) | (2u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_FLOAT, (0u << OFFSET_BITS) | 48, 1 }, /* hm_0_z */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 0, 0), /* calibration_type */
+    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used */
+    ARRAY(66, RESERVED, 1, 2, 2),               /* reserved */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success */
+    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11 */
+    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12 */
+    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13 */
+    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21 */
+    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22 */
+    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23 */
+    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31 */
+    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32 */
+    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33 */
+    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x */
+    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y */
+    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    { (653u << TYPE_BITS) | (1u << (KIND_BITS + ENCODING_BITS)) | (ENCODING_NONE << KIND_BITS) | ILAHRS_KIND_UNSIGNED, (0u << OFFSET_BITS) | 0, 0 }, /* checksum */
+    NUMBER(653, UNSIGNED, NONE, 2, 0, 0, 0, 0), /* checksum */
 };
 
 static const struct {
     uint8_t size;
     uint8_t field_count;
     uint8_t first_field;
-    uint8_t struct_size; /* checked below */
+    uint8_t struct_size;
 } ilahrs_payloads[ILAHRS_PAYLOAD_COUNT] = {
-    { 34, 16, 0, (uint8_t)sizeof(ilahrs_full_output_t) },
-    { 34, 11, 16, (uint8_t)sizeof(ilahrs_quaternion_t) },
-    { 34, 16, 27, (uint8_t)sizeof(ilahrs_orientation_sensors_t) },
-    { 50, 13, 43, (uint8_t)sizeof(ilahrs_initial_alignment_t) },
-    { 50, 11, 56, (uint8_t)sizeof(ilahrs_ahrs_parameters_load_t) },
-    { 50, 12, 67, (uint8_t)sizeof(ilahrs_ahrs_parameters_read_t) },
-    { 50, 1, 79, (uint8_t)sizeof(ilahrs_firmware_version_t) },
-    { 4, 2, 80, (uint8_t)sizeof(ilahrs_bit_result_t) },
-    { 22, 6, 82, (uint8_t)sizeof(ilahrs_calibration_parameters_t) },
-    { 52, 16, 88, (uint8_t)sizeof(ilahrs_calibration_result_t) },
-    { 30, 9, 104, (uint8_t)sizeof(ilahrs_calibration_run_result_t) },
-    { 6, 1, 113, (uint8_t)sizeof(ilahrs_calibration_run_parameters_t) },
-    { 52, 16, 114, (uint8_t)sizeof(ilahrs_calibration_status_t) },
-    { 2, 1, 130, (uint8_t)sizeof(ilahrs_acknowledgement_t) },
+    [ILAHRS_PAYLOAD_FULL_OUTPUT] = { .size = 34,
+                                     .field_count = 16,
+                                     .first_field = 0,
+                                     .struct_size = sizeof(ilahrs_full_output_t) },
+    [ILAHRS_PAYLOAD_QUATERNION] = { .size = 34,
+                                    .field_count = 11,
+                                    .first_field = 16,
+                                    .struct_size = sizeof(ilahrs_quaternion_t) },
+    [ILAHRS_PAYLOAD_ORIENTATION_SENSORS] = { .size = 34,
+                                             .field_count = 16,
+                                             .first_field = 27,
+                                             .struct_size = sizeof(ilahrs_orientation_sensors_t) },
+    [ILAHRS_PAYLOAD_INITIAL_ALIGNMENT] = { .size = 50,
+                                           .field_count = 13,
+                                           .first_field = 43,
+                                           .struct_size = sizeof(ilahrs_initial_alignment_t) },
+    [ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD] = { .size = 50,
+                                              .field_count = 11,
+                                              .first_field = 56,
+                                              .struct_size = sizeof(ilahrs_ahrs_parameters_load_t) },
+    [ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ] = { .size = 50,
+                                              .field_count = 12,
+                                              .first_field = 67,
+                                              .struct_size = sizeof(ilahrs_ahrs_parameters_read_t) },
+    [ILAHRS_PAYLOAD_FIRMWARE_VERSION] = { .size = 50,
+                                          .field_count = 1,
+                                          .first_field = 79,
+                                          .struct_size = sizeof(ilahrs_firmware_version_t) },
+    [ILAHRS_PAYLOAD_BIT_RESULT] = { .size = 4,
+                                    .field_count = 2,
+                                    .first_field = 80,
+                                    .struct_size = sizeof(ilahrs_bit_result_t) },
+    [ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS] = { .size = 22,
+                                                .field_count = 6,
+                                                .first_field = 82,
+                                                .struct_size = sizeof(ilahrs_calibration_parameters_t) },
+    [ILAHRS_PAYLOAD_CALIBRATION_RESULT] = { .size = 52,
+                                            .field_count = 16,
+                                            .first_field = 88,
+                                            .struct_size = sizeof(ilahrs_calibration_result_t) },
+    [ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT] = { .size = 30,
+                                                .field_count = 9,
+                                                .first_field = 104,
+                                                .struct_size = sizeof(ilahrs_calibration_run_result_t) },
+    [ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS] = { .size = 6,
+                                                    .field_count = 1,
+                                                    .first_field = 113,
+                                                    .struct_size = sizeof(ilahrs_calibration_run_parameters_t) },
+    [ILAHRS_PAYLOAD_CALIBRATION_STATUS] = { .size = 52,
+                                            .field_count = 16,
+                                            .first_field = 114,
+                                            .struct_size = sizeof(ilahrs_calibration_status_t) },
+    [ILAHRS_PAYLOAD_ACKNOWLEDGEMENT] = { .size = 2,
+                                         .field_count = 1,
+                                         .first_field = 130,
+                                         .struct_size = sizeof(ilahrs_acknowledgement_t) },
 };
 
+/* The acknowledgement's table (ilahrs_ack_build()). */
+#define ACK_PAYLOAD ILAHRS_PAYLOAD_ACKNOWLEDGEMENT
+typedef ilahrs_acknowledgement_t ack_payload_t;
+
 /* Builder defaults other than zero (the spec default, else the lowest value the range allows):
- * the field's row, the text pool offset of a char field's text (0 for a number), or the
- * bits of a numeric field's member. Each column has the smallest type that holds it. */
+ * the field's row, and the text pool offset of a char field's text or the bits of a number's member. */
+#define DEFAULT_COUNT 11u
 static const struct {
     uint32_t bits;
     uint8_t field;
     uint8_t text;
 } ilahrs_defaults[11] = {
-    { 0x00000064u, 56, 0 }, /* ahrs_parameters_load.update_rate = 100 */
-    { 0x0000001Eu, 57, 0 }, /* ahrs_parameters_load.alignment_time = 30 */
-    { 0x44ED8016u, 62, 0 }, /* ahrs_parameters_load.date = 1900.002685546875f */
-    { 0x00000001u, 67, 0 }, /* ahrs_parameters_read.update_rate = 1 */
-    { 0x00000001u, 68, 0 }, /* ahrs_parameters_read.alignment_time = 1 */
-    { 0x44ED8016u, 73, 0 }, /* ahrs_parameters_read.date = 1900.002685546875f */
-    { 0x00000001u, 83, 0 }, /* calibration_parameters.accumulation_time = 1 */
-    { 0x44ED8016u, 87, 0 }, /* calibration_parameters.date = 1900.002685546875f */
-    { 0x00000001u, 88, 0 }, /* calibration_result.calibration_type = 1 */
-    { 0x00000002u, 104, 0 }, /* calibration_run_result.calibration_type = 2 */
-    { 0x00000001u, 105, 0 }, /* calibration_run_result.run = 1 */
+    { .field = 56, .bits = 0x00000064u },  /* ahrs_parameters_load.update_rate = 100 */
+    { .field = 57, .bits = 0x0000001Eu },  /* ahrs_parameters_load.alignment_time = 30 */
+    { .field = 62, .bits = 0x44ED8016u },  /* ahrs_parameters_load.date = 1900.002685546875f */
+    { .field = 67, .bits = 0x00000001u },  /* ahrs_parameters_read.update_rate = 1 */
+    { .field = 68, .bits = 0x00000001u },  /* ahrs_parameters_read.alignment_time = 1 */
+    { .field = 73, .bits = 0x44ED8016u },  /* ahrs_parameters_read.date = 1900.002685546875f */
+    { .field = 83, .bits = 0x00000001u },  /* calibration_parameters.accumulation_time = 1 */
+    { .field = 87, .bits = 0x44ED8016u },  /* calibration_parameters.date = 1900.002685546875f */
+    { .field = 88, .bits = 0x00000001u },  /* calibration_result.calibration_type = 1 */
+    { .field = 104, .bits = 0x00000002u }, /* calibration_run_result.calibration_type = 2 */
+    { .field = 105, .bits = 0x00000001u }, /* calibration_run_result.run = 1 */
 };
-#define DEFAULT_COUNT 11u
 
 /* C99 compile-time checks: struct sizes fit ilahrs_payloads, and each member lies where
  * ilahrs_fields says (the generator's natural alignment). */
-typedef char ilahrs_check_full_output[sizeof(ilahrs_full_output_t) <= 255
-    && offsetof(ilahrs_full_output_t, heading) == 0
-    && offsetof(ilahrs_full_output_t, pitch) == 2
-    && offsetof(ilahrs_full_output_t, roll) == 4
-    && offsetof(ilahrs_full_output_t, ugyro_x) == 6
-    && offsetof(ilahrs_full_output_t, ugyro_y) == 8
-    && offsetof(ilahrs_full_output_t, ugyro_z) == 10
-    && offsetof(ilahrs_full_output_t, uacc_x) == 12
-    && offsetof(ilahrs_full_output_t, uacc_y) == 14
-    && offsetof(ilahrs_full_output_t, uacc_z) == 16
-    && offsetof(ilahrs_full_output_t, umag_x) == 18
-    && offsetof(ilahrs_full_output_t, umag_y) == 20
-    && offsetof(ilahrs_full_output_t, umag_z) == 22
-    && offsetof(ilahrs_full_output_t, reserved) == 24
-    && offsetof(ilahrs_full_output_t, usw) == 28
-    && offsetof(ilahrs_full_output_t, vdd) == 30
-    && offsetof(ilahrs_full_output_t, utermo) == 32
-    ? 1 : -1];
-typedef char ilahrs_check_quaternion[sizeof(ilahrs_quaternion_t) <= 255
-    && offsetof(ilahrs_quaternion_t, heading) == 0
-    && offsetof(ilahrs_quaternion_t, pitch) == 2
-    && offsetof(ilahrs_quaternion_t, roll) == 4
-    && offsetof(ilahrs_quaternion_t, lk0) == 6
-    && offsetof(ilahrs_quaternion_t, lk1) == 8
-    && offsetof(ilahrs_quaternion_t, lk2) == 10
-    && offsetof(ilahrs_quaternion_t, lk3) == 12
-    && offsetof(ilahrs_quaternion_t, reserved) == 14
-    && offsetof(ilahrs_quaternion_t, usw) == 28
-    && offsetof(ilahrs_quaternion_t, vdd) == 30
-    && offsetof(ilahrs_quaternion_t, utermo) == 32
-    ? 1 : -1];
-typedef char ilahrs_check_orientation_sensors[sizeof(ilahrs_orientation_sensors_t) <= 255
-    && offsetof(ilahrs_orientation_sensors_t, heading) == 0
-    && offsetof(ilahrs_orientation_sensors_t, pitch) == 2
-    && offsetof(ilahrs_orientation_sensors_t, roll) == 4
-    && offsetof(ilahrs_orientation_sensors_t, gyro_x) == 6
-    && offsetof(ilahrs_orientation_sensors_t, gyro_y) == 8
-    && offsetof(ilahrs_orientation_sensors_t, gyro_z) == 10
-    && offsetof(ilahrs_orientation_sensors_t, acc_x) == 12
-    && offsetof(ilahrs_orientation_sensors_t, acc_y) == 14
-    && offsetof(ilahrs_orientation_sensors_t, acc_z) == 16
-    && offsetof(ilahrs_orientation_sensors_t, mag_x) == 18
-    && offsetof(ilahrs_orientation_sensors_t, mag_y) == 20
-    && offsetof(ilahrs_orientation_sensors_t, mag_z) == 22
-    && offsetof(ilahrs_orientation_sensors_t, reserved) == 24
-    && offsetof(ilahrs_orientation_sensors_t, usw) == 28
-    && offsetof(ilahrs_orientation_sensors_t, vdd) == 30
-    && offsetof(ilahrs_orientation_sensors_t, utermo) == 32
-    ? 1 : -1];
+typedef char ilahrs_check_full_output
+    [sizeof(ilahrs_full_output_t) <= 255 && offsetof(ilahrs_full_output_t, heading) == 0
+             && offsetof(ilahrs_full_output_t, pitch) == 2 && offsetof(ilahrs_full_output_t, roll) == 4
+             && offsetof(ilahrs_full_output_t, ugyro_x) == 6 && offsetof(ilahrs_full_output_t, ugyro_y) == 8
+             && offsetof(ilahrs_full_output_t, ugyro_z) == 10 && offsetof(ilahrs_full_output_t, uacc_x) == 12
+             && offsetof(ilahrs_full_output_t, uacc_y) == 14 && offsetof(ilahrs_full_output_t, uacc_z) == 16
+             && offsetof(ilahrs_full_output_t, umag_x) == 18 && offsetof(ilahrs_full_output_t, umag_y) == 20
+             && offsetof(ilahrs_full_output_t, umag_z) == 22 && offsetof(ilahrs_full_output_t, reserved) == 24
+             && offsetof(ilahrs_full_output_t, usw) == 28 && offsetof(ilahrs_full_output_t, vdd) == 30
+             && offsetof(ilahrs_full_output_t, utermo) == 32
+         ? 1
+         : -1];
+typedef char ilahrs_check_quaternion
+    [sizeof(ilahrs_quaternion_t) <= 255 && offsetof(ilahrs_quaternion_t, heading) == 0
+             && offsetof(ilahrs_quaternion_t, pitch) == 2 && offsetof(ilahrs_quaternion_t, roll) == 4
+             && offsetof(ilahrs_quaternion_t, lk0) == 6 && offsetof(ilahrs_quaternion_t, lk1) == 8
+             && offsetof(ilahrs_quaternion_t, lk2) == 10 && offsetof(ilahrs_quaternion_t, lk3) == 12
+             && offsetof(ilahrs_quaternion_t, reserved) == 14 && offsetof(ilahrs_quaternion_t, usw) == 28
+             && offsetof(ilahrs_quaternion_t, vdd) == 30 && offsetof(ilahrs_quaternion_t, utermo) == 32
+         ? 1
+         : -1];
+typedef char ilahrs_check_orientation_sensors
+    [sizeof(ilahrs_orientation_sensors_t) <= 255 && offsetof(ilahrs_orientation_sensors_t, heading) == 0
+             && offsetof(ilahrs_orientation_sensors_t, pitch) == 2 && offsetof(ilahrs_orientation_sensors_t, roll) == 4
+             && offsetof(ilahrs_orientation_sensors_t, gyro_x) == 6
+             && offsetof(ilahrs_orientation_sensors_t, gyro_y) == 8
+             && offsetof(ilahrs_orientation_sensors_t, gyro_z) == 10
+             && offsetof(ilahrs_orientation_sensors_t, acc_x) == 12
+             && offsetof(ilahrs_orientation_sensors_t, acc_y) == 14
+             && offsetof(ilahrs_orientation_sensors_t, acc_z) == 16
+             && offsetof(ilahrs_orientation_sensors_t, mag_x) == 18
+             && offsetof(ilahrs_orientation_sensors_t, mag_y) == 20
+             && offsetof(ilahrs_orientation_sensors_t, mag_z) == 22
+             && offsetof(ilahrs_orientation_sensors_t, reserved) == 24
+             && offsetof(ilahrs_orientation_sensors_t, usw) == 28 && offsetof(ilahrs_orientation_sensors_t, vdd) == 30
+             && offsetof(ilahrs_orientation_sensors_t, utermo) == 32
+         ? 1
+         : -1];
 typedef char ilahrs_check_initial_alignment[sizeof(ilahrs_initial_alignment_t) <= 255
-    && offsetof(ilahrs_initial_alignment_t, gyro_bias_x) == 0
-    && offsetof(ilahrs_initial_alignment_t, gyro_bias_y) == 4
-    && offsetof(ilahrs_initial_alignment_t, gyro_bias_z) == 8
-    && offsetof(ilahrs_initial_alignment_t, average_acc_x) == 12
-    && offsetof(ilahrs_initial_alignment_t, average_acc_y) == 16
-    && offsetof(ilahrs_initial_alignment_t, average_acc_z) == 20
-    && offsetof(ilahrs_initial_alignment_t, average_mag_x) == 24
-    && offsetof(ilahrs_initial_alignment_t, average_mag_y) == 28
-    && offsetof(ilahrs_initial_alignment_t, average_mag_z) == 32
-    && offsetof(ilahrs_initial_alignment_t, initial_heading) == 36
-    && offsetof(ilahrs_initial_alignment_t, initial_roll) == 40
-    && offsetof(ilahrs_initial_alignment_t, initial_pitch) == 44
-    && offsetof(ilahrs_initial_alignment_t, usw) == 48
-    ? 1 : -1];
-typedef char ilahrs_check_ahrs_parameters_load[sizeof(ilahrs_ahrs_parameters_load_t) <= 255
-    && offsetof(ilahrs_ahrs_parameters_load_t, update_rate) == 0
-    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_time) == 2
-    && offsetof(ilahrs_ahrs_parameters_load_t, declination) == 4
-    && offsetof(ilahrs_ahrs_parameters_load_t, latitude) == 8
-    && offsetof(ilahrs_ahrs_parameters_load_t, longitude) == 12
-    && offsetof(ilahrs_ahrs_parameters_load_t, altitude) == 16
-    && offsetof(ilahrs_ahrs_parameters_load_t, date) == 20
-    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1) == 24
-    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2) == 28
-    && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3) == 32
-    && offsetof(ilahrs_ahrs_parameters_load_t, reserved) == 36
-    ? 1 : -1];
-typedef char ilahrs_check_ahrs_parameters_read[sizeof(ilahrs_ahrs_parameters_read_t) <= 255
-    && offsetof(ilahrs_ahrs_parameters_read_t, update_rate) == 0
-    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_time) == 2
-    && offsetof(ilahrs_ahrs_parameters_read_t, declination) == 4
-    && offsetof(ilahrs_ahrs_parameters_read_t, latitude) == 8
-    && offsetof(ilahrs_ahrs_parameters_read_t, longitude) == 12
-    && offsetof(ilahrs_ahrs_parameters_read_t, altitude) == 16
-    && offsetof(ilahrs_ahrs_parameters_read_t, date) == 20
-    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1) == 24
-    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2) == 28
-    && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3) == 32
-    && offsetof(ilahrs_ahrs_parameters_read_t, device_id) == 36
-    && offsetof(ilahrs_ahrs_parameters_read_t, reserved) == 45
-    ? 1 : -1];
-typedef char ilahrs_check_firmware_version[sizeof(ilahrs_firmware_version_t) <= 255
-    && offsetof(ilahrs_firmware_version_t, version) == 0
-    ? 1 : -1];
-typedef char ilahrs_check_bit_result[sizeof(ilahrs_bit_result_t) <= 255
-    && offsetof(ilahrs_bit_result_t, utermo100) == 0
-    && offsetof(ilahrs_bit_result_t, usw) == 2
-    ? 1 : -1];
-typedef char ilahrs_check_calibration_parameters[sizeof(ilahrs_calibration_parameters_t) <= 255
-    && offsetof(ilahrs_calibration_parameters_t, reference_azimuth) == 0
-    && offsetof(ilahrs_calibration_parameters_t, accumulation_time) == 4
-    && offsetof(ilahrs_calibration_parameters_t, latitude) == 8
-    && offsetof(ilahrs_calibration_parameters_t, longitude) == 12
-    && offsetof(ilahrs_calibration_parameters_t, altitude) == 16
-    && offsetof(ilahrs_calibration_parameters_t, date) == 20
-    ? 1 : -1];
+                                                    && offsetof(ilahrs_initial_alignment_t, gyro_bias_x) == 0
+                                                    && offsetof(ilahrs_initial_alignment_t, gyro_bias_y) == 4
+                                                    && offsetof(ilahrs_initial_alignment_t, gyro_bias_z) == 8
+                                                    && offsetof(ilahrs_initial_alignment_t, average_acc_x) == 12
+                                                    && offsetof(ilahrs_initial_alignment_t, average_acc_y) == 16
+                                                    && offsetof(ilahrs_initial_alignment_t, average_acc_z) == 20
+                                                    && offsetof(ilahrs_initial_alignment_t, average_mag_x) == 24
+                                                    && offsetof(ilahrs_initial_alignment_t, average_mag_y) == 28
+                                                    && offsetof(ilahrs_initial_alignment_t, average_mag_z) == 32
+                                                    && offsetof(ilahrs_initial_alignment_t, initial_heading) == 36
+                                                    && offsetof(ilahrs_initial_alignment_t, initial_roll) == 40
+                                                    && offsetof(ilahrs_initial_alignment_t, initial_pitch) == 44
+                                                    && offsetof(ilahrs_initial_alignment_t, usw) == 48
+                                                ? 1
+                                                : -1];
+typedef char
+    ilahrs_check_ahrs_parameters_load[sizeof(ilahrs_ahrs_parameters_load_t) <= 255
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, update_rate) == 0
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, alignment_time) == 2
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, declination) == 4
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, latitude) == 8
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, longitude) == 12
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, altitude) == 16
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, date) == 20
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a1) == 24
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a2) == 28
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, alignment_angle_a3) == 32
+                                              && offsetof(ilahrs_ahrs_parameters_load_t, reserved) == 36
+                                          ? 1
+                                          : -1];
+typedef char
+    ilahrs_check_ahrs_parameters_read[sizeof(ilahrs_ahrs_parameters_read_t) <= 255
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, update_rate) == 0
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, alignment_time) == 2
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, declination) == 4
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, latitude) == 8
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, longitude) == 12
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, altitude) == 16
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, date) == 20
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a1) == 24
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a2) == 28
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, alignment_angle_a3) == 32
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, device_id) == 36
+                                              && offsetof(ilahrs_ahrs_parameters_read_t, reserved) == 45
+                                          ? 1
+                                          : -1];
+typedef char ilahrs_check_firmware_version
+    [sizeof(ilahrs_firmware_version_t) <= 255 && offsetof(ilahrs_firmware_version_t, version) == 0 ? 1 : -1];
+typedef char ilahrs_check_bit_result[sizeof(ilahrs_bit_result_t) <= 255 && offsetof(ilahrs_bit_result_t, utermo100) == 0
+                                             && offsetof(ilahrs_bit_result_t, usw) == 2
+                                         ? 1
+                                         : -1];
+typedef char
+    ilahrs_check_calibration_parameters[sizeof(ilahrs_calibration_parameters_t) <= 255
+                                                && offsetof(ilahrs_calibration_parameters_t, reference_azimuth) == 0
+                                                && offsetof(ilahrs_calibration_parameters_t, accumulation_time) == 4
+                                                && offsetof(ilahrs_calibration_parameters_t, latitude) == 8
+                                                && offsetof(ilahrs_calibration_parameters_t, longitude) == 12
+                                                && offsetof(ilahrs_calibration_parameters_t, altitude) == 16
+                                                && offsetof(ilahrs_calibration_parameters_t, date) == 20
+                                            ? 1
+                                            : -1];
 typedef char ilahrs_check_calibration_result[sizeof(ilahrs_calibration_result_t) <= 255
-    && offsetof(ilahrs_calibration_result_t, calibration_type) == 0
-    && offsetof(ilahrs_calibration_result_t, runs_used) == 1
-    && offsetof(ilahrs_calibration_result_t, data_used) == 2
-    && offsetof(ilahrs_calibration_result_t, success) == 3
-    && offsetof(ilahrs_calibration_result_t, tm_c_11) == 4
-    && offsetof(ilahrs_calibration_result_t, tm_c_12) == 8
-    && offsetof(ilahrs_calibration_result_t, tm_c_13) == 12
-    && offsetof(ilahrs_calibration_result_t, tm_c_21) == 16
-    && offsetof(ilahrs_calibration_result_t, tm_c_22) == 20
-    && offsetof(ilahrs_calibration_result_t, tm_c_23) == 24
-    && offsetof(ilahrs_calibration_result_t, tm_c_31) == 28
-    && offsetof(ilahrs_calibration_result_t, tm_c_32) == 32
-    && offsetof(ilahrs_calibration_result_t, tm_c_33) == 36
-    && offsetof(ilahrs_calibration_result_t, hm_0_x) == 40
-    && offsetof(ilahrs_calibration_result_t, hm_0_y) == 44
-    && offsetof(ilahrs_calibration_result_t, hm_0_z) == 48
-    ? 1 : -1];
-typedef char ilahrs_check_calibration_run_result[sizeof(ilahrs_calibration_run_result_t) <= 255
-    && offsetof(ilahrs_calibration_run_result_t, calibration_type) == 0
-    && offsetof(ilahrs_calibration_run_result_t, run) == 1
-    && offsetof(ilahrs_calibration_run_result_t, data_used) == 2
-    && offsetof(ilahrs_calibration_run_result_t, success) == 3
-    && offsetof(ilahrs_calibration_run_result_t, reserved_1) == 4
-    && offsetof(ilahrs_calibration_run_result_t, average_pitch) == 8
-    && offsetof(ilahrs_calibration_run_result_t, average_roll) == 12
-    && offsetof(ilahrs_calibration_run_result_t, reserved_2) == 16
-    && offsetof(ilahrs_calibration_run_result_t, usw) == 28
-    ? 1 : -1];
-typedef char ilahrs_check_calibration_run_parameters[sizeof(ilahrs_calibration_run_parameters_t) <= 255
-    && offsetof(ilahrs_calibration_run_parameters_t, reserved) == 0
-    ? 1 : -1];
+                                                     && offsetof(ilahrs_calibration_result_t, calibration_type) == 0
+                                                     && offsetof(ilahrs_calibration_result_t, runs_used) == 1
+                                                     && offsetof(ilahrs_calibration_result_t, data_used) == 2
+                                                     && offsetof(ilahrs_calibration_result_t, success) == 3
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_11) == 4
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_12) == 8
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_13) == 12
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_21) == 16
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_22) == 20
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_23) == 24
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_31) == 28
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_32) == 32
+                                                     && offsetof(ilahrs_calibration_result_t, tm_c_33) == 36
+                                                     && offsetof(ilahrs_calibration_result_t, hm_0_x) == 40
+                                                     && offsetof(ilahrs_calibration_result_t, hm_0_y) == 44
+                                                     && offsetof(ilahrs_calibration_result_t, hm_0_z) == 48
+                                                 ? 1
+                                                 : -1];
+typedef char
+    ilahrs_check_calibration_run_result[sizeof(ilahrs_calibration_run_result_t) <= 255
+                                                && offsetof(ilahrs_calibration_run_result_t, calibration_type) == 0
+                                                && offsetof(ilahrs_calibration_run_result_t, run) == 1
+                                                && offsetof(ilahrs_calibration_run_result_t, data_used) == 2
+                                                && offsetof(ilahrs_calibration_run_result_t, success) == 3
+                                                && offsetof(ilahrs_calibration_run_result_t, reserved_1) == 4
+                                                && offsetof(ilahrs_calibration_run_result_t, average_pitch) == 8
+                                                && offsetof(ilahrs_calibration_run_result_t, average_roll) == 12
+                                                && offsetof(ilahrs_calibration_run_result_t, reserved_2) == 16
+                                                && offsetof(ilahrs_calibration_run_result_t, usw) == 28
+                                            ? 1
+                                            : -1];
+typedef char
+    ilahrs_check_calibration_run_parameters[sizeof(ilahrs_calibration_run_parameters_t) <= 255
+                                                    && offsetof(ilahrs_calibration_run_parameters_t, reserved) == 0
+                                                ? 1
+                                                : -1];
 typedef char ilahrs_check_calibration_status[sizeof(ilahrs_calibration_status_t) <= 255
-    && offsetof(ilahrs_calibration_status_t, calibration_type) == 0
-    && offsetof(ilahrs_calibration_status_t, runs_used) == 1
-    && offsetof(ilahrs_calibration_status_t, reserved) == 2
-    && offsetof(ilahrs_calibration_status_t, success) == 3
-    && offsetof(ilahrs_calibration_status_t, tm_c_11) == 4
-    && offsetof(ilahrs_calibration_status_t, tm_c_12) == 8
-    && offsetof(ilahrs_calibration_status_t, tm_c_13) == 12
-    && offsetof(ilahrs_calibration_status_t, tm_c_21) == 16
-    && offsetof(ilahrs_calibration_status_t, tm_c_22) == 20
-    && offsetof(ilahrs_calibration_status_t, tm_c_23) == 24
-    && offsetof(ilahrs_calibration_status_t, tm_c_31) == 28
-    && offsetof(ilahrs_calibration_status_t, tm_c_32) == 32
-    && offsetof(ilahrs_calibration_status_t, tm_c_33) == 36
-    && offsetof(ilahrs_calibration_status_t, hm_0_x) == 40
-    && offsetof(ilahrs_calibration_status_t, hm_0_y) == 44
-    && offsetof(ilahrs_calibration_status_t, hm_0_z) == 48
-    ? 1 : -1];
-typedef char ilahrs_check_acknowledgement[sizeof(ilahrs_acknowledgement_t) <= 255
-    && offsetof(ilahrs_acknowledgement_t, checksum) == 0
-    ? 1 : -1];
-/* The stream decoder's counters fit its buffer. */
-typedef char ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MAX_SIZE <= ILAHRS_MAX_MESSAGE_SIZE ? 1 : -1];
+                                                     && offsetof(ilahrs_calibration_status_t, calibration_type) == 0
+                                                     && offsetof(ilahrs_calibration_status_t, runs_used) == 1
+                                                     && offsetof(ilahrs_calibration_status_t, reserved) == 2
+                                                     && offsetof(ilahrs_calibration_status_t, success) == 3
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_11) == 4
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_12) == 8
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_13) == 12
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_21) == 16
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_22) == 20
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_23) == 24
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_31) == 28
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_32) == 32
+                                                     && offsetof(ilahrs_calibration_status_t, tm_c_33) == 36
+                                                     && offsetof(ilahrs_calibration_status_t, hm_0_x) == 40
+                                                     && offsetof(ilahrs_calibration_status_t, hm_0_y) == 44
+                                                     && offsetof(ilahrs_calibration_status_t, hm_0_z) == 48
+                                                 ? 1
+                                                 : -1];
+typedef char ilahrs_check_acknowledgement
+    [sizeof(ilahrs_acknowledgement_t) <= 255 && offsetof(ilahrs_acknowledgement_t, checksum) == 0 ? 1 : -1];
+
+/* The date (Table 6.9, Table 6.10, Table 6.13): a date scaled by DATE_SCALE, the least common multiple of the term
+ * divisors, and the float keys of the dates a decoder accepts. */
+#define DATE_SCALE 4380u
+#define DATE_DECODE_MIN_KEY 1156415488
+#define DATE_DECODE_MAX_KEY 1158254591
+#define DATE_EXPONENT 137u
+
+static int32_t date_scaled(int year, int month, int day)
+{
+    return (year + (0)) * 4380 + (month + (-1)) * 365 + (day + (0)) * 12;
+}
+
+/* $PAHR (Table 6.7, section 6.2): one row per field: name, hex or decimal, template width, fraction digits,
+ * struct member and its size, range (scaled); the member is signed when the range is. Magnitudes
+ * saturate at SATURATED, above every range. */
+#define PAHR_PREFIX "$PAHR,"
+#define SATURATED 0x01000000u
+#define PAHR_HEX_FIELDS 1
+typedef struct {
+    uint8_t name;
+    uint8_t hex;
+    uint8_t width;
+    uint8_t decimals;
+    uint8_t member;
+    uint8_t size;
+    int16_t min;
+    uint16_t max;
+} pahr_field_t;
+
+static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
+    { .name = 0,
+      .hex = 0,
+      .width = 4,
+      .decimals = 2,
+      .member = offsetof(ilahrs_pahr_t, roll),
+      .size = sizeof(((ilahrs_pahr_t *)0)->roll),
+      .min = (-18000),
+      .max = 18000 },
+    { .name = 5,
+      .hex = 0,
+      .width = 3,
+      .decimals = 2,
+      .member = offsetof(ilahrs_pahr_t, pitch),
+      .size = sizeof(((ilahrs_pahr_t *)0)->pitch),
+      .min = (-9000),
+      .max = 9000 },
+    { .name = 11,
+      .hex = 0,
+      .width = 3,
+      .decimals = 2,
+      .member = offsetof(ilahrs_pahr_t, heading),
+      .size = sizeof(((ilahrs_pahr_t *)0)->heading),
+      .min = 0,
+      .max = 35999u },
+    { .name = 19,
+      .hex = 0,
+      .width = 3,
+      .decimals = 1,
+      .member = offsetof(ilahrs_pahr_t, temperature),
+      .size = sizeof(((ilahrs_pahr_t *)0)->temperature),
+      .min = (-999),
+      .max = 9999 },
+    { .name = 31,
+      .hex = 0,
+      .width = 1,
+      .decimals = 2,
+      .member = offsetof(ilahrs_pahr_t, vdd),
+      .size = sizeof(((ilahrs_pahr_t *)0)->vdd),
+      .min = 0,
+      .max = 999 },
+    { .name = 35,
+      .hex = 1,
+      .width = 4,
+      .decimals = 0,
+      .member = offsetof(ilahrs_pahr_t, usw),
+      .size = sizeof(((ilahrs_pahr_t *)0)->usw),
+      .min = 0,
+      .max = 65535u },
+};
+
+/* The device state machine (6.1, 6.3, 6.4): states, one array per column: mode, the parameter
+ * block awaited, the event its timer fires (ILAHRS_EVENT_COUNT: none). */
+static const uint8_t ilahrs_state_modes[ILAHRS_STATE_COUNT] = {
+    [ILAHRS_STATE_IDLE] = ILAHRS_MODE_IDLE,
+    [ILAHRS_STATE_AWAITING_PARAMETERS] = ILAHRS_MODE_IDLE,
+    [ILAHRS_STATE_ALIGNING_CONTINUOUS] = ILAHRS_MODE_CONTINUOUS,
+    [ILAHRS_STATE_CONTINUOUS] = ILAHRS_MODE_CONTINUOUS,
+    [ILAHRS_STATE_ALIGNING_ON_REQUEST] = ILAHRS_MODE_ON_REQUEST,
+    [ILAHRS_STATE_ON_REQUEST] = ILAHRS_MODE_ON_REQUEST,
+    [ILAHRS_STATE_SLEEP] = ILAHRS_MODE_SLEEP,
+    [ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_CALIBRATION_ALIGNING] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_CALIBRATION_ACCUMULATING] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_CALIBRATION_DECIDING] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_RUNS_AWAITING_PARAMETERS] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_RUNS_READY] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_RUN_AWAITING_PARAMETERS] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_RUN_ALIGNING] = ILAHRS_MODE_CALIBRATION,
+    [ILAHRS_STATE_RUN_ACCUMULATING] = ILAHRS_MODE_CALIBRATION,
+};
+
+static const int8_t ilahrs_state_blocks[ILAHRS_STATE_COUNT] = {
+    [ILAHRS_STATE_IDLE] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_AWAITING_PARAMETERS] = ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD,
+    [ILAHRS_STATE_ALIGNING_CONTINUOUS] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_CONTINUOUS] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_ALIGNING_ON_REQUEST] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_ON_REQUEST] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_SLEEP] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS] = ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS,
+    [ILAHRS_STATE_CALIBRATION_ALIGNING] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_CALIBRATION_ACCUMULATING] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_CALIBRATION_DECIDING] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_RUNS_AWAITING_PARAMETERS] = ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS,
+    [ILAHRS_STATE_RUNS_READY] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_RUN_AWAITING_PARAMETERS] = ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS,
+    [ILAHRS_STATE_RUN_ALIGNING] = ILAHRS_PAYLOAD_NONE,
+    [ILAHRS_STATE_RUN_ACCUMULATING] = ILAHRS_PAYLOAD_NONE,
+};
+
+static const uint8_t ilahrs_state_timers[ILAHRS_STATE_COUNT] = {
+    [ILAHRS_STATE_IDLE] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_AWAITING_PARAMETERS] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_ALIGNING_CONTINUOUS] = ILAHRS_EVENT_ALIGNMENT_DONE,
+    [ILAHRS_STATE_CONTINUOUS] = ILAHRS_EVENT_OUTPUT_DUE,
+    [ILAHRS_STATE_ALIGNING_ON_REQUEST] = ILAHRS_EVENT_ALIGNMENT_DONE,
+    [ILAHRS_STATE_ON_REQUEST] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_SLEEP] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_CALIBRATION_ALIGNING] = ILAHRS_EVENT_ALIGNMENT_DONE,
+    [ILAHRS_STATE_CALIBRATION_ACCUMULATING] = ILAHRS_EVENT_ACCUMULATION_DONE,
+    [ILAHRS_STATE_CALIBRATION_DECIDING] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_RUNS_AWAITING_PARAMETERS] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_RUNS_READY] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_RUN_AWAITING_PARAMETERS] = ILAHRS_EVENT_COUNT,
+    [ILAHRS_STATE_RUN_ALIGNING] = ILAHRS_EVENT_ALIGNMENT_DONE,
+    [ILAHRS_STATE_RUN_ACCUMULATING] = ILAHRS_EVENT_ACCUMULATION_DONE,
+};
+
+/* Answers: the payload table it sends, the USW mode an output answer reports (NO_USW_MODE: none). */
+#define NO_USW_MODE 0xFFu
+static const struct {
+    int8_t payload;
+    uint8_t usw_mode;
+} ilahrs_answers[ILAHRS_ANSWER_COUNT] = {
+    [ILAHRS_ANSWER_ACK] = { .payload = ILAHRS_PAYLOAD_NONE, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_AHRS_PARAMETERS_READ] = { .payload = ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_FIRMWARE_VERSION] = { .payload = ILAHRS_PAYLOAD_FIRMWARE_VERSION, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_BIT_RESULT] = { .payload = ILAHRS_PAYLOAD_BIT_RESULT, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_CALIBRATION_STATUS] = { .payload = ILAHRS_PAYLOAD_CALIBRATION_STATUS, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_INITIAL_ALIGNMENT] = { .payload = ILAHRS_PAYLOAD_INITIAL_ALIGNMENT, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_OUTPUT] = { .payload = ILAHRS_PAYLOAD_NONE, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_OUTPUT_SLEEP] = { .payload = ILAHRS_PAYLOAD_NONE, .usw_mode = ILAHRS_USW_MODE_SLEEP },
+    [ILAHRS_ANSWER_CALIBRATION_RESULT] = { .payload = ILAHRS_PAYLOAD_CALIBRATION_RESULT, .usw_mode = NO_USW_MODE },
+    [ILAHRS_ANSWER_CALIBRATION_RUN_RESULT] = { .payload = ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT,
+                                               .usw_mode = NO_USW_MODE },
+};
+
+/* Answer sequences, one after the other: sequence k is ilahrs_sends[ilahrs_send_start[k] ..
+ * ilahrs_send_start[k + 1]). */
+static const uint8_t ilahrs_sends[10] = {
+    ILAHRS_ANSWER_ACK,                    /* 0 */
+                                          /* 1 */
+    ILAHRS_ANSWER_AHRS_PARAMETERS_READ,   /* 2 */
+    ILAHRS_ANSWER_FIRMWARE_VERSION,       /* 3 */
+    ILAHRS_ANSWER_BIT_RESULT,             /* 4 */
+    ILAHRS_ANSWER_CALIBRATION_STATUS,     /* 5 */
+    ILAHRS_ANSWER_INITIAL_ALIGNMENT,      /* 6 */
+    ILAHRS_ANSWER_OUTPUT,                 /* 7 */
+    ILAHRS_ANSWER_OUTPUT_SLEEP,           /* 8 */
+    ILAHRS_ANSWER_CALIBRATION_RESULT,     /* 9 */
+    ILAHRS_ANSWER_CALIBRATION_RUN_RESULT, /* 10 */
+};
+static const uint8_t ilahrs_send_start[12] = { 0, 1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
+
+/* The distinct outcomes of the table: OUTCOME(next state, answer sequence). */
+#define SEQUENCE_BITS 4u
+static const uint8_t ilahrs_outcomes[27] = {
+    OUTCOME(ILAHRS_STATE_ALIGNING_CONTINUOUS, 0),             /* cell 1 */
+    OUTCOME(ILAHRS_STATE_ALIGNING_ON_REQUEST, 0),             /* cell 2 */
+    OUTCOME(ILAHRS_STATE_AWAITING_PARAMETERS, 1),             /* cell 3 */
+    OUTCOME(ILAHRS_STATE_IDLE, 2),                            /* cell 4 */
+    OUTCOME(ILAHRS_STATE_IDLE, 3),                            /* cell 5 */
+    OUTCOME(ILAHRS_STATE_IDLE, 4),                            /* cell 6 */
+    OUTCOME(ILAHRS_STATE_ON_REQUEST, 4),                      /* cell 7 */
+    OUTCOME(ILAHRS_STATE_SLEEP, 1),                           /* cell 8 */
+    OUTCOME(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, 1), /* cell 9 */
+    OUTCOME(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, 1),        /* cell 10 */
+    OUTCOME(ILAHRS_STATE_IDLE, 0),                            /* cell 11 */
+    OUTCOME(ILAHRS_STATE_IDLE, 5),                            /* cell 12 */
+    OUTCOME(ILAHRS_STATE_IDLE, 1),                            /* cell 13 */
+    OUTCOME(ILAHRS_STATE_RUNS_READY, 1),                      /* cell 14 */
+    OUTCOME(ILAHRS_STATE_CONTINUOUS, 6),                      /* cell 15 */
+    OUTCOME(ILAHRS_STATE_ON_REQUEST, 6),                      /* cell 16 */
+    OUTCOME(ILAHRS_STATE_CONTINUOUS, 7),                      /* cell 17 */
+    OUTCOME(ILAHRS_STATE_ON_REQUEST, 7),                      /* cell 18 */
+    OUTCOME(ILAHRS_STATE_SLEEP, 8),                           /* cell 19 */
+    OUTCOME(ILAHRS_STATE_CALIBRATION_ALIGNING, 0),            /* cell 20 */
+    OUTCOME(ILAHRS_STATE_CALIBRATION_ACCUMULATING, 6),        /* cell 21 */
+    OUTCOME(ILAHRS_STATE_CALIBRATION_DECIDING, 9),            /* cell 22 */
+    OUTCOME(ILAHRS_STATE_RUNS_READY, 0),                      /* cell 23 */
+    OUTCOME(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, 1),         /* cell 24 */
+    OUTCOME(ILAHRS_STATE_RUN_ALIGNING, 0),                    /* cell 25 */
+    OUTCOME(ILAHRS_STATE_RUN_ACCUMULATING, 6),                /* cell 26 */
+    OUTCOME(ILAHRS_STATE_RUNS_READY, 10),                     /* cell 27 */
+};
+
+/* Each state's default cell, and the cells that differ from it: CELL(state, event, outcome + 1),
+ * 0 for an ignored event (E33). Events are the commands, then parameter_block, other_message, unknown, block_timeout,
+ * alignment_done, accumulation_done, output_due. */
+#define CELL_BITS 5u
+#define CELL_COUNT 65u
+static const uint8_t ilahrs_state_cells[ILAHRS_STATE_COUNT] = {
+    [ILAHRS_STATE_IDLE] = 0,
+    [ILAHRS_STATE_AWAITING_PARAMETERS] = 13,
+    [ILAHRS_STATE_ALIGNING_CONTINUOUS] = 0,
+    [ILAHRS_STATE_CONTINUOUS] = 0,
+    [ILAHRS_STATE_ALIGNING_ON_REQUEST] = 0,
+    [ILAHRS_STATE_ON_REQUEST] = 0,
+    [ILAHRS_STATE_SLEEP] = 0,
+    [ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS] = 13,
+    [ILAHRS_STATE_CALIBRATION_ALIGNING] = 0,
+    [ILAHRS_STATE_CALIBRATION_ACCUMULATING] = 0,
+    [ILAHRS_STATE_CALIBRATION_DECIDING] = 0,
+    [ILAHRS_STATE_RUNS_AWAITING_PARAMETERS] = 13,
+    [ILAHRS_STATE_RUNS_READY] = 0,
+    [ILAHRS_STATE_RUN_AWAITING_PARAMETERS] = 14,
+    [ILAHRS_STATE_RUN_ALIGNING] = 0,
+    [ILAHRS_STATE_RUN_ACCUMULATING] = 0,
+};
+
+static const uint16_t ilahrs_cells[65] = {
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_CONT1, 1),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_CONT2, 1),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_CONT3, 1),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_REQ1, 2),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_REQ2, 2),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_AHRS_REQ3, 2),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_NMEA_CONT, 1),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_NMEA_REQ, 2),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_STOP, 13),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_LOAD_AHRS_PAR, 3),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_READ_AHRS_PAR, 4),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_LOW_POWER_ON, 8),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_GET_VER_FIRMWARE, 5),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_GET_BIT, 6),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_START_2D_CLB, 9),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_START_2D2T_CLB, 10),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_START_3D_CLB, 9),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_CLEAR_CLB, 11),
+    CELL(ILAHRS_STATE_IDLE, ILAHRS_EVENT_GET_CLB_RES, 12),
+    CELL(ILAHRS_STATE_AWAITING_PARAMETERS, ILAHRS_EVENT_PARAMETER_BLOCK, 11),
+    CELL(ILAHRS_STATE_AWAITING_PARAMETERS, ILAHRS_EVENT_ALIGNMENT_DONE, 0),
+    CELL(ILAHRS_STATE_AWAITING_PARAMETERS, ILAHRS_EVENT_ACCUMULATION_DONE, 0),
+    CELL(ILAHRS_STATE_AWAITING_PARAMETERS, ILAHRS_EVENT_OUTPUT_DUE, 0),
+    CELL(ILAHRS_STATE_ALIGNING_CONTINUOUS, ILAHRS_EVENT_STOP, 13),
+    CELL(ILAHRS_STATE_ALIGNING_CONTINUOUS, ILAHRS_EVENT_ALIGNMENT_DONE, 15),
+    CELL(ILAHRS_STATE_CONTINUOUS, ILAHRS_EVENT_STOP, 13),
+    CELL(ILAHRS_STATE_CONTINUOUS, ILAHRS_EVENT_LOW_POWER_ON, 19),
+    CELL(ILAHRS_STATE_CONTINUOUS, ILAHRS_EVENT_OUTPUT_DUE, 17),
+    CELL(ILAHRS_STATE_ALIGNING_ON_REQUEST, ILAHRS_EVENT_STOP, 13),
+    CELL(ILAHRS_STATE_ALIGNING_ON_REQUEST, ILAHRS_EVENT_ALIGNMENT_DONE, 16),
+    CELL(ILAHRS_STATE_ON_REQUEST, ILAHRS_EVENT_GET_DATA_REQ, 18),
+    CELL(ILAHRS_STATE_ON_REQUEST, ILAHRS_EVENT_STOP, 13),
+    CELL(ILAHRS_STATE_ON_REQUEST, ILAHRS_EVENT_LOW_POWER_ON, 8),
+    CELL(ILAHRS_STATE_ON_REQUEST, ILAHRS_EVENT_GET_BIT, 7),
+    CELL(ILAHRS_STATE_SLEEP, ILAHRS_EVENT_LOW_POWER_OFF, 13),
+    CELL(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, ILAHRS_EVENT_PARAMETER_BLOCK, 20),
+    CELL(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, ILAHRS_EVENT_ALIGNMENT_DONE, 0),
+    CELL(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, ILAHRS_EVENT_ACCUMULATION_DONE, 0),
+    CELL(ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS, ILAHRS_EVENT_OUTPUT_DUE, 0),
+    CELL(ILAHRS_STATE_CALIBRATION_ALIGNING, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_CALIBRATION_ALIGNING, ILAHRS_EVENT_ALIGNMENT_DONE, 21),
+    CELL(ILAHRS_STATE_CALIBRATION_ACCUMULATING, ILAHRS_EVENT_STOP_CLB_RUN, 22),
+    CELL(ILAHRS_STATE_CALIBRATION_ACCUMULATING, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_CALIBRATION_ACCUMULATING, ILAHRS_EVENT_ACCUMULATION_DONE, 22),
+    CELL(ILAHRS_STATE_CALIBRATION_DECIDING, ILAHRS_EVENT_ACCEPT_CLB, 11),
+    CELL(ILAHRS_STATE_CALIBRATION_DECIDING, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, ILAHRS_EVENT_PARAMETER_BLOCK, 23),
+    CELL(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, ILAHRS_EVENT_ALIGNMENT_DONE, 0),
+    CELL(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, ILAHRS_EVENT_ACCUMULATION_DONE, 0),
+    CELL(ILAHRS_STATE_RUNS_AWAITING_PARAMETERS, ILAHRS_EVENT_OUTPUT_DUE, 0),
+    CELL(ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_START_CLB_RUN, 24),
+    CELL(ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_FINISH_CLB, 22),
+    CELL(ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, ILAHRS_EVENT_PARAMETER_BLOCK, 25),
+    CELL(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, ILAHRS_EVENT_ALIGNMENT_DONE, 0),
+    CELL(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, ILAHRS_EVENT_ACCUMULATION_DONE, 0),
+    CELL(ILAHRS_STATE_RUN_AWAITING_PARAMETERS, ILAHRS_EVENT_OUTPUT_DUE, 0),
+    CELL(ILAHRS_STATE_RUN_ALIGNING, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUN_ALIGNING, ILAHRS_EVENT_ALIGNMENT_DONE, 26),
+    CELL(ILAHRS_STATE_RUN_ACCUMULATING, ILAHRS_EVENT_STOP_CLB_RUN, 27),
+    CELL(ILAHRS_STATE_RUN_ACCUMULATING, ILAHRS_EVENT_EXIT_CLB, 11),
+    CELL(ILAHRS_STATE_RUN_ACCUMULATING, ILAHRS_EVENT_ACCUMULATION_DONE, 27),
+};
+
+/* Rows that apply only to firmware before a version, and there take precedence. */
+#define LEGACY_COUNT 1
+static const ilahrs_firmware_t ilahrs_legacy_versions[1] = {
+    { .parts = { 4, 9, 9, 0 }, .count = 4 }, /* 4.9.9.0 */
+};
+
+static const struct {
+    uint8_t state;
+    uint8_t event;
+    uint8_t outcome;
+    uint8_t version;
+} ilahrs_legacy[1] = {
+    { .state = ILAHRS_STATE_RUNS_READY, .event = ILAHRS_EVENT_STOP_CLB_RUN, .outcome = 21, .version = 0 }, /* E29 */
+};
 
 /* ---- Helpers --------------------------------------------------------------------------- */
 
-/* Optimized for size, the library copies with plain loops rather than link memcpy, memmove and
- * memset (several hundred bytes each in a small C library). OPAQUE hides a loop counter from the
- * optimizer so that it does not turn such a loop back into a call. */
-#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
-#define OPAQUE(x) __asm__("" : "+r"(x))
-#else
-#define OPAQUE(x) ((void)0)
-#endif
-
-/* NOINLINE keeps a small helper out of line in the size build, where one call is smaller than
- * the copies the compiler would inline at each use. */
-#if ILAHRS_OPTIMIZE_SIZE && defined(__GNUC__)
+/* NOINLINE keeps a small helper called from many places out of line: one call is smaller than
+ * the copies a compiler optimizing for size would otherwise inline. */
+#if defined(__GNUC__)
 #define NOINLINE __attribute__((noinline))
 #else
 #define NOINLINE
+#endif
+
+/* Optimizing for size, a compiler may turn a copy loop into a call of memcpy, memmove or memset,
+ * which a small C library implements in hundreds of bytes: OPAQUE hides the loop counter from it. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define OPAQUE(x) __asm__("" : "+r"(x))
+#else
+#define OPAQUE(x) ((void)0)
 #endif
 
 /* Copy n bytes front to back: right for separate buffers and for moves to a lower address
  * within one buffer. */
 static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
 {
-#if ILAHRS_OPTIMIZE_SIZE
-    while (n > 0) {
-        *dst++ = *src++;
-        n--;
-        OPAQUE(n);
+    size_t i;
+    for (i = 0; i < n; i++) {
+        OPAQUE(i);
+        dst[i] = src[i];
     }
-#else
-    memmove(dst, src, n);
-#endif
 }
 
-/* Copy n bytes between buffers that may overlap (memmove). */
+/* Copy n bytes between buffers that may overlap. */
 static void move_bytes(uint8_t *dst, const uint8_t *src, size_t n)
 {
-#if ILAHRS_OPTIMIZE_SIZE
     if ((uintptr_t)dst <= (uintptr_t)src) {
         copy_forward(dst, src, n);
         return;
@@ -923,29 +1450,20 @@ static void move_bytes(uint8_t *dst, const uint8_t *src, size_t n)
         OPAQUE(n);
         dst[n] = src[n];
     }
-#else
-    memmove(dst, src, n);
-#endif
 }
 
-/* Set n bytes to zero (memset). */
+/* Set n bytes to zero. */
 static void zero_bytes(void *dst, size_t n)
 {
-#if ILAHRS_OPTIMIZE_SIZE
     uint8_t *p = (uint8_t *)dst;
-    while (n > 0) {
-        *p++ = 0;
-        n--;
-        OPAQUE(n);
+    size_t i;
+    for (i = 0; i < n; i++) {
+        OPAQUE(i);
+        p[i] = 0;
     }
-#else
-    memset(dst, 0, n);
-#endif
 }
 
-/* Optimized for size, every error path calls one copy of fail() rather than inline its three
- * stores (over a dozen bytes at each of some fifty call sites). */
-
+/* Every error path calls this one copy rather than inline its three stores. */
 static NOINLINE bool fail(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t offset, const char *field)
 {
     if (err != NULL) {
@@ -962,7 +1480,7 @@ static size_t fail_size(ilahrs_error_t *err, ilahrs_error_kind_t kind, size_t of
     return 0;
 }
 
-/* Little-endian (byte_order: little) read and write of 1..4 bytes. */
+/* Little-endian read and write of 1..4 bytes. */
 static uint32_t get_le(const uint8_t *p, size_t size)
 {
     uint32_t value = 0;
@@ -1026,6 +1544,14 @@ static int32_t sign_extend(uint32_t bits, size_t size)
     return (int32_t)bits;
 }
 
+/* A float32, as its bits, as an integer that orders like the float: -0 and +0 are both 0, and
+ * NaNs lie beyond the infinities, so outside every finite range. */
+static int32_t float_key(uint32_t bits)
+{
+    int32_t magnitude = (int32_t)(bits & 0x7FFFFFFFu);
+    return (bits & 0x80000000u) != 0 ? -magnitude : magnitude;
+}
+
 #if ILAHRS_NAMES
 static bool equal_name(const char *name, size_t len, const char *known)
 {
@@ -1040,9 +1566,6 @@ static bool equal_name(const char *name, size_t len, const char *known)
     }
     return known[len] == '\0';
 }
-
-/* Out of line in the size build: a call is smaller than the copy the compiler would inline into
- * each name accessor. */
 
 /* Entry `index` of the `count` names of the section at `first` of ilahrs_name_offsets, NULL
  * when out of range. Every name accessor but the error kind's is this one call. */
@@ -1080,118 +1603,117 @@ const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind)
 
 /* ---- Frame ----------------------------------------------------------------------------- */
 
-/* The sum of the bytes, modulo 2^32 (so modulo the checksum width too). */
-static inline uint32_t sum_bytes(const uint8_t *data, size_t len)
+/* The sum of the bytes, modulo 2^32 (so modulo the checksum's width too). */
+static uint32_t sum_bytes(const uint8_t *data, size_t len)
 {
     uint32_t sum = 0;
-    size_t i = 0;
-#if !ILAHRS_OPTIMIZE_SIZE
-    /* Eight bytes at a time as four 16-bit lanes. A lane gains at most 2 * 255 per word, so
-     * 128 words (1 KiB) cannot overflow it before it is folded into `sum`. The last, partial
-     * word is the eight bytes that end the data, less the ones already counted. */
-    if (len >= 8) {
-        const uint16_t one = 1;
-        uint8_t little;
-        memcpy(&little, &one, 1);
-        while (i < len) {
-            uint64_t lanes = 0;
-            size_t stop = len - i >= 1024 ? i + 1024 : i + ((len - i) & ~(size_t)7);
-            for (; i < stop; i += 8) {
-                uint64_t word;
-                memcpy(&word, data + i, 8);
-                lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
-            }
-            if (len - i < 8 && i < len) {
-                uint64_t word;
-                unsigned drop = 8u * (unsigned)(8 - (len - i));
-                memcpy(&word, data + len - 8, 8);
-                word = little ? word >> drop : word << drop;
-                lanes += (word & 0x00FF00FF00FF00FFull) + ((word >> 8) & 0x00FF00FF00FF00FFull);
-                i = len;
-            }
-            lanes = (lanes & 0x0000FFFF0000FFFFull) + ((lanes >> 16) & 0x0000FFFF0000FFFFull);
-            sum += (uint32_t)lanes + (uint32_t)(lanes >> 32);
-        }
-    }
-#endif
-    for (; i < len; i++) {
+    size_t i;
+    for (i = 0; i < len; i++) {
         sum += data[i];
     }
     return sum;
 }
 
-uint16_t ilahrs_checksum(const uint8_t *data, size_t len)
+checksum_t ilahrs_checksum(const uint8_t *data, size_t len)
 {
-    return (uint16_t)sum_bytes(data, len);
+    return (checksum_t)sum_bytes(data, len);
 }
 
-static bool message_type_valid(uint32_t type)
+/*
+ * The frame at the start of p[0..n): its size, with *frame filled; or minus the kind of the first
+ * error (ilahrs_frame_parse() finds its offset). The checks of ilahrs_frame_parse(), in its order:
+ * a frame cut short is ILAHRS_ERR_TRUNCATED, which the stream decoder reads as "wait for more".
+ */
+static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
-    return type == ILAHRS_MESSAGE_TYPE_COMMAND || type == ILAHRS_MESSAGE_TYPE_DATA;
+    size_t at;
+    size_t size;
+    for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
+        if (p[at] != ilahrs_frame_header[at]) {
+            return -ILAHRS_ERR_BAD_HEADER;
+        }
+    }
+    if (n < ILAHRS_FRAME_PAYLOAD_OFFSET) {
+        return -ILAHRS_ERR_TRUNCATED;
+    }
+    if (!MESSAGE_TYPE_VALID(LE(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
+        return -ILAHRS_ERR_BAD_MESSAGE_TYPE;
+    }
+    size = LE(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    if (size < ILAHRS_FRAME_MIN_LENGTH || size > ILAHRS_FRAME_MAX_LENGTH) {
+        return -ILAHRS_ERR_BAD_LENGTH;
+    }
+    size += ILAHRS_FRAME_HEADER_SIZE;
+    if (n < size) {
+        return -ILAHRS_ERR_TRUNCATED;
+    }
+    at = size - ILAHRS_FRAME_CHECKSUM_SIZE;
+    if ((checksum_t)sum_bytes(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
+        != LE(p + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
+        return -ILAHRS_ERR_BAD_CHECKSUM;
+    }
+    frame_get_fields(frame, p);
+    frame->payload = p + ILAHRS_FRAME_PAYLOAD_OFFSET;
+    frame->payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
+    return (int)size;
 }
 
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
 {
-    static const uint8_t header[ILAHRS_FRAME_HEADER_SIZE] = { ILAHRS_FRAME_HEADER_0, ILAHRS_FRAME_HEADER_1 };
-    size_t total;
-    size_t at;
-    uint32_t length;
-    /* The header bytes that are there; a short frame is truncated just below. */
-    for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < len; at++) {
-        if (data[at] != header[at]) {
-            return fail(err, ILAHRS_ERR_BAD_HEADER, at, (NAME_FRAME_HEADER));
+    int size = frame_check(data, len, frame);
+    size_t at = len; /* truncated */
+    const char *part = NULL;
+    if (size == -ILAHRS_ERR_BAD_HEADER) {
+        for (at = 0; data[at] == ilahrs_frame_header[at]; at++) {
         }
+        part = NAME_FRAME_HEADER;
+    } else if (size == -ILAHRS_ERR_BAD_MESSAGE_TYPE) {
+        at = ILAHRS_FRAME_MESSAGE_TYPE_OFFSET;
+        part = NAME_FRAME_MESSAGE_TYPE;
+    } else if (size == -ILAHRS_ERR_BAD_LENGTH) {
+        at = ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET;
+        part = NAME_FRAME_MESSAGE_LENGTH;
+    } else if (size == -ILAHRS_ERR_BAD_CHECKSUM) {
+        at = ILAHRS_FRAME_HEADER_SIZE - ILAHRS_FRAME_CHECKSUM_SIZE
+             + LE(data + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+        part = NAME_FRAME_CHECKSUM;
     }
-    if (len < ILAHRS_FRAME_PAYLOAD_OFFSET) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
+    if (size < 0) {
+        return fail(err, (ilahrs_error_kind_t)-size, at, part);
     }
-    if (!message_type_valid(get_le(data + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
-        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
-    }
-    length = get_le(data + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-    if (length < ILAHRS_FRAME_MIN_LENGTH || length > ILAHRS_FRAME_MAX_LENGTH) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (NAME_FRAME_MESSAGE_LENGTH));
-    }
-    total = ILAHRS_FRAME_HEADER_SIZE + (size_t)length;
-    if (len < total) {
-        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
-    }
-    at = total - ILAHRS_FRAME_CHECKSUM_SIZE;
-    if ((uint16_t)sum_bytes(data + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
-        != get_le(data + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
-        return fail(err, ILAHRS_ERR_BAD_CHECKSUM, at, (NAME_FRAME_CHECKSUM));
-    }
-    if (len > total) {
-        return fail(err, ILAHRS_ERR_TRAILING_DATA, total, NULL);
-    }
-    frame->message_type = (uint8_t)get_le(data + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE);
-    frame->reserved = (uint8_t)get_le(data + ILAHRS_FRAME_RESERVED_OFFSET, ILAHRS_FRAME_RESERVED_SIZE);
-    frame->payload = data + ILAHRS_FRAME_PAYLOAD_OFFSET;
-    frame->payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
-    return true;
+    return len == (size_t)size || fail(err, ILAHRS_ERR_TRAILING_DATA, (size_t)size, NULL);
 }
 
 /* Write header, fields, length and checksum around a payload already at out + PAYLOAD_OFFSET. */
 static size_t frame_finish(uint8_t *out, const ilahrs_frame_t *frame, size_t payload_size)
 {
     size_t at = ILAHRS_FRAME_PAYLOAD_OFFSET + payload_size;
-    out[0] = ILAHRS_FRAME_HEADER_0;
-    out[1] = ILAHRS_FRAME_HEADER_1;
-    put_le(out + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, frame->message_type, ILAHRS_FRAME_MESSAGE_TYPE_SIZE);
-    put_le(out + ILAHRS_FRAME_RESERVED_OFFSET, frame->reserved, ILAHRS_FRAME_RESERVED_SIZE);
-    put_le(out + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (uint32_t)(payload_size + ILAHRS_FRAME_LENGTH_BIAS), ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-    put_le(out + at, ilahrs_checksum(out + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE), ILAHRS_FRAME_CHECKSUM_SIZE);
+    copy_forward(out, ilahrs_frame_header, ILAHRS_FRAME_HEADER_SIZE);
+    frame_put_fields(out, frame);
+    put_le(out + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (uint32_t)(payload_size + ILAHRS_FRAME_LENGTH_BIAS),
+           ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    put_le(out + at, ilahrs_checksum(out + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE),
+           ILAHRS_FRAME_CHECKSUM_SIZE);
     return at + ILAHRS_FRAME_CHECKSUM_SIZE;
+}
+
+/* A frame of message type data around a payload already at out + PAYLOAD_OFFSET. */
+static size_t data_frame_finish(uint8_t *out, size_t payload_size)
+{
+    ilahrs_frame_t frame;
+    zero_bytes(&frame, sizeof frame);
+    frame.message_type = ILAHRS_MESSAGE_TYPE_DATA;
+    return frame_finish(out, &frame, payload_size);
 }
 
 size_t ilahrs_frame_build(const ilahrs_frame_t *frame, uint8_t *out, size_t cap, ilahrs_error_t *err)
 {
-    if (!message_type_valid(frame->message_type)) {
-        return fail_size(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_NO_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
+    if (!MESSAGE_TYPE_VALID(frame->message_type)) {
+        return fail_size(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_NO_OFFSET, NAME_FRAME_MESSAGE_TYPE);
     }
     if (frame->payload_size < ILAHRS_FRAME_MIN_PAYLOAD || frame->payload_size > ILAHRS_FRAME_MAX_PAYLOAD
         || frame->payload == NULL) {
-        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, (NAME_FRAME_PAYLOAD));
+        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NAME_FRAME_PAYLOAD);
     }
     if (out == NULL || cap < frame->payload_size + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
@@ -1212,14 +1734,7 @@ const char *ilahrs_command_name(ilahrs_command_t command)
 {
     return name_at((unsigned)command, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
 }
-#endif
 
-uint8_t ilahrs_command_code(ilahrs_command_t command)
-{
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_codes[command] : 0;
-}
-
-#if ILAHRS_NAMES
 bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *command, ilahrs_error_t *err)
 {
     int i = name_index(name, len, NAMES_COMMAND, ILAHRS_COMMAND_COUNT);
@@ -1231,6 +1746,11 @@ bool ilahrs_command_by_name(const char *name, size_t len, ilahrs_command_t *comm
 }
 #endif
 
+uint8_t ilahrs_command_code(ilahrs_command_t command)
+{
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_codes[command] : 0;
+}
+
 uint8_t ilahrs_command_valid_in(ilahrs_command_t command)
 {
     return (unsigned)command < ILAHRS_COMMAND_COUNT ? ilahrs_command_modes[command] : 0;
@@ -1239,12 +1759,13 @@ uint8_t ilahrs_command_valid_in(ilahrs_command_t command)
 ilahrs_response_t ilahrs_command_response(ilahrs_command_t command)
 {
     return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_response_t)ilahrs_command_responses[command]
-                                                     : ILAHRS_RESPONSE_NONE;
+                                                    : ILAHRS_RESPONSE_NONE;
 }
 
 ilahrs_payload_t ilahrs_command_parameter_block(ilahrs_command_t command)
 {
-    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_payload_t)ilahrs_command_blocks[command] : ILAHRS_PAYLOAD_NONE;
+    return (unsigned)command < ILAHRS_COMMAND_COUNT ? (ilahrs_payload_t)ilahrs_command_blocks[command]
+                                                    : ILAHRS_PAYLOAD_NONE;
 }
 
 ilahrs_payload_t ilahrs_command_response_payload(ilahrs_command_t command, size_t index)
@@ -1264,7 +1785,7 @@ size_t ilahrs_command_build(ilahrs_command_t command, uint8_t *out, size_t cap, 
     if (out == NULL || cap < 1u + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
     }
-    memset(&frame, 0, sizeof frame);
+    zero_bytes(&frame, sizeof frame);
     frame.message_type = ILAHRS_MESSAGE_TYPE_COMMAND;
     out[ILAHRS_FRAME_PAYLOAD_OFFSET] = ilahrs_command_codes[command];
     return frame_finish(out, &frame, 1);
@@ -1279,10 +1800,10 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
         return false;
     }
     if (frame.message_type != ILAHRS_MESSAGE_TYPE_COMMAND) {
-        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, (NAME_FRAME_MESSAGE_TYPE));
+        return fail(err, ILAHRS_ERR_BAD_MESSAGE_TYPE, ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, NAME_FRAME_MESSAGE_TYPE);
     }
     if (frame.payload_size != 1) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, (NAME_FRAME_MESSAGE_LENGTH));
+        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, NAME_FRAME_MESSAGE_LENGTH);
     }
     code = frame.payload[0];
     match->code = code;
@@ -1300,41 +1821,15 @@ bool ilahrs_command_decode(const uint8_t *data, size_t len, ilahrs_command_match
     return true;
 }
 
-size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t cap, ilahrs_error_t *err)
-{
-    ilahrs_frame_t frame;
-    size_t at;
-    if (!ilahrs_frame_parse(message, len, &frame, err)) {
-        return 0;
-    }
-    at = ILAHRS_FRAME_PAYLOAD_OFFSET + frame.payload_size;
-    /* The table is the checksum alone, which needs no check: write it here (no field table). */
-    if (out == NULL || cap < ILAHRS_ACKNOWLEDGEMENT_SIZE + ILAHRS_FRAME_OVERHEAD) {
-        return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
-    }
-    put_le(out + ILAHRS_FRAME_PAYLOAD_OFFSET + ILAHRS_ACKNOWLEDGEMENT_CHECKSUM_OFFSET,
-           get_le(message + at, ILAHRS_FRAME_CHECKSUM_SIZE), ILAHRS_ACKNOWLEDGEMENT_CHECKSUM_SIZE);
-    memset(&frame, 0, sizeof frame);
-    frame.message_type = ILAHRS_MESSAGE_TYPE_DATA;
-    return frame_finish(out, &frame, ILAHRS_ACKNOWLEDGEMENT_SIZE);
-}
-
 /* ---- Variants -------------------------------------------------------------------------- */
 
 int32_t ilahrs_variant_parameter(ilahrs_variant_t variant, ilahrs_variant_parameter_t parameter)
 {
-    if ((unsigned)variant >= ILAHRS_VARIANT_COUNT || (unsigned)parameter >= 2u) {
+    if ((unsigned)variant >= ILAHRS_VARIANT_COUNT || (unsigned)parameter >= VARIANT_PARAMETER_COUNT) {
         return 0;
     }
     return ilahrs_variant_values[variant][parameter];
 }
-
-#if ILAHRS_NAMES
-const char *ilahrs_variant_name(ilahrs_variant_t variant)
-{
-    return name_at((unsigned)variant, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
-}
-#endif
 
 const char *ilahrs_variant_part_number(ilahrs_variant_t variant)
 {
@@ -1342,6 +1837,11 @@ const char *ilahrs_variant_part_number(ilahrs_variant_t variant)
 }
 
 #if ILAHRS_NAMES
+const char *ilahrs_variant_name(ilahrs_variant_t variant)
+{
+    return name_at((unsigned)variant, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
+}
+
 bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *variant)
 {
     int i = name_index(name, len, NAMES_VARIANT, ILAHRS_VARIANT_COUNT);
@@ -1359,6 +1859,21 @@ bool ilahrs_variant_by_name(const char *name, size_t len, ilahrs_variant_t *vari
 const char *ilahrs_payload_name(ilahrs_payload_t payload)
 {
     return name_at((unsigned)payload, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT); /* ILAHRS_PAYLOAD_NONE: out of range */
+}
+
+bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload)
+{
+    int i = name_index(name, len, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT);
+    if (i < 0) {
+        return false;
+    }
+    *payload = (ilahrs_payload_t)i;
+    return true;
+}
+
+const char *ilahrs_field_name(const ilahrs_field_info_t *field)
+{
+    return FIELD_NAME(FIELD_NAME_AT(field));
 }
 #endif
 
@@ -1384,23 +1899,6 @@ const ilahrs_field_info_t *ilahrs_payload_field(ilahrs_payload_t payload, size_t
     }
     return &ilahrs_fields[ilahrs_payloads[payload].first_field + index];
 }
-
-#if ILAHRS_NAMES
-bool ilahrs_payload_by_name(const char *name, size_t len, ilahrs_payload_t *payload)
-{
-    int i = name_index(name, len, NAMES_PAYLOAD, ILAHRS_PAYLOAD_COUNT);
-    if (i < 0) {
-        return false;
-    }
-    *payload = (ilahrs_payload_t)i;
-    return true;
-}
-
-const char *ilahrs_field_name(const ilahrs_field_info_t *field)
-{
-    return FIELD_NAME(FIELD_NAME_AT(field));
-}
-#endif
 
 size_t ilahrs_field_offset(const ilahrs_field_info_t *field)
 {
@@ -1446,7 +1944,8 @@ int64_t ilahrs_field_get_int(const ilahrs_field_info_t *field, const void *paylo
         return 0;
     }
     bits = load_bits(ilahrs_field_member_const(field, payload), FIELD_NUMBER_SIZE(field));
-    return FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, FIELD_NUMBER_SIZE(field)) : (int64_t)bits;
+    return FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, FIELD_NUMBER_SIZE(field))
+                                                   : (int64_t)bits;
 }
 
 float ilahrs_field_get_float(const ilahrs_field_info_t *field, const void *payload)
@@ -1463,8 +1962,9 @@ bool ilahrs_field_set_int(const ilahrs_field_info_t *field, void *payload, int64
     uint32_t bits = (uint32_t)(uint64_t)value;
     unsigned size = FIELD_NUMBER_SIZE(field);
     if (is_integer(field)
-        && value == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, size)
-                                                             : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * size))))) {
+        && value
+               == (FIELD_KIND(field) == ILAHRS_KIND_SIGNED ? (int64_t)sign_extend(bits, size)
+                                                           : (int64_t)(bits & (0xFFFFFFFFu >> (32 - 8 * size))))) {
         store_bits(ilahrs_field_member(field, payload), bits, size);
         return true;
     }
@@ -1480,19 +1980,6 @@ bool ilahrs_field_set_float(const ilahrs_field_info_t *field, void *payload, flo
     return true;
 }
 
-/* A float32, as its bits, as an integer that orders like the float: -0 and +0 are both 0, and
- * NaNs lie beyond the infinities, so outside every finite range. */
-static int32_t float_key(uint32_t bits)
-{
-    int32_t magnitude = (int32_t)(bits & 0x7FFFFFFFu);
-    return (bits & 0x80000000u) != 0 ? -magnitude : magnitude;
-}
-
-/* The declination rule on float keys: ILAHRS_DECLINATION_MIN..MAX, or above COMPUTE_ABOVE. */
-#define DECLINATION_MIN_KEY (-1127481344)
-#define DECLINATION_MAX_KEY 1127481344
-#define DECLINATION_COMPUTE_ABOVE_KEY 1135869952
-
 /* The builder check of a stored value: integers against integer bounds, floats (by key) against
  * the float32 roundings of their bounds, then the encoding's rule. */
 static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
@@ -1502,9 +1989,11 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
         if (key < ilahrs_float_bounds[FIELD_BOUNDS(f)][0] || key > ilahrs_float_bounds[FIELD_BOUNDS(f)][1]) {
             return false;
         }
+#ifdef ILAHRS_DECLINATION_MIN
         if (FIELD_ENCODING(f) == ENCODING_DECLINATION) {
             return (key >= DECLINATION_MIN_KEY && key <= DECLINATION_MAX_KEY) || key > DECLINATION_COMPUTE_ABOVE_KEY;
         }
+#endif
         return true;
     }
     if (FIELD_BOUNDS(f) != 0) {
@@ -1517,7 +2006,8 @@ static bool stored_ok(const ilahrs_field_info_t *f, uint32_t bits)
     return true;
 }
 
-bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier, int32_t *divisor)
+bool ilahrs_field_scale(const ilahrs_field_info_t *field, ilahrs_variant_t variant, int32_t *multiplier,
+                        int32_t *divisor)
 {
     int32_t d;
     if (FIELD_IS_ARRAY(field) || FIELD_SCALE(field) == 0) {
@@ -1546,7 +2036,8 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out)
     first = ilahrs_payloads[payload].first_field;
     for (i = 0; i < DEFAULT_COUNT; i++) {
         const ilahrs_field_info_t *f = &ilahrs_fields[ilahrs_defaults[i].field];
-        if (ilahrs_defaults[i].field < first || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
+        if (ilahrs_defaults[i].field < first
+            || ilahrs_defaults[i].field >= first + ilahrs_payloads[payload].field_count) {
             continue;
         }
         if (FIELD_KIND(f) == ILAHRS_KIND_CHAR) {
@@ -1613,10 +2104,8 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
             copy_forward(wire, member, FIELD_ARRAY_SIZE(f));
         } else {
             uint32_t bits = load_bits(member, FIELD_NUMBER_SIZE(f));
-            {
-                if (!stored_ok(f, bits)) {
-                    return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(f), FIELD_NAME(FIELD_NAME_AT(f)));
-                }
+            if (!stored_ok(f, bits)) {
+                return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(f), FIELD_NAME(FIELD_NAME_AT(f)));
             }
             put_le(wire, bits, FIELD_NUMBER_SIZE(f));
         }
@@ -1624,9 +2113,9 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     return size;
 }
 
-size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err)
+size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap,
+                                  ilahrs_error_t *err)
 {
-    ilahrs_frame_t frame;
     size_t size;
     if (out == NULL || cap < ILAHRS_FRAME_PAYLOAD_OFFSET) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
@@ -1638,12 +2127,36 @@ size_t ilahrs_payload_build_frame(ilahrs_payload_t payload, const void *in, uint
     if (cap < size + ILAHRS_FRAME_OVERHEAD) {
         return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
     }
-    memset(&frame, 0, sizeof frame);
-    frame.message_type = ILAHRS_MESSAGE_TYPE_DATA;
-    return frame_finish(out, &frame, size);
+    return data_frame_finish(out, size);
 }
 
-/* ---- Date (Table 6.9, Table 6.10, Table 6.13) ---------------------------------------------------------------- */
+/* The acknowledgement is a data frame of the acknowledgement table, whose one field is the
+ * checksum of the message acknowledged (E12). */
+size_t ilahrs_ack_build(const uint8_t *message, size_t len, uint8_t *out, size_t cap, ilahrs_error_t *err)
+{
+    const ilahrs_field_info_t *f = &ilahrs_fields[ilahrs_payloads[ACK_PAYLOAD].first_field];
+    ilahrs_frame_t frame;
+    ack_payload_t payload;
+    if (!ilahrs_frame_parse(message, len, &frame, err)) {
+        return 0;
+    }
+    zero_bytes(&payload, sizeof payload);
+    store_bits(ilahrs_field_member(f, &payload), get_le(frame.payload + frame.payload_size, ILAHRS_FRAME_CHECKSUM_SIZE),
+               FIELD_NUMBER_SIZE(f));
+    return ilahrs_payload_build_frame(ACK_PAYLOAD, &payload, out, cap, err);
+}
+
+/* ---- Unit Status Word ------------------------------------------------------------------ */
+
+#if ILAHRS_NAMES && defined(ILAHRS_USW_FLAGS_MASK)
+const char *ilahrs_usw_flag_name(unsigned bit)
+{
+    const char *name = name_at(bit, NAMES_FLAG, NAMES_FLAG_COUNT);
+    return name != NULL && name[0] != '\0' ? name : NULL; /* empty: a bit without a flag */
+}
+#endif
+
+/* ---- Date ------------------------------------------------------------------------------ */
 
 /* Month 1..12 of a year (Gregorian). Bit m of 0x15AA is set for the months of 31 days; a year
  * divisible by 100 is leap when also by 16 (then by 400). */
@@ -1655,18 +2168,9 @@ static int days_in_month(int year, int month)
     return 30 + (int)((0x15AAu >> month) & 1u);
 }
 
-/*
- * Year + (Month - 1)/12 + Day/365, as a float. Scaled by DATE_SCALE, the least common multiple of the divisors, a date is an
- * integer below 2^24: exact in a float32, and decoding compares integers (E15).
- */
-#define DATE_SCALE 4380u
-static int32_t date_scaled(int year, int month, int day)
-{
-    return (year + (0)) * 4380 + (month + (-1)) * 365 + (day + (0)) * 12;
-}
-
 /* The float32 nearest n / DATE_SCALE (ties to even), in integers: the quotient's bits one at a
- * time until it has 24, then rounded by the remainder. */
+ * time until it has 24, then rounded by the remainder. A date scaled by DATE_SCALE (date_scaled())
+ * is an integer below 2^24: exact in a float32, and decoding compares integers. */
 static float date_float(uint32_t n)
 {
     uint32_t m = n / DATE_SCALE;
@@ -1702,12 +2206,9 @@ bool ilahrs_date_encode(int year, int month, int day, float *value, ilahrs_error
     return true;
 }
 
-/* Date floats a decoder accepts, as float keys: from the year ILAHRS_DATE_YEAR_MIN to below
- * ILAHRS_DATE_YEAR_MAX + 2, the floats whose candidate years (below) hold a valid date.
- * DATE_EXPONENT is the biased exponent of the smallest. */
-#define DATE_DECODE_MIN_KEY 1156415488
-#define DATE_DECODE_MAX_KEY 1158254591
-#define DATE_EXPONENT 137u
+/* Date floats a decoder accepts, as float keys (DATE_DECODE_MIN_KEY..DATE_DECODE_MAX_KEY): from
+ * the year ILAHRS_DATE_YEAR_MIN to below ILAHRS_DATE_YEAR_MAX + 2, the floats whose candidate years
+ * (below) hold a valid date. DATE_EXPONENT is the biased exponent of the smallest. */
 #define DATE_FRACTION_BITS (150u - DATE_EXPONENT)
 #define DATE_FRACTION_MASK ((1u << DATE_FRACTION_BITS) - 1u)
 
@@ -1738,7 +2239,8 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
         for (month = 1; month <= 12; month++) {
             int day;
             for (day = 1; day <= days_in_month(year, month); day++) {
-                int32_t at = (date_scaled(year, month, day) - base * (int32_t)DATE_SCALE) * (int32_t)(DATE_FRACTION_MASK + 1u);
+                int32_t at =
+                    (date_scaled(year, month, day) - base * (int32_t)DATE_SCALE) * (int32_t)(DATE_FRACTION_MASK + 1u);
                 uint32_t distance = at > target ? (uint32_t)(at - target) : (uint32_t)(target - at);
                 if (distance < best) {
                     best = distance;
@@ -1752,51 +2254,96 @@ bool ilahrs_date_decode(float value, ilahrs_date_t *date, ilahrs_error_t *err)
     return true;
 }
 
-/* ---- Unit Status Word ------------------------------------------------------------------ */
+/* ---- Engineering values as doubles ------------------------------------------------------ */
 
-#if ILAHRS_NAMES
-const char *ilahrs_usw_flag_name(unsigned bit)
+/* These take doubles but compute on their IEEE 754 binary64 bits with integers only (no
+ * floating-point code linked), and give for every double the answers of the double-precision
+ * expressions they replace, quoted below. A double is a sign, an 11-bit exponent e and a 52-bit
+ * fraction: (2^52 + fraction) * 2^(e - 1075), or fraction * 2^-1074 if e is 0. */
+
+#define DOUBLE_SIGN ((uint64_t)1 << 63)
+#define DOUBLE_ONE ((uint64_t)1 << 52) /* the implicit leading bit */
+
+static uint64_t double_bits(double value)
 {
-    const char *name = name_at(bit, NAMES_FLAG, NAMES_FLAG_COUNT);
-    return name != NULL && name[0] != '\0' ? name : NULL; /* empty: a bit without a flag */
+    uint64_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    return bits;
 }
+
+/* float_key() for a double: the magnitude bits, negated if the sign is set. Doubles order like
+ * their keys, -0.0 and 0.0 are both 0, and NaNs lie beyond the infinities, outside every range. */
+static int64_t double_key(uint64_t bits)
+{
+    int64_t magnitude = (int64_t)(bits & ~DOUBLE_SIGN);
+    return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
+}
+
+/* double_key() of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
+static int64_t int_key(int64_t n)
+{
+    uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+    uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
+    int64_t magnitude;
+    if (m == 0) {
+        return 0;
+    }
+    while (m < DOUBLE_ONE) {
+        m <<= 1;
+        exponent--;
+    }
+    magnitude = (int64_t)((exponent << 52) + m);
+    return n < 0 ? -magnitude : magnitude;
+}
+
+/* value >= low && value <= high with the field's bounds (float fields: ilahrs_exact_bounds, the
+ * exact bounds as double keys; integer fields: their int bounds or their C type's range, exact as
+ * doubles), then the declination rule, as compares of keys. */
+bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
+{
+    int64_t key = double_key(double_bits(value));
+    int64_t low;
+    int64_t high;
+    bool ok;
+    switch (FIELD_KIND(field)) {
+    case ILAHRS_KIND_FLOAT:
+        low = ilahrs_exact_bounds[FIELD_BOUNDS(field)][0];
+        high = ilahrs_exact_bounds[FIELD_BOUNDS(field)][1];
+        break;
+    case ILAHRS_KIND_UNSIGNED:
+    case ILAHRS_KIND_SIGNED: {
+        bool is_signed = FIELD_KIND(field) == ILAHRS_KIND_SIGNED;
+        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * FIELD_NUMBER_SIZE(field) + is_signed); /* the C type's maximum */
+        low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
+        high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
+        low = int_key(low);
+        high = int_key(high);
+        break;
+    }
+    default:
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
+    }
+    ok = key >= low && key <= high;
+#ifdef ILAHRS_DECLINATION_MIN
+    if (ok && FIELD_ENCODING(field) == ENCODING_DECLINATION) {
+        ok = (key >= DECLINATION_MIN_DKEY && key <= DECLINATION_MAX_DKEY) || key > DECLINATION_COMPUTE_ABOVE_DKEY;
+    }
 #endif
+    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
+}
 
-/* ---- $PAHR sentences (Table 6.7, section 6.2) ---------------------------------------------------- */
+/* ---- $PAHR sentences ------------------------------------------------------------------- */
 
-/* The sentence grammar of NMEA 0183 (spec/README.md): "$", the identifier and ",", fields
- * separated by ",", then "*", two hex digits, CR LF. */
+/* The sentence grammar of NMEA 0183 (spec/README.md): "$", the identifier and "," (PAHR_PREFIX),
+ * fields separated by ",", then "*", two hex digits, CR LF. */
 #define PAHR_START '$'
 #define PAHR_SEPARATOR ','
 #define PAHR_STAR '*'
 #define PAHR_CR '\r'
 #define PAHR_LF '\n'
-#define PAHR_PREFIX "$PAHR,"
-#define PAHR_PREFIX_LENGTH 6u
-#define PAHR_TAIL 5u /* "*", two checksum digits, CR, LF */
+#define PAHR_PREFIX_LENGTH (sizeof PAHR_PREFIX - 1u)
+#define PAHR_TAIL 5u                /* "*", two checksum digits, CR, LF */
 #define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
-
-/* One field: name, hex (1) or decimal (0), template width, fraction digits, struct member and its
- * size, range (scaled). The member is signed when the range is. */
-typedef struct {
-    uint8_t name;
-    uint8_t hex;
-    uint8_t width;
-    uint8_t decimals;
-    uint8_t member;
-    uint8_t size;
-    int16_t min;
-    uint16_t max;
-} pahr_field_t;
-
-static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
-    { 0, 0, 4, 2, offsetof(ilahrs_pahr_t, roll), sizeof(((ilahrs_pahr_t *)0)->roll), (-18000), 18000 },
-    { 5, 0, 3, 2, offsetof(ilahrs_pahr_t, pitch), sizeof(((ilahrs_pahr_t *)0)->pitch), (-9000), 9000 },
-    { 11, 0, 3, 2, offsetof(ilahrs_pahr_t, heading), sizeof(((ilahrs_pahr_t *)0)->heading), 0, 35999u },
-    { 19, 0, 3, 1, offsetof(ilahrs_pahr_t, temperature), sizeof(((ilahrs_pahr_t *)0)->temperature), (-999), 9999 },
-    { 31, 0, 1, 2, offsetof(ilahrs_pahr_t, vdd), sizeof(((ilahrs_pahr_t *)0)->vdd), 0, 999 },
-    { 35, 1, 4, 0, offsetof(ilahrs_pahr_t, usw), sizeof(((ilahrs_pahr_t *)0)->usw), 0, 65535u },
-};
 
 /* 10^decimals of field k. */
 static uint32_t pahr_divisor(size_t k)
@@ -1831,7 +2378,11 @@ uint32_t ilahrs_pahr_field_divisor(size_t index)
     return index < ILAHRS_PAHR_FIELD_COUNT && !ilahrs_pahr_fields[index].hex ? pahr_divisor(index) : 0;
 }
 
-static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k);
+static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
+{
+    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+}
 
 int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
 {
@@ -1851,68 +2402,54 @@ static unsigned digit_value(uint8_t c)
     return letter <= 5u ? letter + 10u : NOT_DIGIT;
 }
 
-/* XOR of n bytes (eight at a time unless optimizing for size). */
-static uint8_t xor_bytes(const uint8_t *p, size_t n)
-{
-    uint8_t x = 0;
-    size_t i = 0;
-#if !ILAHRS_OPTIMIZE_SIZE
-    uint64_t lanes = 0;
-    for (; i + 8 <= n; i += 8) {
-        uint64_t word;
-        memcpy(&word, p + i, 8);
-        lanes ^= word;
-    }
-    lanes ^= lanes >> 32;
-    lanes ^= lanes >> 16;
-    lanes ^= lanes >> 8;
-    x = (uint8_t)lanes;
-#endif
-    for (; i < n; i++) {
-        x ^= p[i];
-    }
-    return x;
-}
-
-/* Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
- * it, so any number of digits reads without a wider type or a division. */
-#define SATURATED 0x01000000u
-
 /*
  * The field at *at, described by f, in one pass: its grammar, its value scaled to an integer, its
- * range. Returns ILAHRS_OK with the value stored in *out, ILAHRS_ERR_MALFORMED (also when the
- * number is not followed by a separator or by the star, star being the sentence's "*") or
- * ILAHRS_ERR_OUT_OF_RANGE, and leaves *at where the number ends.
+ * range; the characters it takes are XORed into *sum. Returns ILAHRS_OK with the value stored in
+ * *out, ILAHRS_ERR_MALFORMED (also when the number is not followed by a separator or by the star,
+ * star being the sentence's "*") or ILAHRS_ERR_OUT_OF_RANGE, and leaves *at where the number ends.
+ * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
+ * it, so any number of digits reads without a wider type or a division.
  */
-static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f, ilahrs_pahr_t *out)
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
+                                      ilahrs_pahr_t *out, unsigned *sum)
 {
     const uint8_t *q = *at;
+    const uint8_t *digits;
+    const uint8_t *point = NULL;
     unsigned base = f->hex ? 16u : 10u;
-    unsigned digits = 0; /* before the point */
-    unsigned fraction = 0;
-    bool point = false;
+    unsigned x = *sum;
     bool negative = !f->hex && *q == '-';
     uint32_t m = 0;
+    size_t whole;
+    size_t fraction = 0;
     int32_t value;
-    for (q += negative;; q++) {
-        unsigned d = digit_value(*q);
-        if (d < base) {
-            if (m < SATURATED) {
-                m = m * base + d;
+    x ^= negative ? (unsigned)'-' : 0u;
+    for (q += negative, digits = q;; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || point != NULL) {
+                    break;
+                }
+                point = q; /* in a hex field, a point is followed by a fraction it cannot have */
+                x ^= c;
+                continue;
             }
-            if (point) {
-                fraction++;
-            } else {
-                digits++;
-            }
-        } else if (*q == '.' && !point) {
-            point = true; /* in a hex field, a point is followed by a fraction it cannot have */
-        } else {
-            break;
+        }
+        x ^= c;
+        if (m < SATURATED) {
+            m = m * base + d;
         }
     }
     *at = q;
-    if (digits == 0 || (f->hex && digits > f->width) || (point && (fraction == 0 || fraction > f->decimals))
+    *sum = x;
+    whole = (size_t)((point != NULL ? point : q) - digits);
+    if (point != NULL) {
+        fraction = (size_t)(q - point) - 1u;
+    }
+    if (whole == 0 || (f->hex && whole > f->width) || (point != NULL && (fraction == 0 || fraction > f->decimals))
         || (q != star && *q != PAHR_SEPARATOR)) {
         return ILAHRS_ERR_MALFORMED;
     }
@@ -1929,139 +2466,56 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 
-#if !ILAHRS_OPTIMIZE_SIZE
 /*
- * Fast path for sentences in the layout the builders write (E16: every field at its template
- * width, so one length and fixed field positions): fixed-length digit runs without a branch per
- * character. It accepts only what the general path below accepts, with the same values; on
- * anything else it steps aside and the general path decides and names the error.
- */
-#define PAHR_CANONICAL_LENGTH 48u
-
-static inline int64_t canonical_decimal(const uint8_t *p, size_t width, size_t decimals, unsigned *ok)
-{
-    unsigned negative = p[0] == '-';
-    unsigned good = 1;
-    uint32_t value = 0;
-    size_t j;
-    for (j = 0; j < width; j++) {
-        uint32_t digit = (uint32_t)p[j] - '0';
-        unsigned sign = j == 0 && width > 1 ? negative : 0u; /* a sign needs a digit after it */
-        good &= (unsigned)(digit <= 9u) | sign;
-        value = value * 10u + (sign ? 0u : digit);
-    }
-    if (decimals > 0) {
-        good &= (unsigned)(p[width] == '.');
-        for (j = 0; j < decimals; j++) {
-            uint32_t digit = (uint32_t)p[width + 1 + j] - '0';
-            good &= (unsigned)(digit <= 9u);
-            value = value * 10u + digit;
-        }
-    }
-    *ok &= good;
-    return negative ? -(int64_t)value : (int64_t)value;
-}
-
-static inline int64_t canonical_hex(const uint8_t *p, size_t width, unsigned *ok)
-{
-    unsigned good = 1;
-    uint32_t value = 0;
-    size_t j;
-    for (j = 0; j < width; j++) {
-        uint32_t digit = (uint32_t)p[j] - '0';
-        uint32_t letter = ((uint32_t)p[j] | 0x20u) - 'a';
-        unsigned is_digit = digit <= 9u;
-        good &= is_digit | (unsigned)(letter <= 5u);
-        value = value * 16u + (is_digit ? digit : letter + 10u);
-    }
-    *ok &= good;
-    return (int64_t)value;
-}
-
-static bool pahr_canonical(const uint8_t *p, uint8_t checksum, ilahrs_pahr_t *out)
-{
-    unsigned ok = xor_bytes(p + 1, 43u - 1u) == checksum;
-    int64_t v0 = canonical_decimal(p + 6, 4, 2, &ok);
-    int64_t v1 = canonical_decimal(p + 14, 3, 2, &ok);
-    int64_t v2 = canonical_decimal(p + 21, 3, 2, &ok);
-    int64_t v3 = canonical_decimal(p + 28, 3, 1, &ok);
-    int64_t v4 = canonical_decimal(p + 34, 1, 2, &ok);
-    int64_t v5 = canonical_hex(p + 39, 4, &ok);
-    ok &= (unsigned)(p[13] == PAHR_SEPARATOR);
-    ok &= (unsigned)(p[20] == PAHR_SEPARATOR);
-    ok &= (unsigned)(p[27] == PAHR_SEPARATOR);
-    ok &= (unsigned)(p[33] == PAHR_SEPARATOR);
-    ok &= (unsigned)(p[38] == PAHR_SEPARATOR);
-    ok &= (unsigned)(v0 >= (-18000)) & (unsigned)(v0 <= 18000);
-    ok &= (unsigned)(v1 >= (-9000)) & (unsigned)(v1 <= 9000);
-    ok &= (unsigned)(v2 >= 0) & (unsigned)(v2 <= 35999u);
-    ok &= (unsigned)(v3 >= (-999)) & (unsigned)(v3 <= 9999);
-    ok &= (unsigned)(v4 >= 0) & (unsigned)(v4 <= 999);
-    ok &= (unsigned)(v5 >= 0) & (unsigned)(v5 <= 65535u);
-    if (!ok) {
-        return false;
-    }
-    out->roll = (int16_t)v0;
-    out->pitch = (int16_t)v1;
-    out->heading = (uint16_t)v2;
-    out->temperature = (int16_t)v3;
-    out->vdd = (uint16_t)v4;
-    out->usw = (uint16_t)v5;
-    return true;
-}
-#endif
-
-/*
- * Everything after the CR LF search: `end` is the sentence length, CR LF its last two
- * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in
- * the order of spec/README.md, with its offset in *at and its field index in *field
+ * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
+ * CR LF search, in one pass over the fields. `end` is the sentence length, CR LF its last two
+ * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in the
+ * order of spec/README.md, with its offset in *at and its field index in *field
  * (ILAHRS_PAHR_FIELD_COUNT for none).
  */
 static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field)
 {
-    size_t star = end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
-    size_t i = PAHR_PREFIX_LENGTH;
+    const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
     size_t error_at = 0;
     size_t error_field = 0;
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
+    unsigned sum = 0;
     *field = ILAHRS_PAHR_FIELD_COUNT;
-    *at = star;
-    if (star < PAHR_PREFIX_LENGTH || p[star] != PAHR_STAR) {
+    *at = end - PAHR_TAIL;
+    if (star < q || *star != PAHR_STAR) {
         return ILAHRS_ERR_MALFORMED;
     }
-    *at = star + 1;
-    checksum = digit_value(p[star + 1]) * 16u + digit_value(p[star + 2]);
+    *at += 1;
+    checksum = digit_value(star[1]) * 16u + digit_value(star[2]);
     if (checksum > 0xFFu) {
         return ILAHRS_ERR_MALFORMED;
     }
-#if !ILAHRS_OPTIMIZE_SIZE
-    if (end == PAHR_CANONICAL_LENGTH && pahr_canonical(p, (uint8_t)checksum, out)) {
-        return ILAHRS_OK;
+    for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
+        sum ^= p[k];
     }
-#endif
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
-    for (;;) {
-        const uint8_t *q = p + i;
+    for (k = 0;; k++) {
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
-            field_error = pahr_field(&q, p + star, &ilahrs_pahr_fields[k], out);
-            error_at = i;
+            error_at = (size_t)(q - p);
             error_field = k;
+            field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         }
-        for (i = (size_t)(q - p); i < star && p[i] != PAHR_SEPARATOR; i++) {
+        for (; q < star && *q != PAHR_SEPARATOR; q++) {
+            sum ^= *q;
         }
-        k++;
-        if (i >= star) {
+        if (q >= star) {
             break;
         }
-        i++; /* the separator */
+        sum ^= *q++; /* the separator */
     }
-    if (xor_bytes(p + 1, star - 1) != checksum) {
+    if (sum != checksum) {
         return ILAHRS_ERR_BAD_CHECKSUM;
     }
     *at = PAHR_PREFIX_LENGTH;
-    if (k != ILAHRS_PAHR_FIELD_COUNT) {
+    if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
         return ILAHRS_ERR_MALFORMED;
     }
     *at = error_at;
@@ -2074,6 +2528,9 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     const uint8_t *p = (const uint8_t *)text;
     size_t i;
     size_t end;
+    size_t at;
+    size_t field;
+    ilahrs_error_kind_t kind;
     /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
     for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
@@ -2099,28 +2556,20 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     if (end < len) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
-    {
-        size_t at;
-        size_t field;
-        ilahrs_error_kind_t kind = pahr_body(p, end, out, &at, &field);
-        return kind == ILAHRS_OK
-            || fail(err, kind, at, field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
-    }
+    kind = pahr_body(p, end, out, &at, &field);
+    return kind == ILAHRS_OK
+           || fail(err, kind, at,
+                   field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
 }
 
-static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
-{
-    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
-}
-
-static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7', '8', '9', 'A', 'B', 'C', 'D', 'E', 'F' };
+static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7',
+                                            '8', '9', 'A', 'B', 'C', 'D', 'E', 'F' };
 
 /*
  * Every field is range-checked before it is written, and the longest sentence of in-range values
- * is 48 characters (the generator checks it is at most ILAHRS_PAHR_MAX_LENGTH), so
- * the sentence is built without length checks. Each number is written from its last digit: at
- * least the template width (the sign counting as one character) and all its digits.
+ * is at most ILAHRS_PAHR_MAX_LENGTH characters (the generator checks it), so the sentence is built
+ * without length checks. Each number is written from its last digit: at least the template width
+ * (the sign counting as one character) and all its digits.
  */
 size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs_error_t *err)
 {
@@ -2178,114 +2627,20 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     return at;
 }
 
-
-/* ---- Engineering values as doubles ------------------------------------------------------ */
-
-/* These take doubles but compute on their IEEE 754 binary64 bits with integers only (no
- * floating-point code linked), and give for every double the answers of the double-precision
- * expressions they replace, quoted below. A double is a sign, an 11-bit exponent e and a 52-bit
- * fraction: (2^52 + fraction) * 2^(e - 1075), or fraction * 2^-1074 if e is 0. */
-
-#define DOUBLE_SIGN ((uint64_t)1 << 63)
-#define DOUBLE_ONE ((uint64_t)1 << 52) /* the implicit leading bit */
-
-static uint64_t double_bits(double value)
-{
-    uint64_t bits;
-    memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
-
-/* float_key() for a double: the magnitude bits, negated if the sign is set. Doubles order like
- * their keys, -0.0 and 0.0 are both 0, and NaNs lie beyond the infinities, outside every range. */
-static int64_t double_key(uint64_t bits)
-{
-    int64_t magnitude = (int64_t)(bits & ~DOUBLE_SIGN);
-    return (bits & DOUBLE_SIGN) != 0 ? -magnitude : magnitude;
-}
-
-/* double_key() of (double)n, exact for |n| < 2^53 (every integer bound and C type limit here). */
-static int64_t int_key(int64_t n)
-{
-    uint64_t m = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
-    uint64_t exponent = 1074; /* 2^52's (1075), less the 1 that m's leading bit adds below */
-    int64_t magnitude;
-    if (m == 0) {
-        return 0;
-    }
-    while (m < DOUBLE_ONE) {
-        m <<= 1;
-        exponent--;
-    }
-    magnitude = (int64_t)((exponent << 52) + m);
-    return n < 0 ? -magnitude : magnitude;
-}
-
-/* The exact bounds of float fields, as double keys: `value >= low && value <= high` on doubles is
- * `low_key <= key && key <= high_key` (a NaN's key is beyond every finite bound). */
-static const int64_t ilahrs_exact_bounds[8][2] = {
-    { 0ll, 0ll }, /* 0.0 .. 0.0 */
-    { (-5183643170566569984ll), 5183643170566569984ll }, /* (-3.4028234663852886e+38) .. 3.4028234663852886e+38 */
-    { 0ll, 4645040803167600640ll }, /* 0.0 .. 360.0 */
-    { (-4640537203540230144ll), 4640537203540230144ll }, /* (-180.0) .. 180.0 */
-    { (-4636033603912859648ll), 4636033603912859648ll }, /* (-90.0) .. 90.0 */
-    { (-4671226772094713856ll), 4681608360884174848ll }, /* (-20000.0) .. 100000.0 */
-    { 4656071115628609536ll, 4657056269994033152ll }, /* 1900.002685546875 .. 2200.001708984375 */
-    { (-4645040803167600640ll), 4645040803167600640ll }, /* (-360.0) .. 360.0 */
-};
-
-/* The declination rule as double keys of the header's float constants. */
-#define DECLINATION_MIN_DKEY (-4640537203540230144ll)
-#define DECLINATION_MAX_DKEY 4640537203540230144ll
-#define DECLINATION_COMPUTE_ABOVE_DKEY 4645040803167600640ll
-
-/* value >= low && value <= high with the field's bounds (integer fields: their int bounds or
- * their C type's range, exact as doubles), then the declination rule, as compares of keys. */
-bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_error_t *err)
-{
-    int64_t key = double_key(double_bits(value));
-    int64_t low;
-    int64_t high;
-    bool ok;
-    switch (FIELD_KIND(field)) {
-    case ILAHRS_KIND_FLOAT:
-        low = ilahrs_exact_bounds[FIELD_BOUNDS(field)][0];
-        high = ilahrs_exact_bounds[FIELD_BOUNDS(field)][1];
-        break;
-    case ILAHRS_KIND_UNSIGNED:
-    case ILAHRS_KIND_SIGNED: {
-        bool is_signed = FIELD_KIND(field) == ILAHRS_KIND_SIGNED;
-        uint32_t top = 0xFFFFFFFFu >> (32 - 8 * FIELD_NUMBER_SIZE(field) + is_signed); /* the C type's maximum */
-        low = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][0] : is_signed ? -(int64_t)top - 1 : 0;
-        high = FIELD_BOUNDS(field) != 0 ? ilahrs_int_bounds[FIELD_BOUNDS(field)][1] : (int64_t)top;
-        low = int_key(low);
-        high = int_key(high);
-        break;
-    }
-    default:
-        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
-    }
-    ok = key >= low && key <= high;
-    if (ok && FIELD_ENCODING(field) == ENCODING_DECLINATION) {
-        ok = (key >= DECLINATION_MIN_DKEY && key <= DECLINATION_MAX_DKEY) || key > DECLINATION_COMPUTE_ABOVE_DKEY;
-    }
-    return ok || fail(err, ILAHRS_ERR_OUT_OF_RANGE, FIELD_OFFSET(field), FIELD_NAME(FIELD_NAME_AT(field)));
-}
-
 /* |value| * divisor rounded half away from zero, as the double code computed it: s = |value| *
  * divisor rounded to a double (to nearest, ties to even), then floor(s + 0.5) with s + 0.5 rounded
  * to a double too. For a hex field (whole, divisor 1): |value| if it is an integer. PAHR_HUGE,
  * beyond every range like the 1e15 the double code saturated at, for s >= 2^52 (infinities and
  * NaNs too) and for a hex field's fraction.
  *
- * Why this is exact: |value| is m * 2^e with m < 2^53, and m * divisor < 2^64 (divisors are at
- * most 100), so the product is exact; shifting it to 53 bits with a round and a sticky bit
- * rounds it as the double multiplication does (a product below the normal range rounds differently,
- * but stays far below 1/2). Shifting s to the binary point leaves floor(s), and the round bit adds
- * the 0.5. Rounding s + 0.5 to a double changes its floor only for s = 0.5 - 2^-54, whose sum rounds
- * up to 1.0: below 1/2 the sum lies in [1/2, 1), and from 1/2 to 2^52 it is a multiple of s's ulp
- * (at most 1/2), exact unless it just crossed a power of two, where it rounds to a neighbour with
- * the same integer part. */
+ * Why this is exact: |value| is m * 2^e with m < 2^53, and m * divisor < 2^64 (the generator
+ * refuses a divisor from 2^11), so the product is exact; shifting it to 53 bits with a round and a
+ * sticky bit rounds it as the double multiplication does (a product below the normal range rounds
+ * differently, but stays far below 1/2). Shifting s to the binary point leaves floor(s), and the
+ * round bit adds the 0.5. Rounding s + 0.5 to a double changes its floor only for s = 0.5 - 2^-54,
+ * whose sum rounds up to 1.0: below 1/2 the sum lies in [1/2, 1), and from 1/2 to 2^52 it is a
+ * multiple of s's ulp (at most 1/2), exact unless it just crossed a power of two, where it rounds
+ * to a neighbour with the same integer part. */
 static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
 {
     uint64_t m = bits & (DOUBLE_ONE - 1u);
@@ -2360,7 +2715,9 @@ out_of_range:
     return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
 }
 
-/* (double)n without floating-point code, for |n| < 2^53. */
+#if PAHR_HEX_FIELDS
+/* (double)n without floating-point code, for |n| < 2^53: for the hex fields of
+ * ilahrs_pahr_from_values(). */
 static double int_double(int64_t n)
 {
     int64_t key = int_key(n);
@@ -2369,8 +2726,10 @@ static double int_double(int64_t n)
     memcpy(&value, &bits, sizeof value);
     return value;
 }
+#endif
 
-bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double temperature, double vdd, uint16_t usw, ilahrs_pahr_t *out, ilahrs_error_t *err)
+bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double temperature, double vdd, uint16_t usw,
+                             ilahrs_pahr_t *out, ilahrs_error_t *err)
 {
     double values[ILAHRS_PAHR_FIELD_COUNT];
     values[0] = roll;
@@ -2381,173 +2740,44 @@ bool ilahrs_pahr_from_values(double roll, double pitch, double heading, double t
     values[5] = int_double(usw);
     return ilahrs_pahr_from_array(values, out, err);
 }
-/* ---- Stream decoder ------------------------------------------------------------------- */
 
+/* ---- Stream decoder -------------------------------------------------------------------- */
 
+/*
+ * Sentences in the stream decoder (ilahrs.h, "Build switches"). Without them it finds exactly the
+ * frames the full decoder finds, in the same order: a valid sentence is printable ASCII ending in
+ * CR LF, so no frame starts inside one, and a frame's validity never depends on what precedes it.
+ */
+#ifndef ILAHRS_PAHR_FIELD_COUNT
+#undef ILAHRS_STREAM_SENTENCES
+#define ILAHRS_STREAM_SENTENCES 0
+#elif !defined(ILAHRS_STREAM_SENTENCES)
+#define ILAHRS_STREAM_SENTENCES 1
+#endif
+
+/* The stream decoder's counters fit its buffer, which holds the longest message. */
+typedef char
+    ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MAX_SIZE <= ILAHRS_MAX_MESSAGE_SIZE ? 1 : -1];
+
+/*
+ * How the decoder works. At each position a candidate message starts if the byte there may start
+ * one (a frame's first header byte, or "$"); it is decided as valid (handed out, and decoding goes
+ * on after it), invalid (the byte is discarded and decoding goes on at the next one) or undecided:
+ * it needs more bytes. A decision never changes when bytes follow, so deciding late gives the same
+ * messages as deciding early.
+ *
+ * scan() decides in place, in the caller's input (a message then points into it) or in `held`. A
+ * candidate still undecided at the end of the input waits at the front of `held`, and the bytes
+ * that follow reach it one at a time (ilahrs_stream_push()): a byte that cannot decide it (a
+ * frame's byte short of its length, a sentence's printable character) is only stored, so each byte
+ * is examined a bounded number of times however the input is cut. Once decided, the held bytes are
+ * scanned in place; those after a message found there wait in held[start..start + count) for the
+ * next call.
+ */
 #define NEED_MORE (-1)
 #define INVALID 0
 
-
-/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or
- * NEED_MORE bytes to decide. */
-static inline int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
-{
-    {
-        uint32_t length;
-        size_t total;
-        size_t at;
-        if (n < 2u) {
-            return NEED_MORE;
-        }
-        if (p[1] != ILAHRS_FRAME_HEADER_1) {
-            return INVALID;
-        }
-        if (n < ILAHRS_FRAME_PAYLOAD_OFFSET) {
-            return NEED_MORE;
-        }
-        if (!message_type_valid(p[ILAHRS_FRAME_MESSAGE_TYPE_OFFSET])) {
-            return INVALID;
-        }
-        length = get_le(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-        if (length < ILAHRS_FRAME_MIN_LENGTH || length > ILAHRS_FRAME_MAX_LENGTH) {
-            return INVALID;
-        }
-        total = ILAHRS_FRAME_HEADER_SIZE + (size_t)length;
-        if (n < total) {
-            return NEED_MORE;
-        }
-        at = total - ILAHRS_FRAME_CHECKSUM_SIZE;
-        if ((uint16_t)sum_bytes(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
-            != get_le(p + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
-            return INVALID;
-        }
-        msg->kind = ILAHRS_MESSAGE_FRAME;
-        msg->data = p;
-        msg->size = total;
-        msg->frame.message_type = (uint8_t)p[ILAHRS_FRAME_MESSAGE_TYPE_OFFSET];
-        msg->frame.reserved = (uint8_t)p[ILAHRS_FRAME_RESERVED_OFFSET];
-        msg->frame.payload = p + ILAHRS_FRAME_PAYLOAD_OFFSET;
-        msg->frame.payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
-        return (int)total;
-    }
-}
-
-
-#if ILAHRS_STREAM_SENTENCES
-#if ILAHRS_OPTIMIZE_SIZE
-/*
- * The sentence p[0..n) whose prefix matched, n its length through its first LF (n > the prefix
- * length), with its fields in *out: exactly what ilahrs_pahr_parse() accepts, decided without
- * naming the error.
- */
-static bool pahr_valid(const uint8_t *p, size_t n, ilahrs_pahr_t *out)
-{
-    const uint8_t *star = p + n - PAHR_TAIL; /* within p: n > PAHR_PREFIX_LENGTH >= PAHR_TAIL */
-    const pahr_field_t *f = ilahrs_pahr_fields;
-    const uint8_t *q = p + PAHR_PREFIX_LENGTH;
-    if (star < q || star[PAHR_TAIL - 2] != PAHR_CR || *star != PAHR_STAR
-        || xor_bytes(p + 1, (size_t)(star - p) - 1) != digit_value(star[1]) * 16u + digit_value(star[2])) {
-        return false;
-    }
-    for (;; q++, f++) {
-        if (pahr_field(&q, star, f, out) != ILAHRS_OK) {
-            return false;
-        }
-        if (f == &ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT - 1] || q == star) {
-            return f == &ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT - 1] && q == star;
-        }
-    }
-}
-
-/* The sentence at p[0..n): as frame_candidate(). It runs to the first LF within the longest
- * sentence. */
-static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
-{
-    size_t i;
-    for (i = 0; i < n && i < ILAHRS_PAHR_MAX_LENGTH; i++) {
-        if (i < PAHR_PREFIX_LENGTH && p[i] != (uint8_t)PAHR_PREFIX[i]) {
-            return INVALID;
-        }
-        if (p[i] == PAHR_LF) {
-            if (!pahr_valid(p, i + 1, &msg->sentence)) {
-                return INVALID;
-            }
-            msg->kind = ILAHRS_MESSAGE_SENTENCE;
-            msg->data = p;
-            msg->size = i + 1;
-            return (int)(i + 1);
-        }
-    }
-    return i == ILAHRS_PAHR_MAX_LENGTH ? INVALID : NEED_MORE;
-}
-#else
-/* True if p[0..n) is the start of the sentence prefix. */
-static bool pahr_prefix(const uint8_t *p, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++) {
-        if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
-/* The sentence at p[0..n) (p[0] is "$"): as frame_candidate(). */
-static int sentence_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
-{
-    {
-        size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
-        const uint8_t *lf;
-        size_t i;
-        size_t at;
-        size_t field;
-#if !ILAHRS_OPTIMIZE_SIZE
-        /* A sentence in the builders' layout needs no search for its LF: if the characters
-         * before CR LF are a valid sentence, none of them is an LF. */
-        if (n >= PAHR_CANONICAL_LENGTH && p[PAHR_CANONICAL_LENGTH - 1] == PAHR_LF && p[PAHR_CANONICAL_LENGTH - 2] == PAHR_CR
-            && pahr_prefix(p, PAHR_PREFIX_LENGTH)
-            && pahr_body(p, PAHR_CANONICAL_LENGTH, &msg->sentence, &at, &field) == ILAHRS_OK) {
-            msg->kind = ILAHRS_MESSAGE_SENTENCE;
-            msg->data = p;
-            msg->size = PAHR_CANONICAL_LENGTH;
-            return (int)PAHR_CANONICAL_LENGTH;
-        }
-#endif
-        lf = (const uint8_t *)memchr(p, PAHR_LF, limit);
-        if (lf == NULL) {
-            if (n >= ILAHRS_PAHR_MAX_LENGTH) {
-                return INVALID;
-            }
-            /* Reject now what can never become a sentence: a wrong identifier, or a byte that
-             * is not printable (CR only as the last byte so far). Waiting gives the same answer. */
-            if (!pahr_prefix(p, n < PAHR_PREFIX_LENGTH ? n : PAHR_PREFIX_LENGTH)) {
-                return INVALID;
-            }
-            for (i = PAHR_PREFIX_LENGTH; i < n; i++) {
-                if ((p[i] < 0x20 || p[i] > 0x7E) && !(p[i] == PAHR_CR && i == n - 1)) {
-                    return INVALID;
-                }
-            }
-            return NEED_MORE;
-        }
-        /* The first LF ends the candidate, so the only CR LF it can hold is its last two
-         * characters: what ilahrs_pahr_parse() checks before pahr_body(). */
-        i = (size_t)(lf - p) + 1;
-        if (i < PAHR_PREFIX_LENGTH + 2 || !pahr_prefix(p, PAHR_PREFIX_LENGTH) || p[i - 2] != PAHR_CR
-            || pahr_body(p, i, &msg->sentence, &at, &field) != ILAHRS_OK) {
-            return INVALID;
-        }
-        msg->kind = ILAHRS_MESSAGE_SENTENCE;
-        msg->data = p;
-        msg->size = i;
-        return (int)i;
-    }
-}
-#endif
-#endif
-
-#if !ILAHRS_OPTIMIZE_SIZE
+/* Bytes that may start a message. */
 static bool may_start(uint8_t byte)
 {
 #if ILAHRS_STREAM_SENTENCES
@@ -2557,19 +2787,131 @@ static bool may_start(uint8_t byte)
 #endif
     return byte == ILAHRS_FRAME_HEADER_0;
 }
+
+/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE. */
+static int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
+    int size = frame_check(p, n, &msg->frame);
+    if (size < 0) {
+        return size == -ILAHRS_ERR_TRUNCATED ? NEED_MORE : INVALID;
+    }
+    msg->kind = ILAHRS_MESSAGE_FRAME;
+    msg->data = p;
+    msg->size = (size_t)size;
+    return size;
+}
+
+#if ILAHRS_STREAM_SENTENCES
+/* The characters a sentence holds before its CR LF. */
+static bool printable(uint8_t byte)
+{
+    return (unsigned)(byte - 0x20u) <= 0x7Eu - 0x20u;
+}
+
+/*
+ * The sentence at p[0..n) (p[0] is "$"), of which p[0..seen) were examined before: as
+ * frame_candidate(). It runs to its first LF, within the longest sentence, where pahr_body()
+ * decides it as ilahrs_pahr_parse() would; before that, a byte that no sentence holds decides it.
+ */
+static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
+{
+    size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
+    size_t i;
+    size_t at;
+    size_t field;
+    for (i = 1; i < PAHR_PREFIX_LENGTH; i++) {
+        if (i == n) {
+            return NEED_MORE;
+        }
+        if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+            return INVALID;
+        }
+    }
+    seen = seen > i ? seen : i;
+    for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
+    }
+    if (i == limit) {
+        for (i = seen; i < limit; i++) {
+            if (!printable(p[i]) && p[i] != PAHR_CR) {
+                return INVALID;
+            }
+        }
+        return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
+    }
+    /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
+     * what ilahrs_pahr_parse() checks before pahr_body(). */
+    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence, &at, &field) != ILAHRS_OK) {
+        return INVALID;
+    }
+    msg->kind = ILAHRS_MESSAGE_SENTENCE;
+    msg->data = p;
+    msg->size = i + 1;
+    return (int)(i + 1);
+}
 #endif
 
-/* The message at p[0..n): its size if valid, INVALID, or NEED_MORE bytes to decide. */
-static int candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+/* The message at p[0..n), of which p[0..seen) were examined before: as frame_candidate(). */
+static int candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
 {
     if (p[0] == ILAHRS_FRAME_HEADER_0) {
         return frame_candidate(p, n, msg);
     }
 #if ILAHRS_STREAM_SENTENCES
-    return sentence_candidate(p, n, msg);
+    if (p[0] == PAHR_START) {
+        return sentence_candidate(p, n, seen, msg);
+    }
 #else
-    return INVALID;
+    (void)seen;
 #endif
+    return INVALID;
+}
+
+/*
+ * Decide on *data / *len in place (the caller's input, or the held bytes, held[start..start +
+ * count)); the first candidate's first `seen` bytes were examined before. True with a message,
+ * *data / *len then past it (for held bytes: start and count). False when every byte is decided, or
+ * an undecided candidate waits at the front of `held` (held[0..count), shorter than the buffer);
+ * unless `final`: the input has ended, so an undecided candidate is invalid.
+ */
+static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t seen, bool final, ilahrs_message_t *msg)
+{
+    const uint8_t *p = *data;
+    size_t n = *len;
+    for (; n != 0; p++, n--, seen = 0) {
+        int r = may_start(*p) ? candidate(p, n, seen, msg) : INVALID;
+        if (r > 0) {
+            *data = p + r;
+            *len = n - (size_t)r;
+            return true;
+        }
+        if (r == NEED_MORE && !final) {
+            break;
+        }
+        s->discarded++;
+    }
+    if (n != 0 && p != s->held) {
+        copy_forward(s->held, p, n);
+    }
+    s->count = (uint8_t)n;
+    *data = p + n;
+    *len = 0;
+    return false;
+}
+
+/* scan() on the held bytes: a message is handed out from there (the bytes after it wait in
+ * held[start..start + count) for the next call), else the held bytes are all decided or wait at the
+ * front. */
+static bool scan_held(ilahrs_stream_t *s, size_t seen, bool final, ilahrs_message_t *msg)
+{
+    const uint8_t *p = s->held + s->start;
+    size_t n = s->count;
+    s->start = 0;
+    if (!scan(s, &p, &n, seen, final, msg)) {
+        return false;
+    }
+    s->start = (uint8_t)(p - s->held); /* after the message: not 0 */
+    s->count = (uint8_t)n;
+    return true;
 }
 
 void ilahrs_stream_init(ilahrs_stream_t *stream)
@@ -2579,457 +2921,83 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
     stream->count = 0;
 }
 
-#if ILAHRS_OPTIMIZE_SIZE
-/*
- * The smallest decoder: every byte goes through the held buffer, and the candidate at its front
- * is decided again after each byte. A message is handed out from the buffer; `start` marks its
- * end until the next call. Each round takes one byte of *data / *len, if any, then decides; so
- * ilahrs_stream_push() always takes its byte. (Taking a byte before deciding on the bytes held
- * after a message changes no answer: a decided candidate stays decided when bytes follow it.)
- * `final`: the input has ended, so a candidate that needs more bytes is discarded.
- */
-static bool step(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool final, ilahrs_message_t *msg)
+/* A byte that may decide something: appended to the held bytes (the message handed out last
+ * leaves), which are then decided. */
+static NOINLINE bool push_decide(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
 {
-    uint8_t *h = s->held;
-    size_t count = s->count;
-    copy_forward(h, h + s->start, count);
-    s->start = 0;
-    for (;;) {
-        bool took = *len != 0;
-        if (took) {
-            /* In bounds: a candidate that waits is shorter than the longest message, and the
-             * bytes held after a message are fewer still. */
-            h[count++] = **data;
-            (*data)++;
-            (*len)--;
-        }
-        while (count != 0) {
-            int r = candidate(h, count, msg);
-            if (r > 0) {
-                s->start = (uint8_t)r;
-                s->count = (uint8_t)(count - (size_t)r);
-                return true;
-            }
-            if (r == NEED_MORE && !final) {
-                break;
-            }
-            s->discarded++;
-            count--;
-            copy_forward(h, h + 1, count);
-        }
-        if (!took) {
-            s->count = (uint8_t)count;
-            return false;
-        }
-    }
-}
-
-bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
-{
-    return step(s, data, len, false, msg);
-}
-
-bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
-{
-    const uint8_t *p = &byte;
-    size_t one = 1;
-    return step(s, &p, &one, false, msg);
-}
-
-bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
-{
-    size_t none = 0;
-    return step(s, NULL, &none, false, msg);
-}
-
-bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
-{
-    size_t none = 0;
-    return step(s, NULL, &none, true, msg);
-}
-#else
-/*
- * With start 0 and bytes held, the candidate at held[0] was examined and waits for more bytes
- * (after a message, start is its end until the next call). True if `byte` cannot decide it: a
- * frame still short of its length, or a sentence still without LF within the longest sentence.
- */
-static bool still_waiting(const ilahrs_stream_t *s, uint8_t byte)
-{
-    size_t n = s->count;
-    const uint8_t *h = s->held;
-    if (h[0] == ILAHRS_FRAME_HEADER_0) {
-        return n >= ILAHRS_FRAME_PAYLOAD_OFFSET
-            && n + 1 < ILAHRS_FRAME_HEADER_SIZE + get_le(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-    }
-    return n >= PAHR_PREFIX_LENGTH && n + 1 < ILAHRS_PAHR_MAX_LENGTH && byte != PAHR_LF;
-}
-
-/*
- * Decide on the held bytes, topping them up from the input. True with a message; false when
- * the held bytes are gone (input may remain) or wait for more input (all input taken).
- * `final`: the input has ended, so a candidate that needs more bytes is discarded.
- */
-static bool drain(ilahrs_stream_t *s, const uint8_t **data, size_t *len, bool final, ilahrs_message_t *msg)
-{
-    uint8_t *buf = s->held;
-    size_t count;
-    size_t pos = 0;
-    size_t taken = 0; /* input bytes taken in this call */
-    size_t fresh = 0; /* input bytes in buf, always its last ones (when fewer remain, `rest` bounds them) */
+    size_t seen = s->count;
     if (s->start != 0) {
-        copy_forward(buf, buf + s->start, s->count);
+        copy_forward(s->held, s->held + s->start, seen); /* never examined */
         s->start = 0;
+        seen = 0;
     }
-    count = s->count;
-    for (;;) {
-        size_t add = *len - taken;
-        if (add > sizeof s->held - count) {
-            add = sizeof s->held - count;
-        }
-        if (add > 0) {
-            copy_forward(buf + count, *data + taken, add);
-            count += add;
-            taken += add;
-            fresh += add;
-        }
-        while (pos < count) {
-            int r;
-            if (!may_start(buf[pos])) {
-                pos++;
-                s->discarded++;
-                continue;
-            }
-            r = candidate(buf + pos, count - pos, msg);
-            if (r > 0) {
-                size_t rest = count - pos - (size_t)r;
-                size_t back = rest < fresh ? rest : fresh;
-                taken -= back;
-                s->start = (uint8_t)(pos + (size_t)r);
-                s->count = (uint8_t)(rest - back);
-                if (taken > 0) {
-                    *data += taken;
-                    *len -= taken;
-                }
-                return true;
-            }
-            if (r == NEED_MORE && !final && !(pos == 0 && count == sizeof s->held)) {
-                break;
-            }
-            pos++;
-            s->discarded++;
-        }
-        if (pos == count || taken == *len) {
-            /* Held bytes gone, or all input taken: keep what waits, return the rest. */
-            copy_forward(buf, buf + pos, count - pos);
-            s->start = 0;
-            s->count = (uint8_t)(count - pos);
-            if (taken > 0) {
-                *data += taken;
-                *len -= taken;
-            }
-            return false;
-        }
-        /* The buffer is full and the candidate at pos waits: make room, take more input. */
-        copy_forward(buf, buf + pos, count - pos);
-        count -= pos;
-        pos = 0;
+    s->held[s->count++] = byte; /* room: the held bytes wait for a longer message, or followed one */
+    return scan_held(s, seen, false, msg);
+}
+
+bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+{
+    /* Most bytes only extend the candidate waiting in held[0..count): a frame's short of its
+     * header, or of its length; a sentence's short of its prefix, or printable (not the LF). */
+    const uint8_t *h = s->held;
+    size_t n = s->count;
+    size_t until = 0; /* bytes the candidate needs at least before it can be decided */
+    if (s->start != 0 || n == 0) {
+        return push_decide(s, byte, msg);
     }
+    if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        until = n < ILAHRS_FRAME_PAYLOAD_OFFSET
+                    ? ILAHRS_FRAME_PAYLOAD_OFFSET
+                    : ILAHRS_FRAME_HEADER_SIZE
+                          + LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    }
+#if ILAHRS_STREAM_SENTENCES
+    else if (h[0] == PAHR_START) {
+        until = n < PAHR_PREFIX_LENGTH ? PAHR_PREFIX_LENGTH : printable(byte) ? ILAHRS_PAHR_MAX_LENGTH : 0;
+    }
+#endif
+    if (n + 1 >= until) {
+        return push_decide(s, byte, msg);
+    }
+    s->held[n] = byte;
+    s->count = (uint8_t)(n + 1);
+    return false;
 }
 
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
 {
-    const uint8_t *p;
-    size_t n;
-    size_t i = 0;
-    if (s->count != 0 && drain(s, data, len, false, msg)) {
-        return true;
-    }
-    p = *data;
-    n = *len;
-    if (s->count != 0 || n == 0) {
-        return false;
-    }
-    while (i < n) {
-        size_t j = i;
-        int r;
-        while (j < n && !may_start(p[j])) {
-            j++;
-        }
-        s->discarded += j - i;
-        if (j == n) {
-            break;
-        }
-        r = candidate(p + j, n - j, msg);
-        if (r > 0) {
-            *data = p + j + (size_t)r;
-            *len = n - j - (size_t)r;
-            return true;
-        }
-        if (r == NEED_MORE) {
-            /* The rest of the chunk is the start of a message: keep it (n - j < held size). */
-            memcpy(s->held, p + j, n - j);
-            s->start = 0;
-            s->count = (uint8_t)(n - j);
-            break;
-        }
-        s->discarded++;
-        i = j + 1;
-    }
-    *data = p + n;
-    *len = 0;
-    return false;
-}
-bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
-{
-    size_t none = 0;
-    const uint8_t *nothing = &byte;
-    if (s->count == 0) {
-        if (!may_start(byte)) {
-            s->discarded++;
+    for (;;) {
+        if (s->start != 0) {
+            if (scan_held(s, 0, false, msg)) {
+                return true;
+            }
+        } else if (*len == 0) {
             return false;
+        } else if (s->count != 0) {
+            /* A candidate waits in `held`: the input reaches it a byte at a time. */
+            (*len)--;
+            if (ilahrs_stream_push(s, *(*data)++, msg)) {
+                return true;
+            }
+        } else {
+            /* In place in the input; a candidate that waits at its end moves to `held`. */
+            return scan(s, data, len, 0, false, msg);
         }
-        s->start = 0;
-    } else if (s->start != 0) {
-        copy_forward(s->held, s->held + s->start, s->count);
-        s->start = 0;
-    } else if (still_waiting(s, byte)) {
-        s->held[s->count++] = byte;
-        return false;
     }
-    s->held[s->count] = byte;
-    s->count++;
-    return drain(s, &nothing, &none, false, msg);
 }
 
 bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
-    static const uint8_t empty[1] = { 0 };
-    size_t none = 0;
-    const uint8_t *nothing = empty;
-    return s->count != 0 && drain(s, &nothing, &none, false, msg);
+    /* Without a message handed out, the held bytes are a candidate waiting for input. */
+    return s->start != 0 && scan_held(s, 0, false, msg);
 }
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
-    static const uint8_t empty[1] = { 0 };
-    size_t none = 0;
-    const uint8_t *nothing = empty;
-    if (s->count != 0 && drain(s, &nothing, &none, true, msg)) {
-        return true;
-    }
-    s->start = 0;
-    s->count = 0;
-    return false;
+    return scan_held(s, 0, true, msg);
 }
-#endif
 
-
-/* ---- Device state machine (6.1, 6.3, 6.4) --------------------------------------- */
-
-/* States, one array per column: mode, the parameter block awaited (payload, -1: none), the
- * event its timer fires (ILAHRS_EVENT_COUNT: none). */
-static const uint8_t ilahrs_state_modes[ILAHRS_STATE_COUNT] = {
-    ILAHRS_MODE_IDLE, /* idle */
-    ILAHRS_MODE_IDLE, /* awaiting_parameters */
-    ILAHRS_MODE_CONTINUOUS, /* aligning_continuous */
-    ILAHRS_MODE_CONTINUOUS, /* continuous */
-    ILAHRS_MODE_ON_REQUEST, /* aligning_on_request */
-    ILAHRS_MODE_ON_REQUEST, /* on_request */
-    ILAHRS_MODE_SLEEP, /* sleep */
-    ILAHRS_MODE_CALIBRATION, /* calibration_awaiting_parameters */
-    ILAHRS_MODE_CALIBRATION, /* calibration_aligning */
-    ILAHRS_MODE_CALIBRATION, /* calibration_accumulating */
-    ILAHRS_MODE_CALIBRATION, /* calibration_deciding */
-    ILAHRS_MODE_CALIBRATION, /* runs_awaiting_parameters */
-    ILAHRS_MODE_CALIBRATION, /* runs_ready */
-    ILAHRS_MODE_CALIBRATION, /* run_awaiting_parameters */
-    ILAHRS_MODE_CALIBRATION, /* run_aligning */
-    ILAHRS_MODE_CALIBRATION, /* run_accumulating */
-};
-
-static const int8_t ilahrs_state_blocks[ILAHRS_STATE_COUNT] = {
-ILAHRS_PAYLOAD_NONE, /* idle */
-ILAHRS_PAYLOAD_AHRS_PARAMETERS_LOAD, /* awaiting_parameters */
-ILAHRS_PAYLOAD_NONE, /* aligning_continuous */
-ILAHRS_PAYLOAD_NONE, /* continuous */
-ILAHRS_PAYLOAD_NONE, /* aligning_on_request */
-ILAHRS_PAYLOAD_NONE, /* on_request */
-ILAHRS_PAYLOAD_NONE, /* sleep */
-ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* calibration_awaiting_parameters */
-ILAHRS_PAYLOAD_NONE, /* calibration_aligning */
-ILAHRS_PAYLOAD_NONE, /* calibration_accumulating */
-ILAHRS_PAYLOAD_NONE, /* calibration_deciding */
-ILAHRS_PAYLOAD_CALIBRATION_PARAMETERS, /* runs_awaiting_parameters */
-ILAHRS_PAYLOAD_NONE, /* runs_ready */
-ILAHRS_PAYLOAD_CALIBRATION_RUN_PARAMETERS, /* run_awaiting_parameters */
-ILAHRS_PAYLOAD_NONE, /* run_aligning */
-ILAHRS_PAYLOAD_NONE, /* run_accumulating */
-};
-
-static const uint8_t ilahrs_state_timers[ILAHRS_STATE_COUNT] = {
-ILAHRS_EVENT_COUNT, /* idle */
-ILAHRS_EVENT_COUNT, /* awaiting_parameters */
-ILAHRS_EVENT_ALIGNMENT_DONE, /* aligning_continuous */
-ILAHRS_EVENT_OUTPUT_DUE, /* continuous */
-ILAHRS_EVENT_ALIGNMENT_DONE, /* aligning_on_request */
-ILAHRS_EVENT_COUNT, /* on_request */
-ILAHRS_EVENT_COUNT, /* sleep */
-ILAHRS_EVENT_COUNT, /* calibration_awaiting_parameters */
-ILAHRS_EVENT_ALIGNMENT_DONE, /* calibration_aligning */
-ILAHRS_EVENT_ACCUMULATION_DONE, /* calibration_accumulating */
-ILAHRS_EVENT_COUNT, /* calibration_deciding */
-ILAHRS_EVENT_COUNT, /* runs_awaiting_parameters */
-ILAHRS_EVENT_COUNT, /* runs_ready */
-ILAHRS_EVENT_COUNT, /* run_awaiting_parameters */
-ILAHRS_EVENT_ALIGNMENT_DONE, /* run_aligning */
-ILAHRS_EVENT_ACCUMULATION_DONE, /* run_accumulating */
-};
-
-/* Answers: payload table (-1: none), USW mode of an output answer (NO_USW_MODE: none). */
-#define NO_USW_MODE 0xFFu
-static const struct {
-    int8_t payload;
-    uint8_t usw_mode;
-} ilahrs_answers[ILAHRS_ANSWER_COUNT] = {
-    { ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* ack */
-    { ILAHRS_PAYLOAD_AHRS_PARAMETERS_READ, NO_USW_MODE }, /* ahrs_parameters_read */
-    { ILAHRS_PAYLOAD_FIRMWARE_VERSION, NO_USW_MODE }, /* firmware_version */
-    { ILAHRS_PAYLOAD_BIT_RESULT, NO_USW_MODE }, /* bit_result */
-    { ILAHRS_PAYLOAD_CALIBRATION_STATUS, NO_USW_MODE }, /* calibration_status */
-    { ILAHRS_PAYLOAD_INITIAL_ALIGNMENT, NO_USW_MODE }, /* initial_alignment */
-    { ILAHRS_PAYLOAD_NONE, NO_USW_MODE }, /* output */
-    { ILAHRS_PAYLOAD_NONE, ILAHRS_USW_MODE_SLEEP }, /* output_sleep */
-    { ILAHRS_PAYLOAD_CALIBRATION_RESULT, NO_USW_MODE }, /* calibration_result */
-    { ILAHRS_PAYLOAD_CALIBRATION_RUN_RESULT, NO_USW_MODE }, /* calibration_run_result */
-};
-
-/* Answer sequences, one after the other; sequence k is ilahrs_sends[ilahrs_send_start[k] ..
- * ilahrs_send_start[k + 1]). */
-static const uint8_t ilahrs_sends[10] = { ILAHRS_ANSWER_ACK, ILAHRS_ANSWER_AHRS_PARAMETERS_READ, ILAHRS_ANSWER_FIRMWARE_VERSION, ILAHRS_ANSWER_BIT_RESULT, ILAHRS_ANSWER_CALIBRATION_STATUS, ILAHRS_ANSWER_INITIAL_ALIGNMENT, ILAHRS_ANSWER_OUTPUT, ILAHRS_ANSWER_OUTPUT_SLEEP, ILAHRS_ANSWER_CALIBRATION_RESULT, ILAHRS_ANSWER_CALIBRATION_RUN_RESULT };
-static const uint8_t ilahrs_send_start[12] = { 0, 1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
-
-/* The distinct outcomes of the table: next state << SEQUENCE_BITS | answer sequence. */
-#define SEQUENCE_BITS 4u
-static const uint8_t ilahrs_outcomes[27] = {
-    (ILAHRS_STATE_ALIGNING_CONTINUOUS << SEQUENCE_BITS) | 0u, /* 1: aligning_continuous, 0 */
-    (ILAHRS_STATE_ALIGNING_ON_REQUEST << SEQUENCE_BITS) | 0u, /* 2: aligning_on_request, 0 */
-    (ILAHRS_STATE_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 3: awaiting_parameters, nothing */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 2u, /* 4: idle, 1 */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 3u, /* 5: idle, 2 */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 4u, /* 6: idle, 3 */
-    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 4u, /* 7: on_request, 3 */
-    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 1u, /* 8: sleep, nothing */
-    (ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 9: calibration_awaiting_parameters, nothing */
-    (ILAHRS_STATE_RUNS_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 10: runs_awaiting_parameters, nothing */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 0u, /* 11: idle, 0 */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 5u, /* 12: idle, 4 */
-    (ILAHRS_STATE_IDLE << SEQUENCE_BITS) | 1u, /* 13: idle, nothing */
-    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 1u, /* 14: runs_ready, nothing */
-    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 6u, /* 15: continuous, 5 */
-    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 6u, /* 16: on_request, 5 */
-    (ILAHRS_STATE_CONTINUOUS << SEQUENCE_BITS) | 7u, /* 17: continuous, 6 */
-    (ILAHRS_STATE_ON_REQUEST << SEQUENCE_BITS) | 7u, /* 18: on_request, 6 */
-    (ILAHRS_STATE_SLEEP << SEQUENCE_BITS) | 8u, /* 19: sleep, 7 */
-    (ILAHRS_STATE_CALIBRATION_ALIGNING << SEQUENCE_BITS) | 0u, /* 20: calibration_aligning, 0 */
-    (ILAHRS_STATE_CALIBRATION_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 21: calibration_accumulating, 5 */
-    (ILAHRS_STATE_CALIBRATION_DECIDING << SEQUENCE_BITS) | 9u, /* 22: calibration_deciding, 8 */
-    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 0u, /* 23: runs_ready, 0 */
-    (ILAHRS_STATE_RUN_AWAITING_PARAMETERS << SEQUENCE_BITS) | 1u, /* 24: run_awaiting_parameters, nothing */
-    (ILAHRS_STATE_RUN_ALIGNING << SEQUENCE_BITS) | 0u, /* 25: run_aligning, 0 */
-    (ILAHRS_STATE_RUN_ACCUMULATING << SEQUENCE_BITS) | 6u, /* 26: run_accumulating, 5 */
-    (ILAHRS_STATE_RUNS_READY << SEQUENCE_BITS) | 10u, /* 27: runs_ready, 9 */
-};
-
-/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Most events do the same
- * in a state, so each state has a default cell, and ilahrs_cells lists the cells that differ from
- * their state's default, by state and event: (state * ILAHRS_EVENT_COUNT + event) << CELL_BITS |
- * cell. Events are the commands in ilahrs_command_t order, then parameter_block, other_message, unknown, block_timeout, alignment_done, accumulation_done, output_due. */
-#define CELL_BITS 5u
-#define CELL_COUNT 65u
-static const uint8_t ilahrs_state_cells[ILAHRS_STATE_COUNT] = { 0, 13, 0, 0, 0, 0, 0, 13, 0, 0, 0, 13, 0, 14, 0, 0 };
-
-static const uint16_t ilahrs_cells[65] = {
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 0u) << CELL_BITS) | 1u, /* idle, AHRScont1 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 1u) << CELL_BITS) | 1u, /* idle, AHRScont2 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 2u) << CELL_BITS) | 1u, /* idle, AHRScont3 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 3u) << CELL_BITS) | 2u, /* idle, AHRSreq1 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 4u) << CELL_BITS) | 2u, /* idle, AHRSreq2 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 5u) << CELL_BITS) | 2u, /* idle, AHRSreq3 */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 6u) << CELL_BITS) | 1u, /* idle, NMEAcont */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 7u) << CELL_BITS) | 2u, /* idle, NMEAreq */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* idle, Stop */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 10u) << CELL_BITS) | 3u, /* idle, LoadAHRSPar */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 11u) << CELL_BITS) | 4u, /* idle, ReadAHRSPar */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* idle, LowPowerOn */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 14u) << CELL_BITS) | 5u, /* idle, GetVerFirmware */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 6u, /* idle, GetBIT */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 16u) << CELL_BITS) | 9u, /* idle, Start2DClb */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 17u) << CELL_BITS) | 10u, /* idle, Start2D2TClb */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 18u) << CELL_BITS) | 9u, /* idle, Start3DClb */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 24u) << CELL_BITS) | 11u, /* idle, ClearClb */
-    (((ILAHRS_STATE_IDLE * ILAHRS_EVENT_COUNT) + 25u) << CELL_BITS) | 12u, /* idle, GetClbRes */
-    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 11u, /* awaiting_parameters, parameter_block */
-    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* awaiting_parameters, alignment_done */
-    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* awaiting_parameters, accumulation_done */
-    (((ILAHRS_STATE_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* awaiting_parameters, output_due */
-    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_continuous, Stop */
-    (((ILAHRS_STATE_ALIGNING_CONTINUOUS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 15u, /* aligning_continuous, alignment_done */
-    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* continuous, Stop */
-    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 19u, /* continuous, LowPowerOn */
-    (((ILAHRS_STATE_CONTINUOUS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 17u, /* continuous, output_due */
-    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* aligning_on_request, Stop */
-    (((ILAHRS_STATE_ALIGNING_ON_REQUEST * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 16u, /* aligning_on_request, alignment_done */
-    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 8u) << CELL_BITS) | 18u, /* on_request, GetDataReq */
-    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 9u) << CELL_BITS) | 13u, /* on_request, Stop */
-    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 12u) << CELL_BITS) | 8u, /* on_request, LowPowerOn */
-    (((ILAHRS_STATE_ON_REQUEST * ILAHRS_EVENT_COUNT) + 15u) << CELL_BITS) | 7u, /* on_request, GetBIT */
-    (((ILAHRS_STATE_SLEEP * ILAHRS_EVENT_COUNT) + 13u) << CELL_BITS) | 13u, /* sleep, LowPowerOff */
-    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_awaiting_parameters, ExitClb */
-    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 20u, /* calibration_awaiting_parameters, parameter_block */
-    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, alignment_done */
-    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, accumulation_done */
-    (((ILAHRS_STATE_CALIBRATION_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* calibration_awaiting_parameters, output_due */
-    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_aligning, ExitClb */
-    (((ILAHRS_STATE_CALIBRATION_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 21u, /* calibration_aligning, alignment_done */
-    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 22u, /* calibration_accumulating, StopClbRun */
-    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_accumulating, ExitClb */
-    (((ILAHRS_STATE_CALIBRATION_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 22u, /* calibration_accumulating, accumulation_done */
-    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 22u) << CELL_BITS) | 11u, /* calibration_deciding, AcceptClb */
-    (((ILAHRS_STATE_CALIBRATION_DECIDING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* calibration_deciding, ExitClb */
-    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_awaiting_parameters, ExitClb */
-    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 23u, /* runs_awaiting_parameters, parameter_block */
-    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, alignment_done */
-    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, accumulation_done */
-    (((ILAHRS_STATE_RUNS_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* runs_awaiting_parameters, output_due */
-    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 19u) << CELL_BITS) | 24u, /* runs_ready, StartClbRun */
-    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 21u) << CELL_BITS) | 22u, /* runs_ready, FinishClb */
-    (((ILAHRS_STATE_RUNS_READY * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* runs_ready, ExitClb */
-    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_awaiting_parameters, ExitClb */
-    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 26u) << CELL_BITS) | 25u, /* run_awaiting_parameters, parameter_block */
-    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 0u, /* run_awaiting_parameters, alignment_done */
-    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 0u, /* run_awaiting_parameters, accumulation_done */
-    (((ILAHRS_STATE_RUN_AWAITING_PARAMETERS * ILAHRS_EVENT_COUNT) + 32u) << CELL_BITS) | 0u, /* run_awaiting_parameters, output_due */
-    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_aligning, ExitClb */
-    (((ILAHRS_STATE_RUN_ALIGNING * ILAHRS_EVENT_COUNT) + 30u) << CELL_BITS) | 26u, /* run_aligning, alignment_done */
-    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 20u) << CELL_BITS) | 27u, /* run_accumulating, StopClbRun */
-    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 23u) << CELL_BITS) | 11u, /* run_accumulating, ExitClb */
-    (((ILAHRS_STATE_RUN_ACCUMULATING * ILAHRS_EVENT_COUNT) + 31u) << CELL_BITS) | 27u, /* run_accumulating, accumulation_done */
-};
-
-/* Rows that apply only to firmware before a version, and there take precedence. */
-#define LEGACY_COUNT 1u
-static const ilahrs_firmware_t ilahrs_legacy_versions[1] = {
-    { { 4u, 9u, 9u, 0u }, 4 }, /* 4.9.9.0 */
-};
-
-static const struct {
-    uint8_t state;
-    uint8_t event;
-    uint8_t outcome;
-    uint8_t version;
-} ilahrs_legacy[LEGACY_COUNT] = {
-    { ILAHRS_STATE_RUNS_READY, ILAHRS_EVENT_STOP_CLB_RUN, 21, 0 }, /* E29 */
-};
+/* ---- Device state machine -------------------------------------------------------------- */
 
 #if ILAHRS_NAMES
 const char *ilahrs_state_name(ilahrs_state_t state)
@@ -3045,6 +3013,26 @@ bool ilahrs_state_by_name(const char *name, size_t len, ilahrs_state_t *state)
     }
     *state = (ilahrs_state_t)i;
     return true;
+}
+
+const char *ilahrs_event_name(ilahrs_event_t event)
+{
+    return name_at((unsigned)event, NAMES_COMMAND, ILAHRS_EVENT_COUNT); /* commands, then the other events */
+}
+
+bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event)
+{
+    int i = name_index(name, len, NAMES_COMMAND, ILAHRS_EVENT_COUNT);
+    if (i < 0) {
+        return false;
+    }
+    *event = (ilahrs_event_t)i;
+    return true;
+}
+
+const char *ilahrs_answer_name(ilahrs_answer_t answer)
+{
+    return name_at((unsigned)answer, NAMES_ANSWER, ILAHRS_ANSWER_COUNT);
 }
 #endif
 
@@ -3067,33 +3055,13 @@ bool ilahrs_state_timer(ilahrs_state_t state, ilahrs_event_t *event)
     return true;
 }
 
-#if ILAHRS_NAMES
-const char *ilahrs_event_name(ilahrs_event_t event)
-{
-    return name_at((unsigned)event, NAMES_COMMAND, ILAHRS_EVENT_COUNT); /* commands, then the other events */
-}
-
-bool ilahrs_event_by_name(const char *name, size_t len, ilahrs_event_t *event)
-{
-    int i = name_index(name, len, NAMES_COMMAND, ILAHRS_EVENT_COUNT);
-    if (i < 0) {
-        return false;
-    }
-    *event = (ilahrs_event_t)i;
-    return true;
-}
-
-const char *ilahrs_answer_name(ilahrs_answer_t answer)
-{
-    return name_at((unsigned)answer, NAMES_ANSWER, ILAHRS_ANSWER_COUNT);
-}
-#endif
-
 ilahrs_payload_t ilahrs_answer_payload(ilahrs_answer_t answer)
 {
-    return (unsigned)answer < ILAHRS_ANSWER_COUNT ? (ilahrs_payload_t)ilahrs_answers[answer].payload : ILAHRS_PAYLOAD_NONE;
+    return (unsigned)answer < ILAHRS_ANSWER_COUNT ? (ilahrs_payload_t)ilahrs_answers[answer].payload
+                                                  : ILAHRS_PAYLOAD_NONE;
 }
 
+#ifdef ILAHRS_USW_FLAGS_MASK
 bool ilahrs_answer_usw_mode(ilahrs_answer_t answer, ilahrs_usw_mode_t *mode)
 {
     if ((unsigned)answer >= ILAHRS_ANSWER_COUNT || ilahrs_answers[answer].usw_mode == NO_USW_MODE) {
@@ -3102,6 +3070,7 @@ bool ilahrs_answer_usw_mode(ilahrs_answer_t answer, ilahrs_usw_mode_t *mode)
     *mode = (ilahrs_usw_mode_t)ilahrs_answers[answer].usw_mode;
     return true;
 }
+#endif
 
 ilahrs_event_t ilahrs_event_for_code(ilahrs_state_t state, uint8_t code)
 {
@@ -3135,8 +3104,9 @@ ilahrs_event_t ilahrs_event_for_code(ilahrs_state_t state, uint8_t code)
 ilahrs_event_t ilahrs_event_for_data(ilahrs_state_t state, size_t payload_size)
 {
     ilahrs_payload_t expects = ilahrs_state_expects(state);
-    return expects != ILAHRS_PAYLOAD_NONE && payload_size == ilahrs_payloads[expects].size ? ILAHRS_EVENT_PARAMETER_BLOCK
-                                                                                            : ILAHRS_EVENT_OTHER_MESSAGE;
+    return expects != ILAHRS_PAYLOAD_NONE && payload_size == ilahrs_payloads[expects].size
+               ? ILAHRS_EVENT_PARAMETER_BLOCK
+               : ILAHRS_EVENT_OTHER_MESSAGE;
 }
 
 ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t *frame)
@@ -3147,6 +3117,7 @@ ilahrs_event_t ilahrs_event_for_frame(ilahrs_state_t state, const ilahrs_frame_t
     return ilahrs_event_for_data(state, frame->payload_size);
 }
 
+/* Outcome k (a row of ilahrs_outcomes): the next state and the answers of its sequence. */
 static bool outcome(unsigned k, ilahrs_step_t *out)
 {
     unsigned sends = ilahrs_outcomes[k] & ((1u << SEQUENCE_BITS) - 1u);
@@ -3161,8 +3132,9 @@ static bool outcome(unsigned k, ilahrs_step_t *out)
     return true;
 }
 
-/* The legacy row for (state, event) that applies to `firmware` (NULL with `any`: every legacy
- * row applies), or -1. */
+/* The row of ilahrs_legacy (rows that apply only to firmware before a version, and there take
+ * precedence) for (state, event) that applies to `firmware` (NULL with `any`: every legacy row
+ * applies), or -1. */
 static int legacy_row(unsigned state, unsigned event, const ilahrs_firmware_t *firmware, bool any)
 {
     unsigned i;
@@ -3173,13 +3145,17 @@ static int legacy_row(unsigned state, unsigned event, const ilahrs_firmware_t *f
         if (any) {
             return (int)i;
         }
-        if (firmware != NULL && ilahrs_firmware_compare(firmware, &ilahrs_legacy_versions[ilahrs_legacy[i].version]) < 0) {
+        if (firmware != NULL
+            && ilahrs_firmware_compare(firmware, &ilahrs_legacy_versions[ilahrs_legacy[i].version]) < 0) {
             return (int)i;
         }
     }
     return -1;
 }
 
+/* The table: state x event -> outcome + 1, 0 for an ignored event (E33). Each state has a default
+ * cell (ilahrs_state_cells), and ilahrs_cells lists the cells that differ from their state's
+ * default (CELL()). */
 static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, ilahrs_step_t *out)
 {
     unsigned cell;
@@ -3206,7 +3182,8 @@ static bool transition(ilahrs_state_t state, ilahrs_event_t event, int legacy, i
 
 bool ilahrs_transition(ilahrs_state_t state, ilahrs_event_t event, bool older_firmware, ilahrs_step_t *out)
 {
-    return transition(state, event, older_firmware ? legacy_row((unsigned)state, (unsigned)event, NULL, true) : -1, out);
+    return transition(state, event, older_firmware ? legacy_row((unsigned)state, (unsigned)event, NULL, true) : -1,
+                      out);
 }
 
 bool ilahrs_transition_on(ilahrs_state_t state, ilahrs_event_t event, const ilahrs_firmware_t *firmware,

@@ -19,8 +19,8 @@ everything else answers exactly as in the default build. This checks:
     python tests/c/names_off.py CAPTURE-TOOL REFERENCE NAMES-OFF [REFERENCE NAMES-OFF ...]
 
 CAPTURE-TOOL is build/c/capture; each REFERENCE and NAMES-OFF pair are names_off.c builds, as command
-lines. A pair must share everything but ILAHRS_NAMES: builds optimized for speed and for size may
-hand a stream message out after consuming a different number of bytes, which the driver prints.
+lines. A pair must share everything but ILAHRS_NAMES (compiler and flags): the driver prints what
+each build does, and only the names may differ.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
-/* Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
- * Do not edit: change the spec or the generator and run `make generate`.
- */
+// Copied from generator/targets/c/runtime/examples/decode_capture.c; spec spec/ilahrs.yaml, hash
+// af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f. Do not edit: change the runtime source and run
+// `make generate`.
 /*
  * decode_capture: print every message in a capture of AHRS output.
  *
@@ -63,21 +63,23 @@ static void print_message(unsigned long index, const ilahrs_message_t *msg)
         return;
     }
     {
+        /* The fields from the sentence's field table; the hex one is the Unit Status Word. */
         const ilahrs_pahr_t *s = &msg->sentence;
-        ilahrs_usw_t usw = ilahrs_usw_decode((uint16_t)s->usw);
+        uint16_t usw = 0;
+        size_t k;
         printf("sentence");
-        printf(" roll=");
-        print_scaled((long)s->roll, 100);
-        printf(" pitch=");
-        print_scaled((long)s->pitch, 100);
-        printf(" heading=");
-        print_scaled((long)s->heading, 100);
-        printf(" temperature=");
-        print_scaled((long)s->temperature, 10);
-        printf(" vdd=");
-        print_scaled((long)s->vdd, 100);
-        printf(" usw=%04X", (unsigned)s->usw);
-        printf(" mode=%u", (unsigned)usw.mode);
+        for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+            int32_t value = ilahrs_pahr_field_get(s, k);
+            uint32_t divisor = ilahrs_pahr_field_divisor(k);
+            printf(" %s=", ilahrs_pahr_field_name(k));
+            if (divisor == 0) {
+                printf("%04X", (unsigned)value);
+                usw = (uint16_t)value;
+            } else {
+                print_scaled((long)value, (long)divisor);
+            }
+        }
+        printf(" mode=%u", (unsigned)ilahrs_usw_decode(usw).mode);
         printf("\n");
     }
 }

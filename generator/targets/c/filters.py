@@ -117,18 +117,9 @@ def c_comment(text: str, indent: int = 0, width: int = 100, first: str = "/** ",
     return "\n".join(body) + " */"
 
 
-def doc_lines(text: str, width: int = 92) -> list[str]:
-    """Prose wrapped for ` * ` comment lines."""
-    return naming.wrap(text, width) or [""]
-
-
 def macro(*parts: str) -> str:
     """ILAHRS_ + the upper-cased parts joined by underscores."""
     return "_".join(["ILAHRS", *(naming.upper(p) for p in parts if p)])
-
-
-def hex_bytes(data: tuple[int, ...] | list[int]) -> str:
-    return " ".join(f"{b:02X}" for b in data)
 
 
 def unit_suffix(f: Field) -> str:
@@ -142,11 +133,59 @@ def nmea_suffix(spec: Spec, f: NmeaField) -> str:
     return "value"
 
 
-def shift_of(mask: int) -> int:
-    """Position of the lowest set bit of a non-zero mask."""
-    return (mask & -mask).bit_length() - 1
+def banner(title: str) -> str:
+    """A section banner of the header: the title between two rules, 92 columns wide."""
+    rule = "/* " + "=" * 88 + " */"
+    return f"{rule}\n/* {title:<88} */\n{rule}"
 
 
+def macro_of(name: str, prefix: str) -> str:
+    """macro(prefix, name), for map() over names."""
+    return macro(prefix, name)
+
+
+def format_with(value: str, pattern: str) -> str:
+    """`pattern` % value, for map() over names."""
+    return pattern % value
+
+
+def mode_bit(mode: str) -> str:
+    """A mode's bit in a mode set."""
+    return f"ILAHRS_MODE_BIT({macro('mode', mode)})"
+
+
+def payload_macro(name: str | None) -> str:
+    """The ilahrs_payload_t constant of a payload table, ILAHRS_PAYLOAD_NONE for none."""
+    return macro("payload", name) if name else "ILAHRS_PAYLOAD_NONE"
+
+
+def payload_list(names: tuple[str, ...], length: int) -> str:
+    """`length` payload constants: the tables named, then ILAHRS_PAYLOAD_NONE."""
+    return ", ".join(payload_macro(names[i] if i < len(names) else None) for i in range(length))
+
+
+def name_offset(name: str, t: Any) -> int:
+    """The offset of a name in the shared name pool."""
+    offset: int = t.pools["name"][name]
+    return offset
+
+
+def answer_macro(index: int, m: Any) -> str:
+    """The ilahrs_answer_t constant of answer `index` of the machine."""
+    return macro("answer", m.answers[index].name)
+
+
+def event_macro(name: str, spec: Spec) -> str:
+    """The ilahrs_event_t constant of an event: a command's (by its ICD name) or one of the others."""
+    for c in spec.commands:
+        if c.name == name:
+            return macro("event", c.id)
+    return macro("event", name)
+
+
+def pahr_parameter(f: NmeaField) -> str:
+    """A parameter of ilahrs_pahr_from_values(): a double for a decimal field, else its C type."""
+    return f"double {f.name}" if f.format == "decimal" else f"{c_nmea_type(f)} {f.name}"
 
 
 def field_doc(f: Field) -> str:
@@ -187,11 +226,6 @@ _RESPONSE_DOCS = {
 
 def response_doc(kind: str) -> str:
     return _RESPONSE_DOCS.get(kind, f"Response kind `{kind}`.")
-
-
-def c_chars(text: str) -> str:
-    """`text` as a comma-separated list of character codes (for very long string tables)."""
-    return ", ".join(str(b) for b in text.encode("latin-1"))
 
 
 def float32(value: float) -> float:
@@ -258,7 +292,6 @@ def pahr_max_divisor(nmea: Nmea) -> int:
 
 
 FILTERS: dict[str, Callable[..., Any]] = {
-    "c_int_type": c_int_type,
     "c_index_type": c_index_type,
     "c_scalar": c_scalar,
     "c_member": c_member,
@@ -268,17 +301,21 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "c_int": c_int,
     "c_string": c_string,
     "c_comment": c_comment,
-    "doc_lines": doc_lines,
     "macro": macro,
-    "hex_bytes": hex_bytes,
     "unit_suffix": unit_suffix,
-    "shift_of": shift_of,
-    "c_chars": c_chars,
     "float32": float32,
     "float_key": float_key,
     "c_signed": c_signed,
     "double_key": double_key,
     "c_int64": c_int64,
-    "pahr_max_divisor": pahr_max_divisor,
     "c_member_bits": c_member_bits,
+    "macro_of": macro_of,
+    "format_with": format_with,
+    "mode_bit": mode_bit,
+    "payload_macro": payload_macro,
+    "payload_list": payload_list,
+    "name_offset": name_offset,
+    "answer_macro": answer_macro,
+    "event_macro": event_macro,
+    "pahr_parameter": pahr_parameter,
 }

@@ -197,14 +197,28 @@ def build_tables(spec: Spec) -> Tables:
 def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     kinds = ("error", "frame", "field", "sentence", "date", "text", "part", "name")
     pools = {name: StringPool(name, None if known is None else known[name]) for name in kinds}
+    _error_pools(spec, pools)
+    t = Tables(
+        pools=pools,
+        name_sections=_name_sections(spec, pools["name"]),
+        int_bounds=[Bounds(0.0, 0.0)],  # row 0: no check
+        float_bounds=[Bounds(0.0, 0.0)],
+        scales=[ScaleEntry(1, 1, NO_PARAMETER)],  # row 0: unscaled
+        fields=[],
+        first_field={},
+        defaults=[],
+    )
+    for p in spec.payloads:
+        _add_payload(spec, t, p)
+    return t
+
+
+def _error_pools(spec: Spec, pools: dict[str, StringPool]) -> None:
+    """The names errors report (a pool per kind) and the strings that are protocol data."""
     for e in spec.errors:
         pools["error"].add(e.name)
-    pools["frame"].add(FRAME_HEADER_NAME)
-    pools["frame"].add(FRAME_PAYLOAD_NAME)
-    for f in spec.frame.fields:
-        pools["frame"].add(f.name)
-    pools["frame"].add(spec.frame.checksum.name)
-    names = pools["field"]
+    for part in (FRAME_HEADER_NAME, FRAME_PAYLOAD_NAME, *(f.name for f in spec.frame.fields), spec.frame.checksum.name):
+        pools["frame"].add(part)
     if spec.nmea is not None:
         for nf in spec.nmea.fields:
             pools["sentence"].add(nf.name)
@@ -212,13 +226,17 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
         pools["date"].add("date")
     for v in spec.variants:
         pools["part"].add(v.part_number)
+
+
+def _name_sections(spec: Spec, pool: StringPool) -> list[NameSection]:
+    """The sections of the shared name pool, one per kind, in the order of the kind's C enum."""
     sections: list[NameSection] = []
 
     def section(kind: str, entries: list[str]) -> None:
         first = sections[-1].first + len(sections[-1].names) if sections else 0
         sections.append(NameSection(kind, first, tuple(entries)))
         for name in entries:
-            pools["name"].add(name)
+            pool.add(name)
 
     # Events are the commands, then the state machine's own events: the event section follows the
     # command section, so that event names are the command names read further.
@@ -239,61 +257,51 @@ def _build_tables(spec: Spec, known: dict[str, list[str]] | None) -> Tables:
     if m is not None:
         section("state", m.states)
         section("answer", [a.name for a in m.answers])
+    return sections
 
-    int_bounds: list[Bounds] = [Bounds(0.0, 0.0)]  # row 0: no check
-    float_bounds: list[Bounds] = [Bounds(0.0, 0.0)]
-    scales: list[ScaleEntry] = [ScaleEntry(1, 1, NO_PARAMETER)]  # row 0: unscaled
-    rows: list[FieldRow] = []
-    first: dict[str, int] = {}
-    defaults: list[DefaultRow] = []
-    parameters = [p.name for p in spec.variant_parameters]
-    for p in spec.payloads:
-        first[p.name] = len(rows)
-        member = 0
-        for f in p.fields:
-            # The header declares the members in wire order, each aligned to its own size (arrays: 1).
-            align = f.size if f.is_numeric else 1
-            member = -(-member // align) * align
-            b = field_bounds(f)
-            b_index = 0 if b is None else _index(float_bounds if f.kind == "float" else int_bounds, b)
-            s_index = 0
-            if f.scale is not None:
-                if f.scale.divisor_parameter is not None:
-                    entry = ScaleEntry(f.scale.multiplier, 0, parameters.index(f.scale.divisor_parameter))
-                else:
-                    entry = ScaleEntry(f.scale.multiplier, f.scale.divisor or 1, NO_PARAMETER)
-                if entry not in scales:
-                    scales.append(entry)
-                s_index = scales.index(entry)
-            number = builder_default(f) if f.is_numeric else None
-            if isinstance(f.default, str) and f.default:
-                defaults.append(DefaultRow(len(rows), 0.0, pools["text"].add(f.default)))
-            elif number is not None:
-                defaults.append(DefaultRow(len(rows), number, -1))
-            rows.append(
-                FieldRow(
-                    payload=p,
-                    field=f,
-                    index=len(rows),
-                    name=names.add(f.name),
-                    kind=KINDS.index(f.kind),
-                    bounds=b_index,
-                    scale=s_index,
-                    encoding=ENCODINGS.index("declination" if f.encoding == "declination" else "none"),
-                    member=member,
-                )
+
+def _scale_index(spec: Spec, t: Tables, f: Field) -> int:
+    """The row of the field's engineering scale in t.scales (added if new), 0 for none."""
+    if f.scale is None:
+        return 0
+    if f.scale.divisor_parameter is not None:
+        parameters = [p.name for p in spec.variant_parameters]
+        entry = ScaleEntry(f.scale.multiplier, 0, parameters.index(f.scale.divisor_parameter))
+    else:
+        entry = ScaleEntry(f.scale.multiplier, f.scale.divisor or 1, NO_PARAMETER)
+    if entry not in t.scales:
+        t.scales.append(entry)
+    return t.scales.index(entry)
+
+
+def _add_payload(spec: Spec, t: Tables, p: Payload) -> None:
+    """The rows of one payload table's fields, and their builder defaults."""
+    t.first_field[p.name] = len(t.fields)
+    member = 0
+    for f in p.fields:
+        # The header declares the members in wire order, each aligned to its own size (arrays: 1).
+        align = f.size if f.is_numeric else 1
+        member = -(-member // align) * align
+        b = field_bounds(f)
+        number = builder_default(f) if f.is_numeric else None
+        if isinstance(f.default, str) and f.default:
+            t.defaults.append(DefaultRow(len(t.fields), 0.0, t.pools["text"].add(f.default)))
+        elif number is not None:
+            t.defaults.append(DefaultRow(len(t.fields), number, -1))
+        t.fields.append(
+            FieldRow(
+                payload=p,
+                field=f,
+                index=len(t.fields),
+                name=t.pools["field"].add(f.name),
+                kind=KINDS.index(f.kind),
+                bounds=0 if b is None else _index(t.float_bounds if f.kind == "float" else t.int_bounds, b),
+                scale=_scale_index(spec, t, f),
+                encoding=ENCODINGS.index("declination" if f.encoding == "declination" else "none"),
+                member=member,
             )
-            member += f.size + (1 if f.kind == "char" else 0)  # a char array holds a terminating NUL (filters.c_member)
-    return Tables(
-        pools=pools,
-        name_sections=sections,
-        int_bounds=int_bounds,
-        float_bounds=float_bounds,
-        scales=scales,
-        fields=rows,
-        first_field=first,
-        defaults=defaults,
-    )
+        )
+        member += f.size + (1 if f.kind == "char" else 0)  # a char array holds a terminating NUL (filters.c_member)
 
 
 def member_type(spec: Spec) -> str:
@@ -309,48 +317,3 @@ def response_kinds(spec: Spec) -> list[str]:
         if c.response_kind not in kinds:
             kinds.append(c.response_kind)
     return kinds
-
-
-@dataclass(frozen=True)
-class CanonicalField:
-    """Where a $PAHR field sits in a sentence a builder writes (E16: fixed template widths)."""
-
-    index: int
-    position: int  # character position of its first character
-    length: int  # characters, sign included
-    width: int  # integer-part (decimal) or digit (hex) characters, sign included
-    decimals: int
-    hex: bool
-
-
-@dataclass(frozen=True)
-class CanonicalLayout:
-    fields: tuple[CanonicalField, ...]
-    star: int  # position of "*"
-    length: int  # whole sentence, "$" through CR LF
-
-
-def canonical_layout(spec: Spec) -> CanonicalLayout | None:
-    """The text layout of sentences written by the builders, when every value in range fits its
-    template width (then every built sentence has the same length and field positions)."""
-    if spec.nmea is None:
-        return None
-    position = len(spec.nmea.identifier) + 2  # "$", identifier, ","
-    fields = []
-    for k, f in enumerate(spec.nmea.fields):
-        hex_field = f.format == "hex"
-        if hex_field:
-            fits = f.min >= 0 and f.max < 16**f.width
-            length = f.width
-        else:
-            positive = len(str(max(f.max, 0) // f.divisor)) <= f.width
-            negative = f.min >= 0 or len(str(-f.min // f.divisor)) + 1 <= f.width
-            fits = positive and negative
-            length = f.width + (1 + f.decimals if f.decimals else 0)
-        digits = f.width + f.decimals
-        if not fits or digits > 9:  # the fast path adds digits in 32 bits
-            return None
-        fields.append(CanonicalField(k, position, length, f.width, f.decimals, hex_field))
-        position += length + 1
-    star = position - 1
-    return CanonicalLayout(tuple(fields), star, star + 5)

@@ -6,13 +6,15 @@ import calendar
 import math
 import struct
 from dataclasses import dataclass
+from pathlib import Path
 
-from generator.model import TIMER_EVENTS, Nmea, Spec
-from generator.render import Output
+from generator.formatting import run_formatter, tool
+from generator.model import TIMER_EVENTS, Frame, Nmea, Spec
+from generator.render import Output, Runtime
 
 from . import filters, machine, tables
 
-__all__ = ["FILTERS", "GLOBALS", "outputs"]
+__all__ = ["FILTERS", "GLOBALS", "format", "outputs"]
 
 FILTERS = filters.FILTERS
 GLOBALS = {
@@ -24,7 +26,18 @@ GLOBALS = {
     "macro": filters.macro,
     "field_doc": filters.field_doc,
     "response_doc": filters.response_doc,
+    "banner": filters.banner,
 }
+
+# The committed clang-format configuration the generated C is formatted with (and the runtime
+# checked against, by `make lint-c`).
+CLANG_FORMAT_CONFIG = Path(__file__).resolve().parent / ".clang-format"
+
+
+def format(files: dict[str, str]) -> dict[str, str]:
+    """The generated C and headers through clang-format, with the committed configuration."""
+    return run_formatter(files, (".c", ".h"), lambda paths: [
+        tool("clang-format"), f"--style=file:{CLANG_FORMAT_CONFIG}", "-i", *map(str, paths)])
 
 
 # The $PAHR field reader saturates magnitudes here (ilahrs.c, SATURATED): every range must lie below.
@@ -197,7 +210,25 @@ def longest_sentence(nmea: Nmea) -> int:
     return total
 
 
-def outputs(spec: Spec) -> list[Output]:
+def frame_constants(spec: Spec) -> list[tuple[str, int, str]]:
+    """The header's frame and message sizes: (macro name after ILAHRS_, value, doc)."""
+    fr: Frame = spec.frame
+    return [
+        ("FRAME_PAYLOAD_OFFSET", fr.payload_offset, "Offset of the payload in a frame."),
+        ("FRAME_CHECKSUM_SIZE", fr.checksum.size, "Size of the checksum that ends a frame."),
+        ("FRAME_OVERHEAD", fr.overhead, "Bytes in a frame besides the payload."),
+        ("FRAME_LENGTH_BIAS", fr.length_bias, "message_length = payload size + ILAHRS_FRAME_LENGTH_BIAS."),
+        ("FRAME_MIN_LENGTH", fr.min_length, "Smallest message length a decoder accepts (E17)."),
+        ("FRAME_MAX_LENGTH", fr.max_length, "Largest message length a decoder accepts (E17)."),
+        ("FRAME_MIN_PAYLOAD", fr.min_payload, "Smallest payload a frame carries."),
+        ("FRAME_MAX_PAYLOAD", fr.max_payload, "Largest payload a frame carries."),
+        ("FRAME_MIN_SIZE", fr.min_frame_size, "Size of the shortest frame."),
+        ("FRAME_MAX_SIZE", fr.max_frame_size, "Size of the longest frame: a buffer of this size holds any frame."),
+        ("MAX_MESSAGE_SIZE", spec.max_message_size, "The longest message on the wire, frame or sentence."),
+    ]
+
+
+def outputs(spec: Spec) -> list[Output | Runtime]:
     if spec.byte_order != "little":
         raise ValueError(f"the C target implements little-endian wire values, not {spec.byte_order!r}")
     if spec.frame.checksum_algorithm != "sum16":
@@ -212,6 +243,7 @@ def outputs(spec: Spec) -> list[Output]:
             raise ValueError("a $PAHR range reaches the C reader's saturation value")
         pahr_types = (filters.c_int_type(min(lows), max(lows)), filters.c_int_type(min(highs), max(highs)))
         pahr_longest = longest_sentence(spec.nmea)
+        filters.pahr_max_divisor(spec.nmea)  # refuses a divisor the exact rounding does not cover
         if pahr_longest > spec.nmea.max_length:
             raise ValueError(f"an in-range $PAHR sentence can be {pahr_longest} characters, above the maximum "
                              f"{spec.nmea.max_length}: the C builder writes without length checks")
@@ -225,18 +257,17 @@ def outputs(spec: Spec) -> list[Output]:
         "member_type": tables.member_type(spec),
         "usw_flags_mask": usw_flags,
         "response_kinds": tables.response_kinds(spec),
-        "canon": tables.canonical_layout(spec),
         "max_response_payloads": max(1, *(len(c.response_payloads) for c in spec.commands)),
         "m": machine.build_machine(spec),
         "date": date_tables(spec),
         "pahr_min_type": pahr_types[0],
         "pahr_max_type": pahr_types[1],
         "pahr_saturated": PAHR_SATURATED,
-        "pahr_longest": pahr_longest,
         "fp": field_packing(t),
         "scale_members": scale_members(t),
         "default_members": default_members(t),
         "timer_names": dict(sorted(TIMER_EVENTS.items())),
+        "frame_constants": frame_constants(spec),
     }
     return [
         Output("c/ilahrs.h", "ilahrs.h.j2", context),
@@ -244,5 +275,5 @@ def outputs(spec: Spec) -> list[Output]:
         Output("c/CMakeLists.txt", "CMakeLists.txt.j2"),
         Output("c/ilahrs.pc.in", "ilahrs.pc.in.j2"),
         Output("c/README.md", "README.md.j2"),
-        Output("c/examples/decode_capture.c", "decode_capture.c.j2"),
+        Runtime("c/examples/decode_capture.c", "examples/decode_capture.c"),
     ]

@@ -1,6 +1,3 @@
-/* {{ notice[0] }}
- * {{ notice[1] }}
- */
 /*
  * decode_capture: print every message in a capture of AHRS output.
  *
@@ -63,18 +60,23 @@ static void print_message(unsigned long index, const ilahrs_message_t *msg)
         return;
     }
     {
+        /* The fields from the sentence's field table; the hex one is the Unit Status Word. */
         const ilahrs_pahr_t *s = &msg->sentence;
-        ilahrs_usw_t usw = ilahrs_usw_decode((uint16_t)s->usw);
+        uint16_t usw = 0;
+        size_t k;
         printf("sentence");
-        {% for f in spec.nmea.fields %}
-        {% if f.format == "decimal" %}
-        printf(" {{ f.name }}=");
-        print_scaled((long)s->{{ f.name }}, {{ f.divisor }});
-        {% else %}
-        printf(" {{ f.name }}=%04X", (unsigned)s->{{ f.name }});
-        {% endif %}
-        {% endfor %}
-        printf(" mode=%u", (unsigned)usw.mode);
+        for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+            int32_t value = ilahrs_pahr_field_get(s, k);
+            uint32_t divisor = ilahrs_pahr_field_divisor(k);
+            printf(" %s=", ilahrs_pahr_field_name(k));
+            if (divisor == 0) {
+                printf("%04X", (unsigned)value);
+                usw = (uint16_t)value;
+            } else {
+                print_scaled((long)value, (long)divisor);
+            }
+        }
+        printf(" mode=%u", (unsigned)ilahrs_usw_decode(usw).mode);
         printf("\n");
     }
 }

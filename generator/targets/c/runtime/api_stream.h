@@ -1,0 +1,96 @@
+
+/* ======================================================================================== */
+/* Stream decoder                                                                           */
+/* ======================================================================================== */
+
+/** What a stream message is. */
+typedef enum ilahrs_message_kind {
+    ILAHRS_MESSAGE_FRAME = 1,    /**< A frame: `frame` is valid. */
+    ILAHRS_MESSAGE_SENTENCE = 2, /**< A $PAHR sentence: `sentence` is valid. */
+} ilahrs_message_kind_t;
+
+/** A message the stream decoder accepted. */
+typedef struct ilahrs_message {
+    ilahrs_message_kind_t kind; /**< Frame or sentence. */
+    /**
+     * The message bytes as received (a frame from its header through its checksum, a
+     * sentence from "$" through CR LF). They lie in the input or in the decoder state and stay
+     * valid until the next call on the decoder or until the input buffer changes.
+     */
+    const uint8_t *data;
+    size_t size;            /**< Number of bytes at `data`. */
+    ilahrs_frame_t frame;   /**< The decoded frame (kind ILAHRS_MESSAGE_FRAME). */
+    ilahrs_pahr_t sentence; /**< The decoded sentence (kind ILAHRS_MESSAGE_SENTENCE). */
+} ilahrs_message_t;
+
+/**
+ * Stream decoder state: the bytes of a message that has not ended yet, at most
+ * ILAHRS_MAX_MESSAGE_SIZE. Owned by the caller; all zeros is the empty state (`= {0}` or
+ * ilahrs_stream_init()). One decoder per byte stream; no other state exists.
+ *
+ * Semantics (spec/README.md, "leftmost valid message"): at each position a valid frame or
+ * valid sentence is accepted and consumed; anything else costs exactly one byte, counted in
+ * `discarded`, and decoding resumes at the next byte. So a false AA 55, an absurd length or a
+ * corrupted frame never costs a following good message, whatever the chunk boundaries. Each
+ * byte is examined a bounded number of times, however the input is cut (see "Build switches"
+ * for a decoder without sentences).
+ */
+typedef struct ilahrs_stream {
+    uint64_t discarded;                    /**< Input bytes that belong to no accepted message. */
+    uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
+    uint8_t start;                         /**< First held byte. */
+    uint8_t count;                         /**< Number of held bytes. */
+} ilahrs_stream_t;
+
+/** Empty the decoder (`discarded` back to 0). Same as zero-initialising it. */
+void ilahrs_stream_init(ilahrs_stream_t *stream);
+
+/**
+ * Decode input in chunks of any size. Takes bytes from `*data` / `*len`, advancing both past
+ * what it consumed, until it has a message (returns true, `*msg` filled) or has taken every
+ * byte (returns false; bytes of an incomplete message are kept in the decoder). Call it in a
+ * loop until it returns false, then read the next chunk. With `*len` 0 it still hands out
+ * messages completed earlier.
+ *
+ * When a whole message lies in the caller's chunk, `msg->data` and `msg->frame.payload`
+ * point into that chunk (no copy).
+ *
+ * @code
+ *     const uint8_t *p = buf;
+ *     size_t n = got;
+ *     ilahrs_message_t msg;
+ *     while (ilahrs_stream_next(&decoder, &p, &n, &msg)) {
+ *         handle(&msg);
+ *     }
+ * @endcode
+ */
+bool ilahrs_stream_next(ilahrs_stream_t *stream, const uint8_t **data, size_t *len, ilahrs_message_t *msg);
+
+/**
+ * Decode one byte (e.g. from a UART interrupt). Returns true with `*msg` when the byte
+ * completes a message. Rarely one byte releases several messages (the bytes after a
+ * corrupted frame): call ilahrs_stream_poll() after a true return to get the others.
+ *
+ * @code
+ *     void uart_rx_isr(uint8_t byte)
+ *     {
+ *         ilahrs_message_t msg;
+ *         if (ilahrs_stream_push(&decoder, byte, &msg)) {
+ *             do {
+ *                 queue_message(&msg);
+ *             } while (ilahrs_stream_poll(&decoder, &msg));
+ *         }
+ *     }
+ * @endcode
+ */
+bool ilahrs_stream_push(ilahrs_stream_t *stream, uint8_t byte, ilahrs_message_t *msg);
+
+/** A message already complete inside the decoder, without new input; false if none. */
+bool ilahrs_stream_poll(ilahrs_stream_t *stream, ilahrs_message_t *msg);
+
+/**
+ * The input has ended: decide on every byte still held. Incomplete messages are discarded a
+ * byte at a time, still handing out any valid message behind them. Call until it returns
+ * false; the decoder is then empty (`discarded` keeps counting).
+ */
+bool ilahrs_stream_finish(ilahrs_stream_t *stream, ilahrs_message_t *msg);

@@ -1,0 +1,395 @@
+/* ---- $PAHR sentences ------------------------------------------------------------------- */
+
+/* The sentence grammar of NMEA 0183 (spec/README.md): "$", the identifier and "," (PAHR_PREFIX),
+ * fields separated by ",", then "*", two hex digits, CR LF. */
+#define PAHR_START '$'
+#define PAHR_SEPARATOR ','
+#define PAHR_STAR '*'
+#define PAHR_CR '\r'
+#define PAHR_LF '\n'
+#define PAHR_PREFIX_LENGTH (sizeof PAHR_PREFIX - 1u)
+#define PAHR_TAIL 5u                /* "*", two checksum digits, CR, LF */
+#define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
+
+/* 10^decimals of field k. */
+static uint32_t pahr_divisor(size_t k)
+{
+    uint32_t divisor = 1;
+    unsigned i;
+    for (i = 0; i < ilahrs_pahr_fields[k].decimals; i++) {
+        divisor *= 10u;
+    }
+    return divisor;
+}
+
+#if ILAHRS_NAMES
+const char *ilahrs_pahr_field_name(size_t index)
+{
+    return index < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[index].name) : NULL;
+}
+#endif
+
+bool ilahrs_pahr_field_range(size_t index, int32_t *min, int32_t *max)
+{
+    if (index >= ILAHRS_PAHR_FIELD_COUNT) {
+        return false;
+    }
+    *min = ilahrs_pahr_fields[index].min;
+    *max = ilahrs_pahr_fields[index].max;
+    return true;
+}
+
+uint32_t ilahrs_pahr_field_divisor(size_t index)
+{
+    return index < ILAHRS_PAHR_FIELD_COUNT && !ilahrs_pahr_fields[index].hex ? pahr_divisor(index) : 0;
+}
+
+static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
+{
+    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+}
+
+int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
+{
+    return index < ILAHRS_PAHR_FIELD_COUNT ? pahr_get(sentence, index) : 0;
+}
+
+/* The character classes of the grammar: a hex digit's value (0..15, either case), NOT_DIGIT for
+ * any other character. Decimal fields take the values below 10. */
+#define NOT_DIGIT 0x100u
+
+static unsigned digit_value(uint8_t c)
+{
+    unsigned letter = (unsigned)(c | 0x20u) - 'a';
+    if ((unsigned)(c - '0') <= 9u) {
+        return (unsigned)(c - '0');
+    }
+    return letter <= 5u ? letter + 10u : NOT_DIGIT;
+}
+
+/*
+ * The field at *at, described by f, in one pass: its grammar, its value scaled to an integer, its
+ * range; the characters it takes are XORed into *sum. Returns ILAHRS_OK with the value stored in
+ * *out, ILAHRS_ERR_MALFORMED (also when the number is not followed by a separator or by the star,
+ * star being the sentence's "*") or ILAHRS_ERR_OUT_OF_RANGE, and leaves *at where the number ends.
+ * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
+ * it, so any number of digits reads without a wider type or a division.
+ */
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
+                                      ilahrs_pahr_t *out, unsigned *sum)
+{
+    const uint8_t *q = *at;
+    const uint8_t *digits;
+    const uint8_t *point = NULL;
+    unsigned base = f->hex ? 16u : 10u;
+    unsigned x = *sum;
+    bool negative = !f->hex && *q == '-';
+    uint32_t m = 0;
+    size_t whole;
+    size_t fraction = 0;
+    int32_t value;
+    x ^= negative ? (unsigned)'-' : 0u;
+    for (q += negative, digits = q;; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || point != NULL) {
+                    break;
+                }
+                point = q; /* in a hex field, a point is followed by a fraction it cannot have */
+                x ^= c;
+                continue;
+            }
+        }
+        x ^= c;
+        if (m < SATURATED) {
+            m = m * base + d;
+        }
+    }
+    *at = q;
+    *sum = x;
+    whole = (size_t)((point != NULL ? point : q) - digits);
+    if (point != NULL) {
+        fraction = (size_t)(q - point) - 1u;
+    }
+    if (whole == 0 || (f->hex && whole > f->width) || (point != NULL && (fraction == 0 || fraction > f->decimals))
+        || (q != star && *q != PAHR_SEPARATOR)) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    for (; fraction < f->decimals; fraction++) {
+        if (m < SATURATED) {
+            m *= 10u;
+        }
+    }
+    value = negative ? -(int32_t)m : (int32_t)m;
+    if (value < f->min || value > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, (uint32_t)value, f->size);
+    return ILAHRS_OK;
+}
+
+/*
+ * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
+ * CR LF search, in one pass over the fields. `end` is the sentence length, CR LF its last two
+ * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in the
+ * order of spec/README.md, with its offset in *at and its field index in *field
+ * (ILAHRS_PAHR_FIELD_COUNT for none).
+ */
+static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field)
+{
+    const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    const uint8_t *q = p + PAHR_PREFIX_LENGTH;
+    size_t k = 0;
+    size_t error_at = 0;
+    size_t error_field = 0;
+    ilahrs_error_kind_t field_error = ILAHRS_OK;
+    unsigned checksum;
+    unsigned sum = 0;
+    *field = ILAHRS_PAHR_FIELD_COUNT;
+    *at = end - PAHR_TAIL;
+    if (star < q || *star != PAHR_STAR) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    *at += 1;
+    checksum = digit_value(star[1]) * 16u + digit_value(star[2]);
+    if (checksum > 0xFFu) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
+        sum ^= p[k];
+    }
+    /* Fields, counted; the first bad one is remembered and reported after the checksum. */
+    for (k = 0;; k++) {
+        if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
+            error_at = (size_t)(q - p);
+            error_field = k;
+            field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        }
+        for (; q < star && *q != PAHR_SEPARATOR; q++) {
+            sum ^= *q;
+        }
+        if (q >= star) {
+            break;
+        }
+        sum ^= *q++; /* the separator */
+    }
+    if (sum != checksum) {
+        return ILAHRS_ERR_BAD_CHECKSUM;
+    }
+    *at = PAHR_PREFIX_LENGTH;
+    if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    *at = error_at;
+    *field = error_field;
+    return field_error;
+}
+
+bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
+{
+    const uint8_t *p = (const uint8_t *)text;
+    size_t i;
+    size_t end;
+    size_t at;
+    size_t field;
+    ilahrs_error_kind_t kind;
+    /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
+    for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
+        if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+            return fail(err, ILAHRS_ERR_BAD_HEADER, i != 0, NULL);
+        }
+    }
+    if (len < PAHR_PREFIX_LENGTH) {
+        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
+    }
+    /* The first CR LF. */
+    for (i = PAHR_PREFIX_LENGTH; i + 1 < len && !(p[i] == PAHR_CR && p[i + 1] == PAHR_LF); i++) {
+    }
+    if (i + 1 >= len) {
+        if (len > ILAHRS_PAHR_MAX_LENGTH) {
+            return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
+        }
+        return fail(err, ILAHRS_ERR_TRUNCATED, len, NULL);
+    }
+    end = i + 2;
+    if (end > ILAHRS_PAHR_MAX_LENGTH) {
+        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_PAHR_MAX_LENGTH, NULL);
+    }
+    if (end < len) {
+        return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
+    }
+    kind = pahr_body(p, end, out, &at, &field);
+    return kind == ILAHRS_OK
+           || fail(err, kind, at,
+                   field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
+}
+
+static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7',
+                                            '8', '9', 'A', 'B', 'C', 'D', 'E', 'F' };
+
+/*
+ * Every field is range-checked before it is written, and the longest sentence of in-range values
+ * is at most ILAHRS_PAHR_MAX_LENGTH characters (the generator checks it), so the sentence is built
+ * without length checks. Each number is written from its last digit: at least the template width
+ * (the sign counting as one character) and all its digits.
+ */
+size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs_error_t *err)
+{
+    uint8_t buf[ILAHRS_PAHR_MAX_LENGTH];
+    size_t at = PAHR_PREFIX_LENGTH;
+    size_t k;
+    uint8_t sum = 0;
+    copy_forward(buf, (const uint8_t *)PAHR_PREFIX, PAHR_PREFIX_LENGTH);
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        const pahr_field_t *f = &ilahrs_pahr_fields[k];
+        int32_t value = pahr_get(in, k);
+        uint32_t m = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
+        unsigned base = f->hex ? 16u : 10u;
+        unsigned n = f->width > 1u ? f->width : 1u; /* digits before the point, at least */
+        unsigned i;
+        uint32_t rest;
+        uint8_t *w;
+        if (value < f->min || value > f->max) {
+            return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(f->name));
+        }
+        if (value < 0) {
+            buf[at++] = '-';
+            n -= n > 1u;
+        }
+        n += f->decimals;
+        for (i = 1, rest = m / base; rest != 0; rest /= base) {
+            i++; /* digits of m */
+        }
+        n = i > n ? i : n;
+        at += n + (f->decimals != 0);
+        w = buf + at;
+        for (i = 0; i < n; i++) {
+            if (i == f->decimals && i != 0) {
+                *--w = '.';
+            }
+            *--w = (uint8_t)ilahrs_hex_digits[m % base];
+            m /= base;
+        }
+        buf[at++] = k + 1 < ILAHRS_PAHR_FIELD_COUNT ? PAHR_SEPARATOR : PAHR_STAR;
+    }
+    for (k = 1; k + 1 < at; k++) {
+        sum ^= buf[k];
+    }
+    buf[at++] = (uint8_t)ilahrs_hex_digits[sum >> 4];
+    buf[at++] = (uint8_t)ilahrs_hex_digits[sum & 0xFu];
+    buf[at++] = PAHR_CR;
+    buf[at++] = PAHR_LF;
+    if (text == NULL || cap < at) {
+        return fail_size(err, ILAHRS_ERR_BUFFER_TOO_SMALL, ILAHRS_NO_OFFSET, NULL);
+    }
+    copy_forward((uint8_t *)text, buf, at);
+    if (cap > at) {
+        text[at] = '\0';
+    }
+    return at;
+}
+
+/* |value| * divisor rounded half away from zero, as the double code computed it: s = |value| *
+ * divisor rounded to a double (to nearest, ties to even), then floor(s + 0.5) with s + 0.5 rounded
+ * to a double too. For a hex field (whole, divisor 1): |value| if it is an integer. PAHR_HUGE,
+ * beyond every range like the 1e15 the double code saturated at, for s >= 2^52 (infinities and
+ * NaNs too) and for a hex field's fraction.
+ *
+ * Why this is exact: |value| is m * 2^e with m < 2^53, and m * divisor < 2^64 (the generator
+ * refuses a divisor from 2^11), so the product is exact; shifting it to 53 bits with a round and a
+ * sticky bit rounds it as the double multiplication does (a product below the normal range rounds
+ * differently, but stays far below 1/2). Shifting s to the binary point leaves floor(s), and the
+ * round bit adds the 0.5. Rounding s + 0.5 to a double changes its floor only for s = 0.5 - 2^-54,
+ * whose sum rounds up to 1.0: below 1/2 the sum lies in [1/2, 1), and from 1/2 to 2^52 it is a
+ * multiple of s's ulp (at most 1/2), exact unless it just crossed a power of two, where it rounds
+ * to a neighbour with the same integer part. */
+static uint64_t pahr_magnitude(uint64_t bits, uint32_t divisor, bool whole)
+{
+    uint64_t m = bits & (DOUBLE_ONE - 1u);
+    int exponent = (int)((bits >> 52) & 0x7FFu);
+    unsigned round = 0;  /* the last bit shifted out of m */
+    unsigned sticky = 0; /* whether any bit before it was 1 */
+    if (exponent != 0) {
+        m |= DOUBLE_ONE;
+    } else {
+        exponent = 1; /* subnormal */
+    }
+    exponent -= 1075;
+    m *= divisor;
+    while (m >= 2 * DOUBLE_ONE) { /* round to 53 bits, to nearest even */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    m += round & (sticky | (unsigned)m) & 1u;
+    if (exponent >= 0) {
+        return PAHR_HUGE; /* m >= 2^52 here: s >= 2^52 */
+    }
+    if (m == 2 * DOUBLE_ONE - 1u && exponent == -54) {
+        m++; /* 0.49999999999999994 + 0.5 rounds to 1.0, as 0.5 + 0.5 */
+    }
+    if (exponent < -60) { /* s <= 2^-8: keep only whether it is 0 */
+        m = m != 0 ? 1u : 0u;
+        exponent = -60;
+    }
+    round = 0;
+    sticky = 0;
+    while (exponent < 0) { /* floor(s + 0.5): the integer part, plus 1 if the first bit after it is */
+        sticky |= round;
+        round = (unsigned)m & 1u;
+        m >>= 1;
+        exponent++;
+    }
+    if (whole && (round | sticky) != 0) {
+        return PAHR_HUGE; /* a fraction: not an integer */
+    }
+    return m + round;
+}
+
+bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs_pahr_t *out, ilahrs_error_t *err)
+{
+    ilahrs_pahr_t sentence; /* written to *out only if every field is in range */
+    size_t k;
+    /* A NaN or an infinity in a decimal field is reported before any field out of range. */
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        if (!ilahrs_pahr_fields[k].hex && ((double_bits(values[k]) >> 52) & 0x7FFu) == 0x7FFu) {
+            goto out_of_range;
+        }
+    }
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        uint64_t bits = double_bits(values[k]);
+        bool hex = ilahrs_pahr_fields[k].hex != 0;
+        uint64_t magnitude = pahr_magnitude(bits, hex ? 1u : pahr_divisor(k), hex);
+        int32_t scaled;
+        if (magnitude >= SATURATED) {
+            goto out_of_range; /* every range lies below SATURATED (checked by the generator) */
+        }
+        scaled = (bits & DOUBLE_SIGN) != 0 ? -(int32_t)magnitude : (int32_t)magnitude;
+        if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
+            goto out_of_range;
+        }
+        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
+    }
+    *out = sentence;
+    return true;
+out_of_range:
+    return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, SENTENCE_NAME(ilahrs_pahr_fields[k].name));
+}
+
+#if PAHR_HEX_FIELDS
+/* (double)n without floating-point code, for |n| < 2^53: for the hex fields of
+ * ilahrs_pahr_from_values(). */
+static double int_double(int64_t n)
+{
+    int64_t key = int_key(n);
+    uint64_t bits = key < 0 ? DOUBLE_SIGN | (0u - (uint64_t)key) : (uint64_t)key;
+    double value;
+    memcpy(&value, &bits, sizeof value);
+    return value;
+}
+#endif

@@ -1,0 +1,255 @@
+/* ---- Stream decoder -------------------------------------------------------------------- */
+
+/*
+ * Sentences in the stream decoder (ilahrs.h, "Build switches"). Without them it finds exactly the
+ * frames the full decoder finds, in the same order: a valid sentence is printable ASCII ending in
+ * CR LF, so no frame starts inside one, and a frame's validity never depends on what precedes it.
+ */
+#ifndef ILAHRS_PAHR_FIELD_COUNT
+#undef ILAHRS_STREAM_SENTENCES
+#define ILAHRS_STREAM_SENTENCES 0
+#elif !defined(ILAHRS_STREAM_SENTENCES)
+#define ILAHRS_STREAM_SENTENCES 1
+#endif
+
+/* The stream decoder's counters fit its buffer, which holds the longest message. */
+typedef char
+    ilahrs_check_held[ILAHRS_MAX_MESSAGE_SIZE <= 255 && ILAHRS_FRAME_MAX_SIZE <= ILAHRS_MAX_MESSAGE_SIZE ? 1 : -1];
+
+/*
+ * How the decoder works. At each position a candidate message starts if the byte there may start
+ * one (a frame's first header byte, or "$"); it is decided as valid (handed out, and decoding goes
+ * on after it), invalid (the byte is discarded and decoding goes on at the next one) or undecided:
+ * it needs more bytes. A decision never changes when bytes follow, so deciding late gives the same
+ * messages as deciding early.
+ *
+ * scan() decides in place, in the caller's input (a message then points into it) or in `held`. A
+ * candidate still undecided at the end of the input waits at the front of `held`, and the bytes
+ * that follow reach it one at a time (ilahrs_stream_push()): a byte that cannot decide it (a
+ * frame's byte short of its length, a sentence's printable character) is only stored, so each byte
+ * is examined a bounded number of times however the input is cut. Once decided, the held bytes are
+ * scanned in place; those after a message found there wait in held[start..start + count) for the
+ * next call.
+ */
+#define NEED_MORE (-1)
+#define INVALID 0
+
+/* Bytes that may start a message. */
+static bool may_start(uint8_t byte)
+{
+#if ILAHRS_STREAM_SENTENCES
+    if (byte == PAHR_START) {
+        return true;
+    }
+#endif
+    return byte == ILAHRS_FRAME_HEADER_0;
+}
+
+/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE. */
+static int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+{
+    int size = frame_check(p, n, &msg->frame);
+    if (size < 0) {
+        return size == -ILAHRS_ERR_TRUNCATED ? NEED_MORE : INVALID;
+    }
+    msg->kind = ILAHRS_MESSAGE_FRAME;
+    msg->data = p;
+    msg->size = (size_t)size;
+    return size;
+}
+
+#if ILAHRS_STREAM_SENTENCES
+/* The characters a sentence holds before its CR LF. */
+static bool printable(uint8_t byte)
+{
+    return (unsigned)(byte - 0x20u) <= 0x7Eu - 0x20u;
+}
+
+/*
+ * The sentence at p[0..n) (p[0] is "$"), of which p[0..seen) were examined before: as
+ * frame_candidate(). It runs to its first LF, within the longest sentence, where pahr_body()
+ * decides it as ilahrs_pahr_parse() would; before that, a byte that no sentence holds decides it.
+ */
+static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
+{
+    size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
+    size_t i;
+    size_t at;
+    size_t field;
+    for (i = 1; i < PAHR_PREFIX_LENGTH; i++) {
+        if (i == n) {
+            return NEED_MORE;
+        }
+        if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+            return INVALID;
+        }
+    }
+    seen = seen > i ? seen : i;
+    for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
+    }
+    if (i == limit) {
+        for (i = seen; i < limit; i++) {
+            if (!printable(p[i]) && p[i] != PAHR_CR) {
+                return INVALID;
+            }
+        }
+        return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
+    }
+    /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
+     * what ilahrs_pahr_parse() checks before pahr_body(). */
+    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence, &at, &field) != ILAHRS_OK) {
+        return INVALID;
+    }
+    msg->kind = ILAHRS_MESSAGE_SENTENCE;
+    msg->data = p;
+    msg->size = i + 1;
+    return (int)(i + 1);
+}
+#endif
+
+/* The message at p[0..n), of which p[0..seen) were examined before: as frame_candidate(). */
+static int candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
+{
+    if (p[0] == ILAHRS_FRAME_HEADER_0) {
+        return frame_candidate(p, n, msg);
+    }
+#if ILAHRS_STREAM_SENTENCES
+    if (p[0] == PAHR_START) {
+        return sentence_candidate(p, n, seen, msg);
+    }
+#else
+    (void)seen;
+#endif
+    return INVALID;
+}
+
+/*
+ * Decide on *data / *len in place (the caller's input, or the held bytes, held[start..start +
+ * count)); the first candidate's first `seen` bytes were examined before. True with a message,
+ * *data / *len then past it (for held bytes: start and count). False when every byte is decided, or
+ * an undecided candidate waits at the front of `held` (held[0..count), shorter than the buffer);
+ * unless `final`: the input has ended, so an undecided candidate is invalid.
+ */
+static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t seen, bool final, ilahrs_message_t *msg)
+{
+    const uint8_t *p = *data;
+    size_t n = *len;
+    for (; n != 0; p++, n--, seen = 0) {
+        int r = may_start(*p) ? candidate(p, n, seen, msg) : INVALID;
+        if (r > 0) {
+            *data = p + r;
+            *len = n - (size_t)r;
+            return true;
+        }
+        if (r == NEED_MORE && !final) {
+            break;
+        }
+        s->discarded++;
+    }
+    if (n != 0 && p != s->held) {
+        copy_forward(s->held, p, n);
+    }
+    s->count = (uint8_t)n;
+    *data = p + n;
+    *len = 0;
+    return false;
+}
+
+/* scan() on the held bytes: a message is handed out from there (the bytes after it wait in
+ * held[start..start + count) for the next call), else the held bytes are all decided or wait at the
+ * front. */
+static bool scan_held(ilahrs_stream_t *s, size_t seen, bool final, ilahrs_message_t *msg)
+{
+    const uint8_t *p = s->held + s->start;
+    size_t n = s->count;
+    s->start = 0;
+    if (!scan(s, &p, &n, seen, final, msg)) {
+        return false;
+    }
+    s->start = (uint8_t)(p - s->held); /* after the message: not 0 */
+    s->count = (uint8_t)n;
+    return true;
+}
+
+void ilahrs_stream_init(ilahrs_stream_t *stream)
+{
+    stream->discarded = 0;
+    stream->start = 0;
+    stream->count = 0;
+}
+
+/* A byte that may decide something: appended to the held bytes (the message handed out last
+ * leaves), which are then decided. */
+static NOINLINE bool push_decide(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+{
+    size_t seen = s->count;
+    if (s->start != 0) {
+        copy_forward(s->held, s->held + s->start, seen); /* never examined */
+        s->start = 0;
+        seen = 0;
+    }
+    s->held[s->count++] = byte; /* room: the held bytes wait for a longer message, or followed one */
+    return scan_held(s, seen, false, msg);
+}
+
+bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+{
+    /* Most bytes only extend the candidate waiting in held[0..count): a frame's short of its
+     * header, or of its length; a sentence's short of its prefix, or printable (not the LF). */
+    const uint8_t *h = s->held;
+    size_t n = s->count;
+    size_t until = 0; /* bytes the candidate needs at least before it can be decided */
+    if (s->start != 0 || n == 0) {
+        return push_decide(s, byte, msg);
+    }
+    if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        until = n < ILAHRS_FRAME_PAYLOAD_OFFSET
+                    ? ILAHRS_FRAME_PAYLOAD_OFFSET
+                    : ILAHRS_FRAME_HEADER_SIZE
+                          + LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    }
+#if ILAHRS_STREAM_SENTENCES
+    else if (h[0] == PAHR_START) {
+        until = n < PAHR_PREFIX_LENGTH ? PAHR_PREFIX_LENGTH : printable(byte) ? ILAHRS_PAHR_MAX_LENGTH : 0;
+    }
+#endif
+    if (n + 1 >= until) {
+        return push_decide(s, byte, msg);
+    }
+    s->held[n] = byte;
+    s->count = (uint8_t)(n + 1);
+    return false;
+}
+
+bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
+{
+    for (;;) {
+        if (s->start != 0) {
+            if (scan_held(s, 0, false, msg)) {
+                return true;
+            }
+        } else if (*len == 0) {
+            return false;
+        } else if (s->count != 0) {
+            /* A candidate waits in `held`: the input reaches it a byte at a time. */
+            (*len)--;
+            if (ilahrs_stream_push(s, *(*data)++, msg)) {
+                return true;
+            }
+        } else {
+            /* In place in the input; a candidate that waits at its end moves to `held`. */
+            return scan(s, data, len, 0, false, msg);
+        }
+    }
+}
+
+bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    /* Without a message handed out, the held bytes are a candidate waiting for input. */
+    return s->start != 0 && scan_held(s, 0, false, msg);
+}
+
+bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
+{
+    return scan_held(s, 0, true, msg);
+}
