@@ -1,6 +1,6 @@
-// Copied from generator/targets/c/runtime/examples/decode_capture.c; spec spec/ilahrs.yaml, hash
-// af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f. Do not edit: change the runtime source and run
-// `make generate`.
+// Copied from generator/targets/c/runtime/examples/decode_capture.c for spec/ilahrs.yaml,
+// spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Do not edit: change the runtime source and run `make generate`.
 /*
  * decode_capture: print every message in a capture of AHRS output.
  *
