@@ -27,7 +27,11 @@ lint-python: setup
 	$(VENV)/bin/mypy --exclude '^$(PY_RUNTIME)/' --exclude '^build/' --exclude '^\.venv/' $(PY_LINT_PATHS)
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 
+# tests/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
+# are installed from Debian's packages when missing.
 test-python: setup
+	@command -v tmux >/dev/null && command -v tshark >/dev/null || { apt-get update -qq >/dev/null && \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq tmux tshark >/dev/null; }
 	$(PY) -m pytest tests
 
 LINT_TARGETS += lint-python

@@ -129,3 +129,6 @@ __all__ = [
     "decode_date",
     "encode_date",
 ]
+
+__version__ = SPEC_VERSION
+"""The package's version: the spec's (spec/ilahrs.yaml `version`, as in pyproject.toml)."""

@@ -40,6 +40,7 @@ __all__ = [
     "LINKTYPE_ILAHRS",
     "Capture",
     "Direction",
+    "IncrementalReader",
     "Interface",
     "Packet",
     "PcapngError",
@@ -260,6 +261,77 @@ class _Reader:
         (original,) = struct.unpack_from(self.order + "I", body)
         data = body[4 : 4 + original]
         self.capture.packets.append(Packet(0, Direction.UNKNOWN, data, 0, original))
+
+
+class IncrementalReader:
+    """A pcapng file block by block, as its bytes arrive (a file that is still being written, a
+    pipe, a large file read in chunks): `feed(data)` returns the packets of the blocks it
+    completes; the bytes of an unfinished block are held (`pending`). Raises PcapngError as `read`
+    does, naming offsets in the whole file."""
+
+    def __init__(self) -> None:
+        self._reader = _Reader(b"")
+        self._buffer = bytearray()
+        self._offset = 0
+
+    @property
+    def capture(self) -> Capture:
+        """The interfaces and application seen so far (packets are returned, not kept)."""
+        return self._reader.capture
+
+    @property
+    def pending(self) -> int:
+        """Bytes of a block not yet complete."""
+        return len(self._buffer)
+
+    @property
+    def offset(self) -> int:
+        """File offset of the first byte not yet part of a complete block."""
+        return self._offset
+
+    def feed(self, data: bytes | bytearray | memoryview) -> list[Packet]:
+        self._buffer += data
+        reader, buffer = self._reader, self._buffer
+        packets = reader.capture.packets
+        if self._offset == 0 and len(buffer) >= 4 and struct.unpack_from("<I", buffer)[0] != _SHB:
+            raise PcapngError("not a pcapng file (no section header block at offset 0)")
+        pos = 0
+        while len(buffer) - pos >= 12:
+            at = self._offset + pos
+            (kind,) = struct.unpack_from("<I", buffer, pos)
+            if kind == _SHB:
+                magic = bytes(buffer[pos + 8 : pos + 12])
+                if magic not in (struct.pack("<I", _MAGIC), struct.pack(">I", _MAGIC)):
+                    raise PcapngError(f"section header at offset {at} has no byte-order magic")
+                reader.order = "<" if magic == struct.pack("<I", _MAGIC) else ">"
+            kind, length = struct.unpack_from(reader.order + "II", buffer, pos)
+            if length < 12 or length % 4:
+                raise PcapngError(f"block at offset {at} has an impossible length {length}")
+            if pos + length > len(buffer):
+                break
+            (trailer,) = struct.unpack_from(reader.order + "I", buffer, pos + length - 4)
+            if trailer != length:
+                raise PcapngError(f"block at offset {at}: its lengths differ ({length}, {trailer})")
+            body = bytes(buffer[pos + 8 : pos + length - 4])
+            handler = {_SHB: reader.section, _IDB: reader.interface, _EPB: reader.packet, _SPB: reader.simple_packet}
+            if kind in handler:
+                handler[kind](at, body)
+            pos += length
+        del buffer[:pos]
+        self._offset += pos
+        done = list(packets)
+        packets.clear()
+        return done
+
+    def finish(self, *, partial: bool = False) -> None:
+        """The input has ended: PcapngError if it ends inside a block (unless `partial`, which
+        marks the capture truncated)."""
+        if self._offset == 0 and len(self._buffer) < 12:
+            raise PcapngError("not a pcapng file (no section header block at offset 0)")
+        if self._buffer:
+            if not partial:
+                raise PcapngError(f"file ends inside the block at offset {self._offset} ({len(self._buffer)} bytes)")
+            self._reader.capture.truncated = True
 
 
 def read(stream: BinaryIO, *, partial: bool = False) -> Capture:

@@ -35,6 +35,9 @@ CODEC = ("errors", "frame", "valuecodec", "codec", "sentence", "commandset", "st
 # socket, the serial client, the command line.
 BEHAVIOUR_TABLES = ("statemachine", "roles")
 BEHAVIOUR = ("diagram", "machine", "synthetic", "motion", "device", "host", "simulate", "serial", "__main__")
+# The subcommands of the `ilahrs` command besides simulate and diagram (record, decode, send, params,
+# monitor, calibrate, plot).
+CLI = ("cli_common", "cli_capture", "cli_decode", "cli_device", "cli_monitor", "cli_plot", "cli")
 # What a spec must have for the package to be generated.
 REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibration_success", "ack_payload")
 
@@ -51,6 +54,7 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     if spec.state_machine is not None:
         files += [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_TABLES]
         files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in BEHAVIOUR]
+        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CLI]
     files += [
         Output(f"{PACKAGE}/__init__.py", "__init__.py.j2"),
         Output(f"{PACKAGE}/py.typed", "py.typed.j2"),

@@ -8,11 +8,12 @@ import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
 
+from .cli import COMMANDS_RUN, OneLineParser, add_subcommands, run
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
 from .encodings import VARIANTS
 from .errors import IlahrsError
 from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
-from .simulate import BAUDRATE, Faults, Line, run_pty, run_tcp
+from .simulate import BAUDRATE, Faults, Line, recorder, run_pty, run_tcp
 from .spec import SPEC_VERSION
 from .statemachine import DEFAULT_FIRMWARE, TIMER_FIELDS, mermaid
 
@@ -27,7 +28,8 @@ def _rate(text: str) -> float:
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="ilahrs", description=f"ilahrs {SPEC_VERSION}: Inertial Labs AHRS tools")
+    parser = OneLineParser(prog="ilahrs", description=f"ilahrs {SPEC_VERSION}: Inertial Labs AHRS tools")
+    parser.add_argument("--version", action="version", version=f"ilahrs {SPEC_VERSION}")
     commands = parser.add_subparsers(dest="command", required=True)
     sim = commands.add_parser(
         "simulate",
@@ -49,7 +51,9 @@ def _parser() -> argparse.ArgumentParser:
         "--garbage-rate", type=_rate, default=0.0, metavar="P", help="probability of noise before a message"
     )
     sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
+    sim.add_argument("--record", metavar="FILE.pcapng", help="record both directions with timestamps as pcapng")
     commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
+    add_subcommands(commands)
     return parser
 
 
@@ -71,6 +75,8 @@ def _device(args: argparse.Namespace) -> Device:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command in COMMANDS_RUN:
+        return run(args)
     if args.command == "diagram":
         sys.stdout.write(mermaid())
         return 0
@@ -83,6 +89,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     with ExitStack() as stack:
         log = stack.enter_context(open(args.log, "w", encoding="utf-8")) if args.log else None
         line = Line(device, faults, log)
+        if args.record:
+            line.recorder = recorder(stack.enter_context(open(args.record, "wb")), args.tcp or "pty")
         try:
             status = run_tcp(line, args.tcp) if args.tcp else run_pty(line)
         except (ValueError, OSError) as exc:

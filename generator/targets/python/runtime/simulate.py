@@ -26,13 +26,14 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import FrameType
-from typing import Final, TextIO
+from typing import BinaryIO, Final, TextIO
 
 from .device import Device
+from .pcapng import Direction, PcapngWriter
 from .spec import SERIAL_LINE
 from .stream import StreamDecoder
 
-__all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "run_pty", "run_tcp"]
+__all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "recorder", "run_pty", "run_tcp"]
 
 BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
 """The baud rate of the AHRS serial line (section 6; 8 data bits, no parity, 1 stop bit: `ilahrs.spec`)."""
@@ -75,6 +76,8 @@ class Line:
         """Messages written unchanged."""
         self.lost = 0
         """Messages lost because nobody read the line."""
+        self.recorder: Callable[[bytes, bool], None] | None = None
+        """Called with each chunk the host sent (True: host to device) and each chunk written."""
 
     def step(self, incoming: bytes, now: float) -> bytes:
         """Advance the device to `now` (seconds, any monotonic clock), hand it `incoming`; return
@@ -83,12 +86,16 @@ class Line:
         self._time = now
         out = self.device.advance(elapsed)
         if incoming:
+            if self.recorder is not None:
+                self.recorder(incoming, True)
             out += self.device.receive(incoming)
         if not out:
             return b""
         written = bytearray()
         for message in self._splitter.feed(out):
             written += self._emit(message.raw)
+        if written and self.recorder is not None:
+            self.recorder(bytes(written), False)
         return bytes(written)
 
     def lose(self, data: bytes) -> None:
@@ -121,6 +128,18 @@ class Line:
             entry = {"t": round(self.device.now, 6), "state": self.device.state, **entry}
             self._log.write(json.dumps(entry, sort_keys=True) + "\n")
             self._log.flush()
+
+
+def recorder(stream: BinaryIO, port: str) -> Callable[[bytes, bool], None]:
+    """A Line.recorder that writes each chunk to `stream` as pcapng (ilahrs.pcapng), as the host
+    sees the line: what the host sent is outbound, what the device wrote inbound."""
+    writer = PcapngWriter(stream, port=port, baud=BAUDRATE, application="ilahrs simulate")
+
+    def write(data: bytes, from_host: bool) -> None:
+        direction = Direction.OUTBOUND if from_host else Direction.INBOUND
+        writer.write(data, time.time_ns() // 1000, direction)
+
+    return write
 
 
 def loopback_address(text: str) -> tuple[str, int]:

@@ -1,0 +1,236 @@
+# Copied from generator/targets/python/runtime/cli.py for spec/ilahrs.yaml,
+# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Do not edit: change the runtime source and run `make generate`.
+"""The subcommands of `ilahrs` besides simulate and diagram: record, decode, send, params, monitor,
+calibrate and plot. `add_subcommands()` adds their parsers; `run()` runs one and turns bad input
+into one line on stderr and exit status 2 (never a traceback)."""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import os
+import re
+import sys
+from collections.abc import Callable
+from typing import Final, NoReturn
+
+from .cli_capture import open_source
+from .cli_common import BAUDRATE, CliError, lookup, variant_named
+from .cli_decode import FORMATS, CaptureDecoder, Progress, RowWriter, kinds, output_table, summary
+from .commands import COMMANDS
+from .encodings import VARIANTS
+from .errors import IlahrsError
+
+__all__ = ["COMMANDS_RUN", "OneLineParser", "add_subcommands", "run"]
+
+_EPILOG: Final = "PORT: a device path (/dev/ttyUSB0, the pty `ilahrs simulate` prints) or socket://HOST:PORT."
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are one line on stderr (exit status 2), with the closest
+    valid choice suggested."""
+
+    def error(self, message: str) -> NoReturn:
+        match = re.search(r"invalid choice: '([^']*)' \(choose from (.*)\)", message)
+        if match:
+            choices = re.findall(r"'([^']*)'", match.group(2)) or [c.strip() for c in match.group(2).split(",")]
+            close = difflib.get_close_matches(match.group(1), choices, n=1)
+            hint = f"; did you mean {close[0]}?" if close else f" (one of {', '.join(choices)})"
+            message = f"unknown command {match.group(1)!r}{hint}"
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
+def _port(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument("port", metavar="PORT", help="device path or socket://HOST:PORT")
+    sub.add_argument("--baud", type=int, default=BAUDRATE, help=f"baud rate (default {BAUDRATE})")
+
+
+def _variant(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument("--variant", metavar="NAME", help=f"device variant for scaled rates ({', '.join(VARIANTS)})")
+
+
+def _output_format(sub: argparse.ArgumentParser, default: str | None) -> None:
+    starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
+    sub.add_argument("--output-format", metavar="COMMAND", default=default, help=f"the start command ({starting})")
+
+
+def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None:
+    """Add the parsers of record, decode, send, params, monitor, calibrate and plot."""
+    rec = commands.add_parser("record", help="record a session to pcapng", epilog=_EPILOG)
+    _port(rec)
+    rec.add_argument("-o", "--output", required=True, metavar="FILE.pcapng", help="the capture to write")
+    rec.add_argument("--start", metavar="COMMAND", help="start this output after Stop (e.g. AHRScont3)")
+    rec.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
+    rec.add_argument("--count", type=int, metavar="N", help="stop after N output messages")
+
+    dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
+    dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
+    dec.add_argument("--to", choices=FORMATS, default="text", help="output format (default text)")
+    dec.add_argument("--types", metavar="KIND,...", help="only these message kinds (table or command names, PAHR)")
+    _variant(dec)
+    dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
+    dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
+    _output_format(dec, None)
+
+    snd = commands.add_parser("send", help="send one command and print the answer", epilog=_EPILOG)
+    _port(snd)
+    snd.add_argument("name", metavar="COMMAND", help="ICD command name (e.g. GetBIT, AHRScont3)")
+    snd.add_argument("assignments", nargs="*", metavar="key=value", help="fields of the command's parameter block")
+    _variant(snd)
+
+    par = commands.add_parser("params", help="print parameters; `set key=value ...` changes them", epilog=_EPILOG)
+    _port(par)
+    par.add_argument("action", nargs="*", metavar="set key=value", help="set key=value ...")
+    _variant(par)
+
+    mon = commands.add_parser("monitor", help="live full-screen view of the output (q quits)", epilog=_EPILOG)
+    _port(mon)
+    _output_format(mon, "AHRScont3")
+    _variant(mon)
+
+    cal = commands.add_parser("calibrate", help="guided hard/soft-iron calibration", epilog=_EPILOG)
+    _port(cal)
+    cal.add_argument("kind", metavar="2d|3d|2d2t", help="calibration type")
+    cal.add_argument("--accumulation", type=int, metavar="S", help="accumulation time per run, seconds")
+    cal.add_argument("--runs", type=int, default=2, metavar="N", help="runs of a 2D-2T calibration (default 2)")
+    answer = cal.add_mutually_exclusive_group()
+    answer.add_argument("--yes", dest="answer", action="store_const", const=True, help="accept without asking")
+    answer.add_argument("--no", dest="answer", action="store_const", const=False, help="discard without asking")
+    _variant(cal)
+
+    plot = commands.add_parser("plot", help="plot fields of a capture to a PNG (needs matplotlib)")
+    plot.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump")
+    plot.add_argument("-o", "--output", required=True, metavar="OUT.png", help="the PNG to write")
+    plot.add_argument("--fields", default="heading,pitch,roll", help="fields to plot (default heading,pitch,roll)")
+    plot.add_argument("--size", default="1200x800", metavar="WxH", help="image size in pixels (default 1200x800)")
+    _variant(plot)
+    _output_format(plot, None)
+
+
+def _decode(args: argparse.Namespace) -> int:
+    valid = kinds()
+    selected = [lookup("message kind", k.strip(), valid) for k in args.types.split(",")] if args.types else valid
+    variant = variant_named(args.variant)
+    table = output_table(args.output_format) if args.output_format else None
+    source = open_source(args.file)
+    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=args.output_format is not None)
+    writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
+    wanted = set(selected)
+    progress = Progress(source)
+    failure: CliError | None = None
+    try:
+        try:
+            for chunk in source.chunks(follow=args.follow):
+                for message in decoder.feed(chunk):
+                    if message.kind in wanted:
+                        writer.write(message)
+                progress.update()
+                if args.follow:
+                    sys.stdout.flush()
+        except KeyboardInterrupt:
+            pass
+        except CliError as exc:
+            failure = exc
+        for message in decoder.finish():
+            if message.kind in wanted:
+                writer.write(message)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    finally:
+        progress.done()
+        source.close()
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    if failure is not None:
+        raise failure
+    return 0
+
+
+def _record(args: argparse.Namespace) -> int:
+    from .cli_device import record
+
+    return record(args.port, args.baud, args.output, start=args.start, duration=args.duration, count=args.count)
+
+
+def _send(args: argparse.Namespace) -> int:
+    from .cli_device import send
+
+    return send(args.port, args.baud, args.name, args.assignments, variant=variant_named(args.variant), out=sys.stdout)
+
+
+def _params(args: argparse.Namespace) -> int:
+    from .cli_device import params
+
+    action = list(args.action)
+    if action:
+        lookup("params action", action[0], ["set"])
+        if len(action) == 1:
+            raise CliError("params set needs at least one key=value")
+    return params(args.port, args.baud, action[1:], variant=variant_named(args.variant), out=sys.stdout)
+
+
+def _calibrate(args: argparse.Namespace) -> int:
+    from .cli_device import calibrate
+
+    variant = variant_named(args.variant)
+    return calibrate(
+        args.port,
+        args.baud,
+        args.kind,
+        accumulation=args.accumulation,
+        runs=args.runs,
+        answer=args.answer,
+        variant=variant,
+        out=sys.stdout,
+    )
+
+
+def _monitor(args: argparse.Namespace) -> int:
+    from .cli_monitor import monitor
+
+    output_table(args.output_format)  # refuse an unknown command before opening the port
+    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant))
+
+
+def _plot(args: argparse.Namespace) -> int:
+    from .cli_plot import plot
+
+    variant = variant_named(args.variant)
+    return plot(
+        args.file,
+        args.output,
+        fields_text=args.fields,
+        size_text=args.size,
+        variant=variant,
+        output_format=args.output_format,
+    )
+
+
+COMMANDS_RUN: Final[dict[str, Callable[[argparse.Namespace], int]]] = {
+    "record": _record,
+    "decode": _decode,
+    "send": _send,
+    "params": _params,
+    "monitor": _monitor,
+    "calibrate": _calibrate,
+    "plot": _plot,
+}
+"""The subcommands this module runs."""
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the subcommand `args.command`: its exit status; 2 with one line on stderr for bad input."""
+    prog = f"ilahrs {args.command}"
+    try:
+        return COMMANDS_RUN[args.command](args)
+    except CliError as exc:
+        print(f"{prog}: {exc}", file=sys.stderr)
+        return 2
+    except IlahrsError as exc:
+        print(f"{prog}: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"{prog}: interrupted", file=sys.stderr)
+        return 130
