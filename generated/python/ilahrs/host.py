@@ -246,6 +246,9 @@ class Host:
     def setting(self, timer: str) -> float:
         """What the host knows of a timer's parameter (alignment time, accumulation time in s;
         update rate in Hz): learned from blocks sent and parameter blocks read, else the default."""
+        if not isinstance(timer, str) or timer not in TIMER_IS_RATE:
+            detail = f"no timer {brief(timer)}{suggest(timer, TIMER_IS_RATE)}"
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "timer", detail)
         default = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
         return self._settings.get(timer, default)
 

@@ -57,7 +57,7 @@ class DateEncoding:
     def decode(self, value: float) -> tuple[int, int, int]:
         """(year, month, day) of a date float: the valid date whose encoding is nearest (E15)."""
         numeric = isinstance(value, (int, float)) and not isinstance(value, bool)
-        if not numeric or not math.isfinite(value) or not self.year_min - 1 <= value <= self.year_max + 2:
+        if not numeric or not self.year_min - 1 <= value <= self.year_max + 2 or not math.isfinite(value):
             raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "date", f"{brief(value)} is not a date float")
         best: tuple[float, int, int, int] | None = None
         base = math.floor(value)
@@ -85,6 +85,8 @@ class DeclinationEncoding:
 
     def is_computed(self, value: float) -> bool:
         """True if the AHRS computes the declination itself."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "declination", f"{brief(value)} is not a number")
         return value > self.compute_above
 
     def is_valid(self, value: float) -> bool:
@@ -113,6 +115,10 @@ class CalibrationSuccessEncoding:
 
     def accuracy_deg(self, success: int) -> float | None:
         """The predicted 3-sigma heading error in degrees, or None (failed, or no estimate)."""
+        if isinstance(success, bool) or not isinstance(success, int):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "success", f"{brief(success)} is not an integer")
+        if not 0 <= success <= 0xFF:
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "success", f"{brief(success)} is not a byte")
         if success in (self.failed, self.no_estimate):
             return None
         return success / self.accuracy_divisor

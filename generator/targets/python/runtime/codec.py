@@ -129,6 +129,8 @@ def _check_int(value: object, low: int, high: int, name: str, offset: int) -> No
 def _check_float(value: object, low: float, high: float, name: str, offset: int) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} is not a number")
+    if isinstance(value, int) and abs(value) > FLOAT32_MAX:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} outside {low!r}..{high!r}")
     if not math.isfinite(value) or not low <= value <= high:
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} outside {low!r}..{high!r}")
 

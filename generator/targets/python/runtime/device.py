@@ -151,7 +151,10 @@ def _check_firmware_text(text: object) -> None:
     field = next(f for f in table.FIELDS if f.name == _FIRMWARE_FIELD)
     if isinstance(text, str):
         text = text[: field.size]
-    table.from_raw({_FIRMWARE_FIELD: text})
+    try:
+        table.from_raw({_FIRMWARE_FIELD: text})
+    except IlahrsError as exc:
+        raise IlahrsError(exc.kind, None, "firmware_text", exc.detail) from None
 
 
 def _round(value: float) -> int:

@@ -25,13 +25,15 @@ _HEX: Final = re.compile(rb"[0-9A-Fa-f]+")
 def nmea_checksum(body: bytes) -> int:
     """XOR of the characters between "$" and "*"."""
     value = 0
-    for byte in body:
+    for byte in require_bytes(body, "body"):
         value ^= byte
     return value
 
 
 def scaled(value: float, divisor: int, name: str) -> int:
     """The scaled integer of an engineering value, rounding half away from zero."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 2**63:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is out of range")
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is not a finite number")
     product = value * divisor
