@@ -130,7 +130,7 @@ def _probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
     yield "Host(state=v)", lambda v: Host(state=v)
     yield "Host(firmware=v)", lambda v: Host(firmware=v)
     yield "Host(output=v)", lambda v: Host(output=v)
-    yield "Host.mid_stream", Host.mid_stream
+    yield "Host.mid_stream", lambda v: Host.mid_stream(v, firmware=None)
     yield "Host.advance", lambda v: Host().advance(v)
     yield "Host.receive", lambda v: Host().receive(v)
     yield "Host.send", lambda v: Host().send(v)

@@ -39,7 +39,7 @@ from typing import Final
 from .codec import FieldInfo, Payload, field_kind, required_variant
 from .commands import COMMANDS, ack_for
 from .encodings import CALIBRATION_FAILED, CALIBRATION_NO_ESTIMATE, VARIANTS, Variant, encode_date
-from .errors import ErrorKind, IlahrsError, brief, require_int, require_seconds
+from .errors import ErrorKind, IlahrsError, brief, require_seconds
 from .frame import Frame, MessageType
 from .machine import firmware_is_valid
 from .motion import Motion, Sensors
@@ -230,7 +230,8 @@ class Device:
         self._memory: dict[str, object] = {k: v for k, v in params.raw().items() if not isinstance(v, bytes)}
         if device_id is not None:
             self._memory[_DEVICE_ID_FIELD] = device_id
-        require_int(seed, "seed", -(2**63), 2**64 - 1)
+        if isinstance(seed, bool) or not isinstance(seed, int):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "seed", f"{brief(seed)} is not an integer")
         ParameterBlock.from_raw(self._memory).check()
         self._calibration_memory: dict[str, object] = {}
         """The calibration saved by ACCEPT (what CALIBRATION_RESULTS reads, Table 6.17)."""
