@@ -63,25 +63,13 @@ def check(v: Any, line: str) -> str | None:
 def test_requests_follow_the_line_protocol() -> None:
     assert H.request(vector("a", "checksum", "aa 55", 0)) == "checksum AA55"
     assert H.request(vector("a", "checksum", "", 0)) == "checksum -"
-    assert (
-        H.request(vector("a", "frame_encode", {"message_type": 0, "payload": "80", "reserved": 5}, ""))
-        == "frame_encode 0 80 5"
-    )
-    assert (
-        H.request(
-            vector(
-                "a",
-                "payload_encode",
-                {"type": "t", "fields": {"x": 1, "y": -0.5, "z": "nan", "name": "a b=%,", "r": "00ff"}},
-                "",
-            )
-        )
-        == "payload_encode t - x=1 y=-0.5 z=nan name=a%20b%3D%25%2C r=00ff"
-    )
-    assert (
-        H.request(vector("a", "payload_decode", {"type": "t", "hex": "01", "variant": "v"}, {}))
-        == "payload_decode t 01 v"
-    )
+    assert H.request(vector("a", "frame_encode", {"message_type": 0, "payload": "80", "reserved": 5}, "")) == \
+        "frame_encode 0 80 5"
+    assert H.request(vector("a", "payload_encode", {"type": "t", "fields": {
+        "x": 1, "y": -0.5, "z": "nan", "name": "a b=%,", "r": "00ff"}}, "")) == \
+        "payload_encode t - x=1 y=-0.5 z=nan name=a%20b%3D%25%2C r=00ff"
+    assert H.request(vector("a", "payload_decode", {"type": "t", "hex": "01", "variant": "v"}, {})) == \
+        "payload_decode t 01 v"
     assert H.request(vector("a", "nmea_decode", "$P\r\n", {})) == "nmea_decode $P%0D%0A"
     assert H.request(vector("a", "stream", {"chunks": ["aa", "", "55 00"]}, {})) == "stream AA,-,5500"
 
@@ -118,12 +106,8 @@ def test_hex_compares_bytes() -> None:
 
 
 def test_payload_fields_compare_by_kind() -> None:
-    v = vector(
-        "a",
-        "payload_decode",
-        {},
-        {"fields": {"i": -3, "f": 0.1, "n": "nan", "c": "4.9 x", "r": "00ff", "z": -0.0}, "values": {"e": 359.99}},
-    )
+    v = vector("a", "payload_decode", {}, {"fields": {
+        "i": -3, "f": 0.1, "n": "nan", "c": "4.9 x", "r": "00ff", "z": -0.0}, "values": {"e": 359.99}})
     good = "ok f.i=-3 f.f=0.10000000149011612 f.n=NaN f.c=4.9%20x f.r=00FF f.z=-0.0 v.e=359.99000000001"
     assert check(v, good) is None
     assert check(v, good.replace("f.i=-3", "f.i=-4")) == "field i differs"
@@ -169,9 +153,8 @@ def register(directory: Path, table: dict[str, str], kinds: list[str], command: 
     (scripts / "runner.py").write_text(SCRIPTED_RUNNER)
     (scripts / "table.json").write_text(json.dumps(table))
     cmd = command or ["{python}", str(scripts / "runner.py"), str(scripts / "table.json")]
-    (directory / "fake.json").write_text(
-        json.dumps({"name": "fake", "command": cmd, "kinds": kinds, "build": "make build-fake"})
-    )
+    (directory / "fake.json").write_text(json.dumps({"name": "fake", "command": cmd, "kinds": kinds,
+                                                     "build": "make build-fake"}))
     return directory
 
 
@@ -191,9 +174,8 @@ CHECKSUMS: list[dict[str, Any]] = [
 
 def test_pass_fail_and_not_supported_are_counted(tmp_path: Path) -> None:
     vectors = write_suite(tmp_path / "v", CHECKSUMS)
-    bindings = register(
-        tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "ok 7", "checksum 02": "ok 2"}, ["checksum"]
-    )
+    bindings = register(tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "ok 7", "checksum 02": "ok 2"},
+                        ["checksum"])
     code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
     assert code == 1
     assert "2 passed, 1 FAILED, 1 n/s" in text
@@ -208,8 +190,7 @@ def test_all_passing_exits_zero_and_json_report(tmp_path: Path) -> None:
     assert code == 0 and text.rstrip().endswith("PASSED")
     report = json.loads((tmp_path / "r.json").read_text())
     assert report["ok"] and report["results"] == [
-        {"binding": "fake", "suite": "t", "passed": 1, "failed": 0, "unsupported": 0}
-    ]
+        {"binding": "fake", "suite": "t", "passed": 1, "failed": 0, "unsupported": 0}]
 
 
 def test_unsupported_for_a_listed_kind_fails(tmp_path: Path) -> None:
@@ -229,18 +210,16 @@ def test_missing_runner_names_its_build_command(tmp_path: Path) -> None:
 
 def test_a_runner_that_exits_is_restarted(tmp_path: Path) -> None:
     vectors = write_suite(tmp_path / "v", CHECKSUMS[:3])
-    bindings = register(
-        tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "EXIT", "checksum 02": "ok 2"}, ["checksum"]
-    )
+    bindings = register(tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "EXIT", "checksum 02": "ok 2"},
+                        ["checksum"])
     code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
     assert code == 1 and "2 passed, 1 FAILED" in text and "runner exited (exit status 3)" in text
 
 
 def test_a_runner_that_hangs_times_out(tmp_path: Path) -> None:
     vectors = write_suite(tmp_path / "v", CHECKSUMS[:3])
-    bindings = register(
-        tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "HANG", "checksum 02": "ok 2"}, ["checksum"]
-    )
+    bindings = register(tmp_path / "b", {"checksum -": "ok 0", "checksum 01": "HANG", "checksum 02": "ok 2"},
+                        ["checksum"])
     code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings), "--timeout", "1")
     assert code == 1 and "2 passed, 1 FAILED" in text and "no answer within 1 s" in text
 
@@ -303,52 +282,36 @@ def test_python_runner_answers_in_protocol_forms() -> None:
 def test_python_runner_walks_the_state_machine() -> None:
     assert RUNNER.answer("session - C:80,E:output_due,E:alignment_done,E:output_due,C:FE") == (
         "ok steps=AHRScont1>aligning_continuous>ack,output_due>aligning_continuous>-,"
-        "alignment_done>continuous>initial_alignment,output_due>continuous>output,Stop>idle>-"
-    )
+        "alignment_done>continuous>initial_alignment,output_due>continuous>output,Stop>idle>-")
     # A data message is the parameter block only in a state expecting a block of its size.
     assert RUNNER.answer("session - D:50,C:40,D:50,C:40,D:22") == (
         "ok steps=other_message>idle>-,LoadAHRSPar>awaiting_parameters>-,parameter_block>idle>ack,"
-        "LoadAHRSPar>awaiting_parameters>-,other_message>idle>-"
-    )
+        "LoadAHRSPar>awaiting_parameters>-,other_message>idle>-")
     # 0xFE is ExitClb in calibration (acknowledged); firmware before 4.9.9.0 finishes 2D-2T on 0x20.
     assert RUNNER.answer("session 4.9.8.0 C:22,D:22,C:20,C:FE") == (
         "ok steps=Start2D2TClb>runs_awaiting_parameters>-,parameter_block>runs_ready>ack,"
-        "StopClbRun>calibration_deciding>calibration_result,ExitClb>idle>ack"
-    )
+        "StopClbRun>calibration_deciding>calibration_result,ExitClb>idle>ack")
     assert RUNNER.answer("session - C:22,D:22,C:20") == (
-        "ok steps=Start2D2TClb>runs_awaiting_parameters>-,parameter_block>runs_ready>ack,StopClbRun>runs_ready>-"
-    )
+        "ok steps=Start2D2TClb>runs_awaiting_parameters>-,parameter_block>runs_ready>ack,StopClbRun>runs_ready>-")
     assert RUNNER.answer("session - C:00") == "ok steps=unknown>idle>-"
 
 
 def test_session_requests_and_comparison() -> None:
-    v = vector(
-        "a",
-        "session",
-        {
-            "firmware": "4.9.8.0",
-            "events": [{"command": "0xFE"}, {"command": 32}, {"data": 6}, {"event": "block_timeout"}],
-        },
-        {"steps": [{"event": "Stop"}, {"state": "idle"}, {}, {"send": []}], "state": "idle"},
-    )
+    v = vector("a", "session", {"firmware": "4.9.8.0", "events": [
+        {"command": "0xFE"}, {"command": 32}, {"data": 6}, {"event": "block_timeout"}]},
+        {"steps": [{"event": "Stop"}, {"state": "idle"}, {}, {"send": []}], "state": "idle"})
     assert H.request(v) == "session 4.9.8.0 C:FE,C:20,D:6,E:block_timeout"
     assert H.request(vector("a", "session", {"events": [{"command": "fe"}]}, {})) == "session - C:FE"
     good = "ok steps=Stop>idle>-,StopClbRun>idle>-,other_message>idle>-,block_timeout>idle>-"
     assert check(v, good) is None
     assert check(v, good.replace("Stop>", "ExitClb>", 1)) == "step 0: event ExitClb, expected Stop"
     assert check(v, good.replace("block_timeout>idle>-", "block_timeout>idle>ack")) == (
-        "step 3: send ['ack'], expected []"
-    )
+        "step 3: send ['ack'], expected []")
     assert check(v, good.replace(",block_timeout>idle>-", "")) == "3 steps, expected 4"
     assert check(v, good.replace("block_timeout>idle", "block_timeout>sleep")) == "final state sleep, expected idle"
     assert check(v, "ok steps=Stop>idle") == "step 'Stop>idle' is not EVENT>STATE>SENDS"
     bad: dict[str, Any]
-    for bad in (
-        {"events": []},
-        {"events": [{"command": 256}]},
-        {"events": [{"teleport": 1}]},
-        {"firmware": "new", "events": [{"data": 1}]},
-        {"events": [{"command": 1, "data": 2}]},
-    ):
+    for bad in ({"events": []}, {"events": [{"command": 256}]}, {"events": [{"teleport": 1}]},
+                {"firmware": "new", "events": [{"data": 1}]}, {"events": [{"command": 1, "data": 2}]}):
         with pytest.raises(H.SuiteError):
             H.request(vector("a", "session", bad, {}))

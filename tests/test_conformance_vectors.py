@@ -63,8 +63,7 @@ def test_script_reproduces_the_committed_suites() -> None:
     for name, text in written.items():
         assert (VECTORS / name).read_text(encoding="utf-8") == text, (
             f"conformance/vectors/{name} differs from what conformance/tools/make_vectors.py writes: "
-            "edit the script and run `make vectors`, never the JSON"
-        )
+            "edit the script and run `make vectors`, never the JSON")
 
 
 def test_script_is_deterministic() -> None:
@@ -89,9 +88,8 @@ def test_suite_follows_the_schema(name: str) -> None:
 def test_oracle_is_independent_of_generator_and_bindings() -> None:
     for path in TOOLS.rglob("*.py"):
         tree = ast.parse(path.read_text(encoding="utf-8"))
-        imported = {
-            alias.name.split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names
-        }
+        imported = {alias.name.split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.Import)
+                    for alias in node.names}
         imported |= {(node.module or "").split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
         # Without yaml it cannot read the spec either: everything it knows is written from the ICD.
         assert not imported & {"generator", "ilahrs", "yaml", "kaitaistruct", "construct"}, path.name
@@ -108,11 +106,8 @@ def test_error_kinds_are_the_specs() -> None:
 
 def test_appendix_c_has_every_row_verbatim() -> None:
     vectors = SUITES["appendix-c"]["vectors"]
-    encoded = {
-        v["input"]["command"]: v["expect"]
-        for v in vectors
-        if v["kind"] == "command_encode" and isinstance(v["expect"], str)
-    }
+    encoded = {v["input"]["command"]: v["expect"] for v in vectors
+               if v["kind"] == "command_encode" and isinstance(v["expect"], str)}
     assert set(encoded) == {c.name for c in SPEC.commands} and len(encoded) == 26
     for c in SPEC.commands:
         assert bytes.fromhex(encoded[c.name])[6] == c.code
@@ -154,21 +149,10 @@ def test_payload_suite_checks_every_variant_scale() -> None:
 
 
 def test_frames_suite_has_every_decode_error() -> None:
-    errors = {
-        (v["expect"]["error"], v["expect"].get("offset"))
-        for v in SUITES["frames"]["vectors"]
-        if v["kind"] == "frame_decode" and "error" in v["expect"]
-    }
-    for expected in [
-        ("truncated", 0),
-        ("bad_header", 0),
-        ("truncated", 1),
-        ("bad_header", 1),
-        ("bad_message_type", 2),
-        ("bad_length", 4),
-        ("bad_checksum", 7),
-        ("trailing_data", 9),
-    ]:
+    errors = {(v["expect"]["error"], v["expect"].get("offset")) for v in SUITES["frames"]["vectors"]
+              if v["kind"] == "frame_decode" and "error" in v["expect"]}
+    for expected in [("truncated", 0), ("bad_header", 0), ("truncated", 1), ("bad_header", 1), ("bad_message_type", 2),
+                     ("bad_length", 4), ("bad_checksum", 7), ("trailing_data", 9)]:
         assert expected in errors, expected
 
 
@@ -262,13 +246,8 @@ def test_oracle_state_machine_against_the_spec() -> None:
         version = None if firmware is None else _just_before(firmware)
         for state in DEVICE.STATES:
             for item in DEVICE.inputs():
-                ours_event = (
-                    DEVICE.command_event(item[1], state)
-                    if item[0] == "command"
-                    else DEVICE.data_event(item[1], state)
-                    if item[0] == "data"
-                    else item[1]
-                )
+                ours_event = (DEVICE.command_event(item[1], state) if item[0] == "command" else
+                              DEVICE.data_event(item[1], state) if item[0] == "data" else item[1])
                 ours = (ours_event, DEVICE.react(state, ours_event, version))
                 theirs = _spec_step(state, item, legacy)
                 if ours != theirs:
@@ -318,15 +297,8 @@ def test_sessions_cover_the_flows() -> None:
     firmwares = {v["input"].get("firmware") for v in SUITES["sessions"]["vectors"]}
     for before in {t.firmware_before for t in MACHINE.transitions if t.firmware_before}:
         assert before in firmwares and _just_before(before) in firmwares
-    for prefix in (
-        "flow/load-parameters/",
-        "flow/calibration/Start3DClb/",
-        "flow/calibration/Start2DClb/",
-        "flow/2d2t/",
-        "flow/stopclb/",
-        "flow/sleep/",
-        "flow/unknown/",
-    ):
+    for prefix in ("flow/load-parameters/", "flow/calibration/Start3DClb/", "flow/calibration/Start2DClb/",
+                   "flow/2d2t/", "flow/stopclb/", "flow/sleep/", "flow/unknown/"):
         assert sum(i.startswith(prefix) for i in ids) >= 3, prefix
 
 

@@ -57,7 +57,5 @@ def test_construct_parses_frames() -> None:
         parsed = frame_type.parse(data)
         assert parsed.payload == payload
         assert parsed.checksum == parsed.checksum_computed == ilahrs.checksum(data[2:-2])
-        assert ks.same_raw(
-            ks.construct_raw(table, ks.construct_type(table.name).parse(parsed.payload)),
-            ilahrs.PAYLOADS[table.name].parse(payload).raw(),
-        )
+        assert ks.same_raw(ks.construct_raw(table, ks.construct_type(table.name).parse(parsed.payload)),
+                           ilahrs.PAYLOADS[table.name].parse(payload).raw())

@@ -154,7 +154,6 @@ def test_events_without_a_row_are_ignored() -> None:
 
 # --- What the ICD says, checked by hand ------------------------------------------------------------
 
-
 def test_icd_answers_by_hand() -> None:
     device = Device(seed=SEED, parameters=quick_parameters())
     # 6.3.7: ReadAHRSPar -> a data message with the 50-byte Table 6.10 payload.
@@ -220,7 +219,6 @@ def test_out_of_range_block_is_acknowledged_but_not_stored() -> None:
 
 # --- Flows, host and device back to back -----------------------------------------------------------
 
-
 def _blocks(events: list[ilahrs.HostEvent], kind: type) -> list[ilahrs.HostEvent]:
     return [e for e in events if isinstance(e, kind)]
 
@@ -271,11 +269,8 @@ def test_nmea_output_is_capped_at_50_hz() -> None:
 
 
 def test_on_request_output_formats() -> None:
-    for command, cls in (
-        ("AHRSreq1", ilahrs.FullOutput),
-        ("AHRSreq2", ilahrs.Quaternion),
-        ("AHRSreq3", ilahrs.OrientationSensors),
-    ):
+    for command, cls in (("AHRSreq1", ilahrs.FullOutput), ("AHRSreq2", ilahrs.Quaternion),
+                         ("AHRSreq3", ilahrs.OrientationSensors)):
         pair = Pair(seed=SEED)
         pair.send(command)
         assert pair.wait(0.5) == []
@@ -435,7 +430,6 @@ def test_exit_from_every_calibration_state() -> None:
 
 # --- Physics -----------------------------------------------------------------------------------------
 
-
 def _outputs(command: str, seconds: float = 2.0, variant: str = "g300_a2_tmga") -> list[ilahrs.Payload]:
     pair = Pair(seed=SEED, variant=variant)
     pair.send(command)
@@ -503,13 +497,8 @@ def test_variant_scales_accelerations_and_rates() -> None:
     assert isinstance(x.data, ilahrs.OrientationSensors) and isinstance(y.data, ilahrs.OrientationSensors)
     assert 4950 <= x.data.acc_z <= 5000  # KA 5000 LSB/g (Table 6.6 note 1)
     assert 9900 <= y.data.acc_z <= 10000  # KA 10000
-    assert (
-        abs(
-            x.data.values(ilahrs.VARIANTS["g300_a6_tmga"])["gyro_z"]
-            - y.data.values(ilahrs.VARIANTS["sn_11ac0001_0009"])["gyro_z"]
-        )
-        < 0.5
-    )
+    assert abs(x.data.values(ilahrs.VARIANTS["g300_a6_tmga"])["gyro_z"]
+               - y.data.values(ilahrs.VARIANTS["sn_11ac0001_0009"])["gyro_z"]) < 0.5
 
 
 def test_full_output_multiplexes_vdd_and_utermo() -> None:
@@ -552,25 +541,12 @@ def test_garbage_never_breaks_the_device() -> None:
 
 # --- The filters that connect the model to the device ----------------------------------------------
 
-
 def test_every_output_field_has_a_quantity_the_device_provides() -> None:
     device = Device(seed=SEED)
     sample = set(motion.Sensors(0).sample(motion.Motion(0), 0.0))
-    provided = (
-        sample
-        | set(device.parameters.raw())
-        | {
-            "usw",
-            "calibration_type",
-            "run",
-            "runs_used",
-            "data_used",
-            "success",
-            "pitch",
-            "roll",
-            "version",
-        }
-    )
+    provided = sample | set(device.parameters.raw()) | {
+        "usw", "calibration_type", "run", "runs_used", "data_used", "success", "pitch", "roll", "version",
+    }
     provided |= {f"soft_iron_{i}{j}" for i in range(1, 4) for j in range(1, 4)} | {f"hard_iron_{a}" for a in "xyz"}
     for payload in SPEC.payloads:
         if payload.direction != "device_to_host" or payload.name == SPEC.ack_payload:

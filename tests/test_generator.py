@@ -155,11 +155,7 @@ def test_c_tables_fit_their_packing() -> None:
 
     # Rows of small tables: each column in the smallest type that holds it, widest first.
     assert c_target.row_members({"a": [1, 2], "b": [0, 70000], "c": "float", "d": [-1, 300]}) == [
-        ("uint32_t", "b"),
-        ("float", "c"),
-        ("int16_t", "d"),
-        ("uint8_t", "a"),
-    ]
+        ("uint32_t", "b"), ("float", "c"), ("int16_t", "d"), ("uint8_t", "a")]
     with pytest.raises(ValueError, match="no 32-bit C integer type"):
         c_target.row_members({"a": [0, 1 << 40]})
     assert [name for _, name in c_target.default_members(t)] == ["bits", "field", "text"]

@@ -26,12 +26,8 @@ def test_acknowledgement_is_checked_against_what_was_sent() -> None:
     host.send("ClearClb")
     (wrong,) = host.receive(data_frame(ilahrs.Acknowledgement(checksum=0x1234).build()))
     assert isinstance(wrong, ProtocolError)
-    assert (wrong.kind, wrong.problem, wrong.expected, wrong.source) == (
-        ilahrs.ErrorKind.BAD_CHECKSUM,
-        "wrong",
-        "ack",
-        "ClearClb",
-    )
+    assert (wrong.kind, wrong.problem, wrong.expected, wrong.source) == (ilahrs.ErrorKind.BAD_CHECKSUM, "wrong", "ack",
+                                                                          "ClearClb")
     assert host.owed == () and host.state == "idle"
 
 

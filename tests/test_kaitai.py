@@ -218,16 +218,8 @@ def test_a_new_table_and_command_need_no_template_change(tmp_path: Path) -> None
     )
     code = next(c for c in range(0x100) if c not in SPEC.codes)
     data["commands"].append(
-        {
-            "name": "ExtraCmd",
-            "id": "extra_cmd",
-            "code": code,
-            "icd": "X.1",
-            "group": "control",
-            "purpose": "A command added by the test.",
-            "valid_in": ["idle"],
-            "response": {"kind": "none"},
-        }
+        {"name": "ExtraCmd", "id": "extra_cmd", "code": code, "icd": "X.1", "group": "control",
+         "purpose": "A command added by the test.", "valid_in": ["idle"], "response": {"kind": "none"}}
     )
     data["state_machine"]["transitions"].append({"from": ["idle"], "when": ["ExtraCmd"], "to": "idle", "send": []})
     spec_path = tmp_path / "extra.yaml"

@@ -72,12 +72,8 @@ def test_no_faults_writes_exactly_what_the_device_sends() -> None:
 
 @pytest.mark.parametrize(
     ("text", "expected"),
-    [
-        ("127.0.0.1:0", ("127.0.0.1", 0)),
-        ("localhost:5000", ("127.0.0.1", 5000)),
-        ("[::1]:7", ("::1", 7)),
-        ("127.5.6.7:65535", ("127.5.6.7", 65535)),
-    ],
+    [("127.0.0.1:0", ("127.0.0.1", 0)), ("localhost:5000", ("127.0.0.1", 5000)), ("[::1]:7", ("::1", 7)),
+     ("127.5.6.7:65535", ("127.5.6.7", 65535))],
 )
 def test_loopback_addresses(text: str, expected: tuple[str, int]) -> None:
     assert loopback_address(text) == expected

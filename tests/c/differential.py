@@ -41,7 +41,7 @@ def c_events(runner: str, chunks: list[bytes]) -> tuple[list[str], int]:
         raise SystemExit(f"runner answered {answer[:200]}")
     tokens = events.removeprefix("events=")
     out = []
-    for token in [] if tokens == "-" else tokens.split(","):
+    for token in ([] if tokens == "-" else tokens.split(",")):
         kind, text = token.split(":", 1)
         raw = bytes.fromhex(text) if kind == "F" else _unpercent(text)
         out.append(f"{kind}:{raw.hex().upper()}")
@@ -91,12 +91,8 @@ def sessions(runner: str, count: int) -> int:
     versions: list[str | None] = [None]
     for before, _ in statemachine.LEGACY_TRANSITIONS.values():
         parts = [int(p) for p in before.split(".")]
-        versions += [
-            before,
-            ".".join(map(str, [*parts[:-1], parts[-1] + 1])),
-            ".".join(map(str, parts[:-1])),
-            ".".join(map(str, [parts[0] - 1, *parts[1:]])),
-        ]
+        versions += [before, ".".join(map(str, [*parts[:-1], parts[-1] + 1])), ".".join(map(str, parts[:-1])),
+                     ".".join(map(str, [parts[0] - 1, *parts[1:]]))]
     lines = []
     expected = []
     for _ in range(count):
@@ -112,15 +108,12 @@ def sessions(runner: str, count: int) -> int:
                 tokens.append(f"E:{rng.choice(timers)}")
         lines.append(f"session {firmware or '-'} {','.join(tokens)}\n")
         expected.append(python_session(firmware, tokens))
-    answers = subprocess.run(
-        shlex.split(runner), input="".join(lines), capture_output=True, text=True, check=True
-    ).stdout
+    answers = subprocess.run(shlex.split(runner), input="".join(lines), capture_output=True, text=True,
+                             check=True).stdout
     got = answers.splitlines()
     differ = sum(1 for a, b in zip(expected, got, strict=False) if a != b) + abs(len(expected) - len(got))
-    print(
-        f"sessions: {count} random sessions, {sum(len(x.split(',')) for x in lines)} events: "
-        f"{'same' if differ == 0 else f'{differ} DIFFERENT'}"
-    )
+    print(f"sessions: {count} random sessions, {sum(len(x.split(',')) for x in lines)} events: "
+          f"{'same' if differ == 0 else f'{differ} DIFFERENT'}")
     return differ
 
 
@@ -130,9 +123,8 @@ def damaged_capture(tool: str, seed: int, directory: Path) -> tuple[int, list[by
     rng = random.Random(seed)
     path = directory / f"capture-{seed}.bin"
     size = rng.choice([2000, 30000, 120000])
-    subprocess.run(
-        [tool, "--size", str(size), "--seed", str(seed), "--out", str(path)], check=True, capture_output=True
-    )
+    subprocess.run([tool, "--size", str(size), "--seed", str(seed), "--out", str(path)],
+                   check=True, capture_output=True)
     data = bytearray(path.read_bytes())
     for _ in range(rng.choice([0, size // 500, size // 50])):
         data[rng.randrange(len(data))] = rng.randrange(256)
@@ -160,10 +152,8 @@ def main(argv: list[str]) -> int:
             same = want == got
             failures += not same
             verdict = "same" if same else "DIFFERENT"
-            print(
-                f"seed {seed}: {size} bytes, {len(chunks)} chunks: python {len(want[0])} messages, "
-                f"{want[1]} discarded; c {len(got[0])} messages, {got[1]} discarded: {verdict}"
-            )
+            print(f"seed {seed}: {size} bytes, {len(chunks)} chunks: python {len(want[0])} messages, "
+                  f"{want[1]} discarded; c {len(got[0])} messages, {got[1]} discarded: {verdict}")
     failures += sessions(runner, 400) != 0
     return 1 if failures else 0
 

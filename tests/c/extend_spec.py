@@ -36,14 +36,8 @@ PAYLOAD = {
     "size": 11,
     "doc": "A payload table that exists only in this test.",
     "fields": [
-        {
-            "name": "temp_a",
-            "icd_name": "A",
-            "type": "s16",
-            "unit": "degC",
-            "scale": {"divisor": 10},
-            "range": [-400, 850],
-        },
+        {"name": "temp_a", "icd_name": "A", "type": "s16", "unit": "degC", "scale": {"divisor": 10},
+         "range": [-400, 850]},
         {"name": "flags", "icd_name": "F", "type": "u8", "default": 7},
         {"name": "gain", "icd_name": "G", "type": "f32", "range": [0.5, 2]},
         {"name": "label", "icd_name": "L", "type": "char", "length": 4, "default": "T1"},

@@ -44,15 +44,11 @@ def frames_only_vectors(out: Path) -> int:
     count = 0
     for path in sorted((ROOT / "conformance" / "vectors").glob("*.json")):
         suite = json.loads(path.read_text(encoding="utf-8"))
-        vectors = [
-            {**v, "expect": frames_only_expectation(v["expect"])} for v in suite["vectors"] if v["kind"] == "stream"
-        ]
+        vectors = [{**v, "expect": frames_only_expectation(v["expect"])} for v in suite["vectors"]
+                   if v["kind"] == "stream"]
         if vectors:
-            doc = {
-                "suite": suite["suite"],
-                "source": f"{path.name}, stream vectors, sentences dropped",
-                "vectors": vectors,
-            }
+            doc = {"suite": suite["suite"], "source": f"{path.name}, stream vectors, sentences dropped",
+                   "vectors": vectors}
             (out / path.name).write_text(json.dumps(doc), encoding="utf-8")
             count += len(vectors)
     return count
@@ -77,10 +73,8 @@ def captures(tool: str, runner: str, rounds: int) -> int:
                 raise SystemExit(f"{runner} handed out a sentence: is it built with ILAHRS_STREAM_SENTENCES=0?")
             failures += want != got
             verdict = "same" if want == got else "DIFFERENT"
-            print(
-                f"seed {seed}: {size} bytes, {len(chunks)} chunks: {len(want[0])} frames, {want[1]} discarded "
-                f"expected; runner {len(got[0])} frames, {got[1]} discarded: {verdict}"
-            )
+            print(f"seed {seed}: {size} bytes, {len(chunks)} chunks: {len(want[0])} frames, {want[1]} discarded "
+                  f"expected; runner {len(got[0])} frames, {got[1]} discarded: {verdict}")
     return failures
 
 
@@ -93,19 +87,8 @@ def main(argv: list[str]) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         count = frames_only_vectors(Path(tmp))
         print(f"{count} stream vectors, sentences dropped")
-        status = subprocess.run(
-            [
-                sys.executable,
-                str(ROOT / "conformance" / "harness.py"),
-                "--vectors",
-                tmp,
-                "--command",
-                runner,
-                "--name",
-                "c-frames-only",
-            ],
-            check=False,
-        ).returncode
+        status = subprocess.run([sys.executable, str(ROOT / "conformance" / "harness.py"), "--vectors", tmp,
+                                 "--command", runner, "--name", "c-frames-only"], check=False).returncode
     return 1 if status != 0 or captures(tool, runner, rounds) else 0
 
 

@@ -46,28 +46,16 @@ CC = "gcc"
 # The warning flags of mk/c.mk when run by make (C_STD in the environment).
 C_STD = shlex.split(os.environ.get("C_STD", "-std=c99 -Wall -Werror"))
 
-REMOVED = (
-    "ilahrs_mode_name",
-    "ilahrs_command_name",
-    "ilahrs_command_by_name",
-    "ilahrs_variant_name",
-    "ilahrs_variant_by_name",
-    "ilahrs_payload_name",
-    "ilahrs_payload_by_name",
-    "ilahrs_field_name",
-    "ilahrs_usw_flag_name",
-    "ilahrs_pahr_field_name",
-    "ilahrs_state_name",
-    "ilahrs_state_by_name",
-    "ilahrs_event_name",
-    "ilahrs_event_by_name",
-    "ilahrs_answer_name",
-)
+REMOVED = ("ilahrs_mode_name", "ilahrs_command_name", "ilahrs_command_by_name", "ilahrs_variant_name",
+           "ilahrs_variant_by_name", "ilahrs_payload_name", "ilahrs_payload_by_name", "ilahrs_field_name",
+           "ilahrs_usw_flag_name", "ilahrs_pahr_field_name", "ilahrs_state_name", "ilahrs_state_by_name",
+           "ilahrs_event_name", "ilahrs_event_by_name", "ilahrs_answer_name")
 KEPT = ("ilahrs_error_kind_name", "ilahrs_variant_part_number")
 
 CAPTURE_SEEDS = (2, 3, 5, 7)
 # At least this many of each in the compared output, or the comparison proves little.
-MINIMUM = {"inputs": 1000, "payload parses": 300, "frames": 1000, "sentences": 200, "errors": 5000, "transitions": 1000}
+MINIMUM = {"inputs": 1000, "payload parses": 300, "frames": 1000, "sentences": 200, "errors": 5000,
+           "transitions": 1000}
 
 
 def vector_bytes(kind: str, value: Any, side: str) -> list[bytes]:
@@ -109,10 +97,8 @@ def collect_inputs(tool: str, directory: Path) -> list[bytes]:
     for seed in CAPTURE_SEEDS:
         for chunk in differential.damaged_capture(tool, seed, directory)[1]:
             found.setdefault(chunk)
-    print(
-        f"{len(found)} inputs: {vectors} byte strings of the vectors, {len(found) - vectors} chunks of "
-        f"{len(CAPTURE_SEEDS)} damaged captures"
-    )
+    print(f"{len(found)} inputs: {vectors} byte strings of the vectors, {len(found) - vectors} chunks of "
+          f"{len(CAPTURE_SEEDS)} damaged captures")
     return list(found)
 
 
@@ -141,9 +127,8 @@ def counts(lines: list[str]) -> dict[str, int]:
         "frames": sum(line.startswith("  F ") for line in lines),
         "sentences": sum(line.startswith(("  S ", "pahr_parse ok")) for line in lines),
         "errors": sum(line.count(" err=") for line in lines),
-        "transitions": sum(
-            len(re.findall(r" [a-z]+:\d+:\d+>1/", line)) for line in lines if line.startswith(("states", "walk"))
-        ),
+        "transitions": sum(len(re.findall(r" [a-z]+:\d+:\d+>1/", line)) for line in lines
+                           if line.startswith(("states", "walk"))),
     }
 
 
@@ -164,11 +149,8 @@ def compare(reference: str, names_off: str, inputs: Path) -> tuple[list[str], li
         return failures, want
     found = counts(want)
     print(f"{reference}: " + ", ".join(f"{n} {name}" for name, n in found.items()) + f", {len(want)} lines")
-    failures += [
-        f"{reference}: only {found[name]} {name} (want at least {n}): the comparison proves little"
-        for name, n in MINIMUM.items()
-        if found[name] < n
-    ]
+    failures += [f"{reference}: only {found[name]} {name} (want at least {n}): the comparison proves little"
+                 for name, n in MINIMUM.items() if found[name] < n]
     failures += [f"{reference}: {line[:400]}" for line in want if "MISMATCH" in line][:3]
     if got[1:] != want[1:]:
         failures.append(f"{names_off}: output differs from {reference}\n{first_difference(want[1:], got[1:])}")
@@ -181,23 +163,19 @@ def compiles(source: str, names: int | None, directory: Path) -> tuple[bool, str
     path = directory / "snippet.c"
     path.write_text(source, encoding="ascii")
     define = [] if names is None else [f"-DILAHRS_NAMES={names}"]
-    result = subprocess.run(
-        [CC, *C_STD, *define, f"-I{C_DIR}", "-fsyntax-only", str(path)], capture_output=True, text=True, check=False
-    )
+    result = subprocess.run([CC, *C_STD, *define, f"-I{C_DIR}", "-fsyntax-only", str(path)],
+                            capture_output=True, text=True, check=False)
     return result.returncode == 0, result.stderr
 
 
 def compile_checks(directory: Path) -> list[str]:
     """A call to ilahrs_command_name, and a mention of every removed function, compile by default
     and not with ILAHRS_NAMES=0; the functions that stay compile in both."""
-    call = (
-        '#include "ilahrs.h"\n#include <stddef.h>\n'
-        "int main(void) { return ilahrs_command_name(ILAHRS_COMMAND_STOP) != NULL; }\n"
-    )
+    call = ('#include "ilahrs.h"\n#include <stddef.h>\n'
+            "int main(void) { return ilahrs_command_name(ILAHRS_COMMAND_STOP) != NULL; }\n")
     snippets = [("a call to ilahrs_command_name", call, False)]
-    snippets += [
-        (name, f'#include "ilahrs.h"\nint main(void) {{ (void){name}; return 0; }}\n', False) for name in REMOVED
-    ]
+    snippets += [(name, f'#include "ilahrs.h"\nint main(void) {{ (void){name}; return 0; }}\n', False)
+                 for name in REMOVED]
     snippets += [(name, f'#include "ilahrs.h"\nint main(void) {{ (void){name}; return 0; }}\n', True) for name in KEPT]
     failures = []
     for what, source, kept in snippets:
@@ -208,10 +186,8 @@ def compile_checks(directory: Path) -> list[str]:
                 failures.append(f"{what} does not compile ({flag}):\n  " + errors.strip()[:600])
         ok, errors = compiles(source, 0, directory)
         if ok != kept:
-            failures.append(
-                f"{what} {'does not compile' if kept else 'compiles'} with -DILAHRS_NAMES=0"
-                + (":\n  " + errors.strip()[:600] if errors else "")
-            )
+            failures.append(f"{what} {'does not compile' if kept else 'compiles'} with -DILAHRS_NAMES=0"
+                            + (":\n  " + errors.strip()[:600] if errors else ""))
     print(f"compile checks: {len(snippets)} snippets, each by default, with -DILAHRS_NAMES=1 and =0")
     return failures
 
@@ -229,9 +205,8 @@ def object_strings(names: int, directory: Path) -> tuple[set[str], set[str]]:
     """ilahrs.c compiled with ILAHRS_NAMES=`names`: its defined functions and its read-only strings."""
     obj = directory / f"ilahrs-names{names}.o"
     data = directory / f"ilahrs-names{names}.rodata"
-    subprocess.run(
-        [CC, *C_STD, "-O2", f"-DILAHRS_NAMES={names}", "-c", str(C_DIR / "ilahrs.c"), "-o", str(obj)], check=True
-    )
+    subprocess.run([CC, *C_STD, "-O2", f"-DILAHRS_NAMES={names}", "-c", str(C_DIR / "ilahrs.c"), "-o", str(obj)],
+                   check=True)
     symbols = subprocess.run(["nm", "--defined-only", str(obj)], capture_output=True, text=True, check=True).stdout
     subprocess.run(["objcopy", "-O", "binary", "-j", ".rodata*", str(obj), str(data)], check=True)
     defined = {line.split()[-1] for line in symbols.splitlines() if line.strip()}
@@ -242,9 +217,8 @@ def object_checks(directory: Path, error_kinds: set[str]) -> list[str]:
     failures = []
     defined_on, strings_on = object_strings(1, directory)
     defined_off, strings_off = object_strings(0, directory)
-    failures += [
-        f"ilahrs.c with ILAHRS_NAMES=1 does not define {name}" for name in REMOVED + KEPT if name not in defined_on
-    ]
+    failures += [f"ilahrs.c with ILAHRS_NAMES=1 does not define {name}" for name in REMOVED + KEPT
+                 if name not in defined_on]
     failures += [f"ilahrs.c with ILAHRS_NAMES=0 defines {name}" for name in REMOVED if name in defined_off]
     failures += [f"ilahrs.c with ILAHRS_NAMES=0 does not define {name}" for name in KEPT if name not in defined_off]
     # Error kind names stay (ilahrs_error_kind_name), and "unknown" is one of them.
