@@ -90,7 +90,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     faults = Faults(args.corrupt_rate, args.drop_rate, args.garbage_rate, args.seed)
     with ExitStack() as stack:
-        log = stack.enter_context(open(args.log, "w", encoding="utf-8")) if args.log else None
+        try:
+            log = stack.enter_context(open(args.log, "w", encoding="utf-8")) if args.log else None
+        except OSError as exc:
+            print(f"ilahrs simulate: cannot write the log {args.log}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
         line = Line(device, faults, log)
         if args.record:
             line.recorder = recorder(stack.enter_context(open(args.record, "wb")), args.tcp or "pty")

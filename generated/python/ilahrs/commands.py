@@ -15,7 +15,7 @@ from types import MappingProxyType
 from typing import Final
 
 from .commandset import CommandInfo, CommandSet
-from .payloads import Acknowledgement
+from .payloads import PAYLOADS, Acknowledgement
 
 __all__ = [
     "CODES",
@@ -536,7 +536,7 @@ CLEAR_CLB: Final = 0x2F
 GET_CLB_RES: Final = 0x2A
 """GetClbRes (6.4.10): Read the results of the last calibration (Table 6.17)."""
 
-COMMAND_SET: Final = CommandSet(COMMANDS, CODES, Acknowledgement)
+COMMAND_SET: Final = CommandSet(COMMANDS, CODES, Acknowledgement, PAYLOADS)
 """The table, with the functions of `ilahrs.commandset`; the acknowledgement is a acknowledgement block."""
 command_names: Final = COMMAND_SET.command_names
 build_command: Final = COMMAND_SET.build_command

@@ -9,10 +9,11 @@ holds the spec's table in a CommandSet and binds these methods to its functions 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from types import MappingProxyType
 
-from .codec import Payload
-from .errors import ErrorKind, IlahrsError
+from .codec import Payload, PayloadBase
+from .errors import ErrorKind, IlahrsError, brief, suggest
 from .frame import MESSAGE_LENGTH_OFFSET, MESSAGE_TYPE_OFFSET, PAYLOAD_OFFSET, Frame, MessageType
 
 __all__ = ["CommandInfo", "CommandSet"]
@@ -52,27 +53,51 @@ class CommandSet:
     commands: Mapping[str, CommandInfo]
     codes: Mapping[int, tuple[str, ...]]
     acknowledgement: type[Payload]
+    payloads: Mapping[str, type[Payload]] = field(default_factory=lambda: MappingProxyType({}))
+    """Every payload class by table name (for parameter blocks given as raw values)."""
 
     def _info(self, name: str) -> CommandInfo:
-        info = self.commands.get(name)
+        info = self.commands.get(name) if isinstance(name, str) else None
         if info is None:
-            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command is called {name!r}")
+            raise self.unknown(name)
         return info
+
+    def unknown(self, name: object) -> IlahrsError:
+        """The error for a command name that is not in the table, with the closest name."""
+        detail = f"no command is called {brief(name)}{suggest(name, self.commands)}"
+        return IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, detail)
+
+    def parameter_block(self, command: str, block: Payload | Mapping[str, object]) -> Payload:
+        """The parameter block `command` takes, from a payload object or raw field values of its
+        table (every name must be one of the table's fields: MALFORMED otherwise, nothing is built)."""
+        info = self._info(command)
+        if isinstance(block, PayloadBase):
+            return block  # type: ignore[return-value]
+        if not isinstance(block, Mapping):
+            detail = f"{brief(block)} is neither a payload object nor a mapping of field values"
+            raise IlahrsError(ErrorKind.MALFORMED, None, None, detail)
+        table = self.payloads.get(info.parameter_block or "")
+        if table is None:
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"{command} takes no parameter block")
+        return table.from_raw(block)
 
     def command_names(self, code: int) -> tuple[str, ...]:
         """The ICD name(s) of a command code (two for 0xFE); IlahrsError(UNKNOWN_COMMAND) for others."""
-        names = self.codes.get(code)
+        names = self.codes.get(code) if isinstance(code, int) and not isinstance(code, bool) else None
         if names is None:
-            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command has code {code:#04x}")
+            shown = f"{code:#04x}" if isinstance(code, int) and not isinstance(code, bool) else brief(code)
+            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command has code {shown}")
         return names
 
     def build_command(self, name: str, reserved: int = 0) -> bytes:
         """The frame of command `name` (ICD spelling, e.g. "AHRScont3")."""
         return Frame(MessageType.COMMAND, bytes((self._info(name).code,)), reserved).build()
 
-    def build_parameter_block(self, command: str, block: Payload, reserved: int = 0) -> bytes:
-        """The data frame carrying the parameter block that must follow `command`."""
+    def build_parameter_block(self, command: str, block: Payload | Mapping[str, object], reserved: int = 0) -> bytes:
+        """The data frame carrying the parameter block that must follow `command`: a payload object
+        or raw field values of its table (a name the table does not have is refused, MALFORMED)."""
         info = self._info(command)
+        block = self.parameter_block(command, block)
         if info.parameter_block is None or info.parameter_block != block.NAME:
             expected = info.parameter_block or "no parameter block"
             raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"{command} takes {expected}, not {block.NAME}")

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from . import diagram
 
-__all__ = ["Machine", "StateInfo", "Transition", "firmware_version"]
+__all__ = ["Machine", "StateInfo", "Transition", "firmware_is_valid", "firmware_version"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -41,8 +41,19 @@ class Transition:
 
 
 def firmware_version(text: str) -> tuple[int, ...]:
-    """The version of a firmware text: "4.9.9.0" -> (4, 9, 9, 0); non-numeric parts count as 0."""
-    return tuple(int(part) if part.isdigit() else 0 for part in text.strip().split("."))
+    """The version of a firmware text: "4.9.9.0" -> (4, 9, 9, 0); parts that are not ASCII digits count as 0."""
+    if not isinstance(text, str):
+        return ()
+    return tuple(int(part) if part.isascii() and part.isdigit() else 0 for part in text.strip().split("."))
+
+
+def firmware_is_valid(text: object) -> bool:
+    """A firmware version as the AHRS reports it: one to eight dot-separated numbers of ASCII
+    digits ("4.9.9.0")."""
+    if not isinstance(text, str) or not 0 < len(text) <= 64:
+        return False
+    parts = text.split(".")
+    return len(parts) <= 8 and all(0 < len(p) <= 6 and p.isascii() and p.isdigit() for p in parts)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -63,25 +74,29 @@ class Machine:
         """The transition for `event` in `state` on the given firmware version (default: current), or
         None: the device ignores the event (E33)."""
         if firmware is not None:
-            legacy = self.legacy.get((state, event))
+            legacy = self.legacy.get((state, event)) if isinstance(state, str) and isinstance(event, str) else None
             if legacy is not None and firmware_version(firmware) < firmware_version(legacy[0]):
                 return legacy[1]
+        if not isinstance(state, str) or not isinstance(event, str):
+            return None
         return self.transitions.get((state, event))
 
     def command_event(self, code: int, state: str) -> str | None:
         """The command a code means in `state`: of the names sharing a code, the one valid in the
         state's mode, else the code's default name (0xFE is ExitClb in calibration, Stop elsewhere,
         E14); None for a code no command has."""
-        names = self.codes.get(code)
+        names = self.codes.get(code) if isinstance(code, int) else None
         if names is None:
             return None
         if len(names) == 1:
             return names[0]
-        return self.shared_codes.get((code, self.states[state].mode))
+        info = self.states.get(state) if isinstance(state, str) else None
+        return None if info is None else self.shared_codes.get((code, info.mode))
 
     def timer_transition(self, state: str) -> tuple[str, Transition] | None:
         """(event, transition) of the timer running in `state`, if any."""
-        timer = self.states[state].timer
+        info = self.states.get(state) if isinstance(state, str) else None
+        timer = None if info is None else info.timer
         if timer is None:
             return None
         event = self.timer_events[timer]

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import ClassVar, Final
 
-from .codec import FLOAT32_MAX, FieldInfo, Payload, PayloadBase
+from .codec import FLOAT32_MAX, FieldInfo, Payload, PayloadBase, required_variant, variant_of
 from .encodings import Variant, calibration_accuracy_deg, declination_is_computed, decode_date
 from .status import UnitStatusWord
 
@@ -112,9 +112,10 @@ class FullOutput(PayloadBase):
     does not say which. (s16, at offset 32, unit adc, ICD: Utermo; erratum E19) Multiplexed: 7 quantities
     in successive frames."""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (heading, pitch, roll, vdd). The Unit Status Word is
+        flags, not a scaled value: read `UnitStatusWord(block.usw)`."""
+        variant_of(variant)
         result: dict[str, float] = {}
         result["heading"] = self.heading / 100
         result["pitch"] = self.pitch / 100
@@ -202,9 +203,10 @@ class Quaternion(PayloadBase):
     utermo: int = 0
     """Average temperature of the 3 accelerometers. (s16, at offset 32, raw = degC x 10, ICD: Utermo)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (heading, pitch, roll, lk0, lk1, lk2, lk3, vdd, utermo).
+        The Unit Status Word is flags, not a scaled value: read `UnitStatusWord(block.usw)`."""
+        variant_of(variant)
         result: dict[str, float] = {}
         result["heading"] = self.heading / 100
         result["pitch"] = self.pitch / 100
@@ -333,8 +335,12 @@ class OrientationSensors(PayloadBase):
     utermo: int = 0
     """Average temperature of the 3 accelerometers. (s16, at offset 32, raw = degC x 10, ICD: Utermo)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields (the variant-dependent ones only with a `variant`)."""
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (heading, pitch, roll, gyro_x, gyro_y, gyro_z, acc_x,
+        acc_y, acc_z, mag_x, mag_y, mag_z, vdd, utermo). Without a `variant` (a Variant or its name)
+        gyro_x, gyro_y, gyro_z, acc_x, acc_y, acc_z are left out: their scale is the variant's (Table 6.6
+        note 1). The Unit Status Word is flags, not a scaled value: read `UnitStatusWord(block.usw)`."""
+        variant = variant_of(variant)
         result: dict[str, float] = {}
         result["heading"] = self.heading / 100
         result["pitch"] = self.pitch / 100
@@ -373,28 +379,34 @@ class OrientationSensors(PayloadBase):
         """roll in degrees."""
         return self.roll / 100
 
-    def gyro_x_dps(self, variant: Variant) -> float:
-        """gyro_x in degrees per second for `variant` (raw / variant.kg)."""
+    def gyro_x_dps(self, variant: Variant | str) -> float:
+        """gyro_x in degrees per second for `variant`, a Variant or its name (raw / variant.kg)."""
+        variant = required_variant(variant)
         return self.gyro_x / variant.kg
 
-    def gyro_y_dps(self, variant: Variant) -> float:
-        """gyro_y in degrees per second for `variant` (raw / variant.kg)."""
+    def gyro_y_dps(self, variant: Variant | str) -> float:
+        """gyro_y in degrees per second for `variant`, a Variant or its name (raw / variant.kg)."""
+        variant = required_variant(variant)
         return self.gyro_y / variant.kg
 
-    def gyro_z_dps(self, variant: Variant) -> float:
-        """gyro_z in degrees per second for `variant` (raw / variant.kg)."""
+    def gyro_z_dps(self, variant: Variant | str) -> float:
+        """gyro_z in degrees per second for `variant`, a Variant or its name (raw / variant.kg)."""
+        variant = required_variant(variant)
         return self.gyro_z / variant.kg
 
-    def acc_x_g(self, variant: Variant) -> float:
-        """acc_x in standard gravity for `variant` (raw / variant.ka)."""
+    def acc_x_g(self, variant: Variant | str) -> float:
+        """acc_x in standard gravity for `variant`, a Variant or its name (raw / variant.ka)."""
+        variant = required_variant(variant)
         return self.acc_x / variant.ka
 
-    def acc_y_g(self, variant: Variant) -> float:
-        """acc_y in standard gravity for `variant` (raw / variant.ka)."""
+    def acc_y_g(self, variant: Variant | str) -> float:
+        """acc_y in standard gravity for `variant`, a Variant or its name (raw / variant.ka)."""
+        variant = required_variant(variant)
         return self.acc_y / variant.ka
 
-    def acc_z_g(self, variant: Variant) -> float:
-        """acc_z in standard gravity for `variant` (raw / variant.ka)."""
+    def acc_z_g(self, variant: Variant | str) -> float:
+        """acc_z in standard gravity for `variant`, a Variant or its name (raw / variant.ka)."""
+        variant = required_variant(variant)
         return self.acc_z / variant.ka
 
     @property
@@ -486,9 +498,10 @@ class InitialAlignment(PayloadBase):
     """Unit Status Word: 0 after a successful alignment, non-zero otherwise. (u16, at offset 48, ICD: USW;
     erratum E27)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (). The Unit Status Word is flags, not a scaled value:
+        read `UnitStatusWord(block.usw)`."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -581,9 +594,9 @@ class AhrsParametersLoad(PayloadBase):
     reserved: bytes = b"\x00" * 14
     """Should be all zeros. (reserved[14], at offset 36, ICD: Reserved)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -681,9 +694,9 @@ class AhrsParametersRead(PayloadBase):
     reserved: bytes = b"\x00" * 6
     """(reserved[6], at offset 44, ICD: Reserved)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -716,9 +729,9 @@ class FirmwareVersion(PayloadBase):
     version: str = ""
     """Firmware version text, NUL-padded. (char[50], at offset 0, ICD: Firmware version)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -746,9 +759,10 @@ class BitResult(PayloadBase):
     usw: int = 0
     """Unit Status Word (section 6.5). (u16, at offset 2, ICD: USW)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (utermo100). The Unit Status Word is flags, not a scaled
+        value: read `UnitStatusWord(block.usw)`."""
+        variant_of(variant)
         result: dict[str, float] = {}
         result["utermo100"] = self.utermo100 / 100
         return result
@@ -815,9 +829,9 @@ class CalibrationParameters(PayloadBase):
     """Date as Year + (Month - 1)/12 + Day/365. (f32, at offset 18, unit year, range
     1900.002685546875..2200.001708984375, ICD: Date (Year, Month, Day))"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -906,9 +920,9 @@ class CalibrationResult(PayloadBase):
     """Hard-iron vector Hm_0 component 3. (f32, at offset 48, unit adc, ICD: Matrix for hard iron correction;
     erratum E1)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -964,9 +978,10 @@ class CalibrationRunResult(PayloadBase):
     usw: int = 0
     """Unit Status Word (section 6.5). (u16, at offset 28, ICD: USW)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields (). The Unit Status Word is flags, not a scaled value:
+        read `UnitStatusWord(block.usw)`."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -1000,9 +1015,9 @@ class CalibrationRunParameters(PayloadBase):
     reserved: bytes = b"\x00" * 6
     """(reserved[6], at offset 0, ICD: Reserved; erratum E32)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -1086,9 +1101,9 @@ class CalibrationStatus(PayloadBase):
     """Hard-iron vector Hm_0 component 3. (f32, at offset 48, unit adc, ICD: Matrix for hard iron correction;
     erratum E2)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 
@@ -1116,9 +1131,9 @@ class Acknowledgement(PayloadBase):
     checksum: int = 0
     """Checksum of the acknowledged message, message type through payload. (u16, at offset 0, ICD: Check sum)"""
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]:
-        """Engineering values of the scaled fields."""
-        del variant
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]:
+        """Engineering values of the scaled fields ()."""
+        variant_of(variant)
         result: dict[str, float] = {}
         return result
 

@@ -13,27 +13,31 @@ client is opened, so the rest of the package stays standard-library only. `port`
         params = ahrs.read_parameters()
         ahrs.load_parameters(params.raw() | {"update_rate": 50})
         ahrs.start("AHRScont3")
-        for block in ahrs.frames(100):
+        for block in ahrs.output():            # or ahrs.frames(100): a list
             print(block.heading_deg)
 
 Every method waits for exactly the answers the protocol defines and raises ClientError if they do
 not come (or come wrong). Flows that start from idle are retried after a Stop (`retries`), so a
-line that loses a message now and then still completes them. Everything the host saw is in
-`events`; protocol errors in `errors`; bytes that belonged to no message in `discarded`.
+line that loses a message now and then still completes them. The last `history` events the
+host saw are in `events` (each stamped with its time.monotonic() receive time, `at`); protocol
+errors in `errors`; the count of bytes that belonged to no message in `discarded`. History is
+bounded, so a client can stream for days.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import time
 from collections import deque
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from types import TracebackType
-from typing import Any, Final, Self
+from typing import Any, Final, Self, TypeVar
 
-from .commands import COMMANDS, build_command
-from .errors import ErrorKind, IlahrsError
-from .host import DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
+from .commands import COMMAND_SET, COMMANDS, build_command
+from .encodings import CalibrationType
+from .errors import ErrorKind, IlahrsError, brief, require_int, require_seconds, suggest
+from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import PahrSentence
 from .payloads import PAYLOADS, Payload
 from .roles import (
@@ -52,9 +56,10 @@ from .roles import (
     START_RUNS,
     STOP,
     STOP_RUN,
+    ParameterBlock,
 )
 from .spec import SERIAL_LINE
-from .statemachine import INITIAL, TIMER_EVENTS, command_event, lookup
+from .statemachine import CALIBRATION_TYPES, INITIAL, TIMER_EVENTS, command_event, lookup
 
 __all__ = ["LINE", "AhrsClient", "ClientError"]
 
@@ -67,6 +72,26 @@ LINE: Final[Mapping[str, object]] = {
 }
 """pyserial settings of the AHRS line (section 6)."""
 _POLL: Final = 0.01
+DEFAULT_HISTORY: Final = 1000
+"""Events (and received messages, and protocol errors) a client keeps by default."""
+_QUEUE_LIMIT: Final = 4096
+"""Answers and output blocks held for a caller that does not take them; the oldest go first."""
+
+
+_T = TypeVar("_T")
+
+
+class History(list[_T]):
+    """A list that keeps only its last `limit` items (the oldest are dropped as new ones come)."""
+
+    def __init__(self, limit: int) -> None:
+        super().__init__()
+        self.limit = limit
+
+    def append(self, item: _T) -> None:
+        super().append(item)
+        if len(self) > self.limit:
+            del self[: len(self) - self.limit]
 
 
 class ClientError(IlahrsError):
@@ -101,21 +126,30 @@ class AhrsClient:
         retries: int = 3,
         quiet: float = 0.25,
         clock: Callable[[], float] = time.monotonic,
+        baud: int | None = None,
+        history: int = DEFAULT_HISTORY,
     ) -> None:
         self.host = Host(firmware=firmware, reply_timeout=timeout)
         self.retries = retries
         self.quiet = quiet
-        self.events: list[HostEvent] = []
-        """Every event the host reported, in order."""
-        self.errors: list[ProtocolError] = []
-        """Protocol errors outside the quiet period after a Stop."""
-        self.received: list[bytes] = []
-        """Every valid message received, as received."""
-        self._queue: deque[HostEvent] = deque()
+        keep = require_int(history, "history", 0, 2**31)
+        self.events: History[HostEvent] = History(keep)
+        """The last `history` events the host reported, in order, each with its receive time `at`."""
+        self.errors: History[ProtocolError] = History(keep)
+        """The last `history` protocol errors outside the quiet period after a Stop."""
+        self.received: History[bytes] = History(keep)
+        """The last `history` valid messages received, as received."""
+        self._discarded = 0
+        self._queue: deque[HostEvent] = deque(maxlen=_QUEUE_LIMIT)
         self._clock = clock
         self._last = clock()
         self._draining = False
-        self._port = _pyserial().serial_for_url(port, timeout=_POLL, write_timeout=5.0, **LINE)
+        line = dict(LINE)
+        if baud is not None:
+            line["baudrate"] = require_int(baud, "baud", 1, 10_000_000)
+        self.baud = int(str(line["baudrate"]))
+        """The line's baud rate (default: the spec's)."""
+        self._port = _pyserial().serial_for_url(port, timeout=_POLL, write_timeout=5.0, **line)
 
     # --- Lifetime ----------------------------------------------------------------------------
 
@@ -133,13 +167,13 @@ class AhrsClient:
     @property
     def discarded(self) -> int:
         """Bytes received that belonged to no valid message."""
-        return sum(e.count for e in self.events if isinstance(e, Discarded))
+        return self._discarded
 
     # --- The line ----------------------------------------------------------------------------
 
     def poll(self, seconds: float = _POLL) -> list[HostEvent]:
         """Read for up to `seconds` (at least one read); return the new events."""
-        end = self._clock() + seconds
+        end = self._clock() + require_seconds(seconds)
         new: list[HostEvent] = []
         while True:
             waiting = self._port.in_waiting
@@ -149,13 +183,16 @@ class AhrsClient:
             events += self.host.advance(max(0.0, now - self._last))
             self._last = now
             for event in events:
-                self._record(event)
-            new += events
+                stamped = dataclasses.replace(event, at=now)
+                self._record(stamped)
+                new.append(stamped)
             if now >= end:
                 return new
 
     def _record(self, event: HostEvent) -> None:
         self.events.append(event)
+        if isinstance(event, Discarded):
+            self._discarded += event.count
         raw = getattr(event, "raw", None)
         if raw:
             self.received.append(raw)
@@ -190,17 +227,18 @@ class AhrsClient:
 
     def request(self, command: str, block: Payload | Mapping[str, object] | None = None) -> list[HostEvent]:
         """Send `command` (and its parameter block: a payload object or raw field values) and
-        wait for every answer the table lists; return them. Retried after a Stop when the
-        command is one that starts from idle."""
+        wait for every answer the table lists (acknowledgements included); return them. Retried
+        after a Stop when the command is one that starts from idle. Nothing is sent for an unknown
+        command or a block with a field its table does not have."""
         result: list[HostEvent] = self._retry(command, lambda: self._request(command, block))
         return result
 
     def _request(self, command: str, block: Payload | Mapping[str, object] | None) -> list[HostEvent]:
-        info = COMMANDS.get(command)
+        info = COMMANDS.get(command) if isinstance(command, str) else None
         if info is None:
-            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command is called {command!r}")
-        if isinstance(block, Mapping):
-            block = _as_block(info.parameter_block, block)
+            raise COMMAND_SET.unknown(command)
+        if block is not None:
+            block = COMMAND_SET.parameter_block(command, block)
         self._queue.clear()
         self._write(self.host.send(command, block))
         answers: list[HostEvent] = []
@@ -220,7 +258,7 @@ class AhrsClient:
         """Remove and return the queued answers to the command (or its block)."""
         taken: list[HostEvent] = []
         for event in list(self._queue):
-            source = getattr(event, "source", None)
+            source = event.message if isinstance(event, Acknowledged) else getattr(event, "source", None)
             if source in sources or (isinstance(event, ProtocolError) and event.problem != "unexpected"):
                 self._queue.remove(event)
                 taken.append(event)
@@ -240,8 +278,8 @@ class AhrsClient:
 
     def wait_for(self, predicate: Callable[[HostEvent], bool], timeout: float) -> HostEvent:
         """The first queued or new event that satisfies `predicate`; ClientError after `timeout`
-        seconds or a protocol error about a missing answer."""
-        end = self._clock() + timeout
+        seconds (TIMEOUT; `timeout` may be infinite) or a protocol error about a missing answer."""
+        end = self._clock() + require_seconds(timeout, "timeout", infinite=True)
         while True:
             while self._queue:
                 event = self._queue.popleft()
@@ -250,7 +288,7 @@ class AhrsClient:
                 if isinstance(event, ProtocolError) and event.problem == "missing":
                     raise ClientError(event.kind, None, None, event.detail)
             if self._clock() >= end:
-                raise ClientError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"nothing came within {timeout} s")
+                raise ClientError(ErrorKind.TIMEOUT, None, None, f"nothing came within {timeout:.3g} s")
             self.poll(_POLL)
 
     def _block(self, answers: list[HostEvent]) -> Payload:
@@ -271,6 +309,11 @@ class AhrsClient:
         if isinstance(block, Mapping):
             table = PAYLOADS[COMMANDS[LOAD_PARAMETERS].parameter_block or ""]
             names = {f.name for f in table.FIELDS if f.type != "reserved"}
+            known = names | {f.name for f in ParameterBlock.FIELDS}
+            for key in block:
+                if key not in known:
+                    detail = f"{table.NAME} has no field {brief(key)}{suggest(key, known)}; nothing was sent"
+                    raise IlahrsError(ErrorKind.MALFORMED, None, key if isinstance(key, str) else None, detail)
             block = table.from_raw({k: v for k, v in block.items() if k in names})
         self.request(LOAD_PARAMETERS, block)
 
@@ -286,7 +329,10 @@ class AhrsClient:
     def start(self, command: str) -> Payload:
         """Start output (a command that starts continuous or on-request mode): wait for the
         acknowledgement and the initial alignment block, and return the block."""
-        if COMMANDS[command].starts_mode is None:
+        info = COMMANDS.get(command) if isinstance(command, str) else None
+        if info is None:
+            raise COMMAND_SET.unknown(command)
+        if info.starts_mode is None:
             raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, f"{command} starts no output")
 
         def attempt() -> Payload:
@@ -302,10 +348,12 @@ class AhrsClient:
         return result
 
     def frames(self, count: int, timeout: float | None = None) -> list[Payload | PahrSentence]:
-        """The next `count` output blocks (payload objects or $PAHR sentences)."""
+        """The next `count` output blocks (payload objects or $PAHR sentences); `output()`
+        iterates without a count."""
+        require_int(count, "count", 0, 2**31)
         if timeout is None:
             timeout = 2 * count / self.host.setting("output") + 2 * self.host.reply_timeout
-        end = self._clock() + timeout
+        end = self._clock() + require_seconds(timeout, "timeout", infinite=True)
         blocks: list[Payload | PahrSentence] = []
         while len(blocks) < count:
             remaining = end - self._clock()
@@ -313,6 +361,19 @@ class AhrsClient:
             assert isinstance(event, Output)
             blocks.append(event.data)
         return blocks
+
+    def output(self, timeout: float | None = None) -> Iterator[Payload | PahrSentence]:
+        """Output blocks (payload objects or $PAHR sentences) as they arrive, for as long as the
+        caller iterates: `for block in client.output(): ...` after `start()`. ClientError
+        (TIMEOUT) when none comes within `timeout` seconds (default: two output periods and
+        twice the reply timeout)."""
+        while True:
+            wait = timeout
+            if wait is None:
+                wait = 2 / self.host.setting("output") + 2 * self.host.reply_timeout
+            event = self.wait_for(lambda e: isinstance(e, Output) and not e.late, wait)
+            assert isinstance(event, Output)
+            yield event.data
 
     def get_data(self) -> Payload | PahrSentence:
         """GET_DATA: one output block in on-request mode."""
@@ -381,3 +442,60 @@ class AhrsClient:
 
         result: tuple[list[Payload], Payload] = self._retry(start, attempt)
         return result
+
+    def calibrate(
+        self,
+        command: str,
+        parameters: Payload | Mapping[str, object],
+        *,
+        accept: bool = True,
+        stop_after: float | None = None,
+    ) -> Payload:
+        """A single-run calibration (6.4.1 2D, 6.4.8 3D): `command` with `parameters` (Table 6.13,
+        a payload object or raw values), the initial alignment, the accumulation (ended early by
+        STOP_RUN after `stop_after` seconds, if given), then ACCEPT (or the STOP code, which leaves
+        calibration, if not `accept`). Waits for every answer; returns the result (Table 6.14)."""
+        info = COMMANDS.get(command) if isinstance(command, str) else None
+        if info is None:
+            raise COMMAND_SET.unknown(command)
+        if command not in CALIBRATION_TYPES or command == START_RUNS:
+            single = [name for name in CALIBRATION_TYPES if name != START_RUNS]
+            detail = f"{command} is not a single-run calibration ({', '.join(single)})"
+            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
+        block = COMMAND_SET.parameter_block(command, parameters)
+        early = None if stop_after is None else require_seconds(stop_after, "stop_after")
+
+        def attempt() -> Payload:
+            self._request(command, block)
+            self.wait_for(
+                lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["alignment"],
+                self.host.setting("alignment") + 2 * self.host.reply_timeout,
+            )
+            if early is not None:
+                self.poll(early)
+                final = self._block(self._request(STOP_RUN, None))
+            else:
+                event = self.wait_for(
+                    lambda e: isinstance(e, DataBlock) and e.source == TIMER_EVENTS["accumulation"],
+                    self.host.setting("accumulation") + 2 * self.host.reply_timeout,
+                )
+                assert isinstance(event, DataBlock)
+                final = event.payload
+            leave = command_event(COMMANDS[STOP].code, self.host.state) or STOP
+            self._request(ACCEPT if accept else leave, None)
+            return final
+
+        result: Payload = self._retry(command, attempt)
+        return result
+
+    def calibrate_2d(self, parameters: Payload | Mapping[str, object], *, accept: bool = True) -> Payload:
+        """A 2D calibration (6.4.1): `calibrate` with the command whose result reports type 2D."""
+        return self.calibrate(_calibration_command(CalibrationType.TWO_D), parameters, accept=accept)
+
+    def calibrate_3d(self, parameters: Payload | Mapping[str, object], *, accept: bool = True) -> Payload:
+        """A 3D calibration (6.4.8): `calibrate` with the command whose result reports type 3D."""
+        return self.calibrate(_calibration_command(CalibrationType.THREE_D), parameters, accept=accept)
+
+
+def _calibration_command(kind: int) -> str:
+    return next(name for name, value in CALIBRATION_TYPES.items() if value == kind)

@@ -8,6 +8,8 @@ from dataclasses import dataclass
 from enum import IntFlag, StrEnum
 from typing import Final
 
+from .errors import ErrorKind, IlahrsError, brief
+
 __all__ = ["USW_FAILURE_FLAGS", "USW_MODE_MASK", "USW_WARNING_FLAGS", "UnitStatusWord", "UswFlag", "UswMode"]
 
 
@@ -69,9 +71,13 @@ _MODES: Final = {
 
 @dataclass(frozen=True, slots=True)
 class UnitStatusWord:
-    """A decoded USW. `raw` is the word as received."""
+    """A decoded USW. `raw` is the word as received (an integer: IlahrsError otherwise)."""
 
     raw: int
+
+    def __post_init__(self) -> None:
+        if isinstance(self.raw, bool) or not isinstance(self.raw, int):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "usw", f"{brief(self.raw)} is not an integer")
 
     @property
     def flags(self) -> UswFlag:

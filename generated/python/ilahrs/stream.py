@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Final
 
-from .errors import IlahrsError
+from .errors import IlahrsError, require_bytes
 from .frame import (
     CHECKSUM_SIZE,
     HEADER,
@@ -74,8 +74,9 @@ class StreamDecoder:
         return len(self._buffer)
 
     def feed(self, data: bytes | bytearray | memoryview) -> list[StreamEvent]:
-        """Add bytes; return the messages they complete, in order."""
-        self._buffer += data
+        """Add bytes; return the messages they complete, in order. IlahrsError(MALFORMED) for
+        anything but a byte string (nothing is added)."""
+        self._buffer += require_bytes(data, "data")
         return self._scan(final=False)
 
     def finish(self) -> list[StreamEvent]:

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass
 from typing import Final
 
-from .errors import ErrorKind, IlahrsError
+from .errors import ErrorKind, IlahrsError, brief
 
 __all__ = ["FLOAT32_MAX", "CalibrationSuccessEncoding", "DateEncoding", "DeclinationEncoding"]
 
@@ -35,7 +35,9 @@ class DateEncoding:
     terms: tuple[tuple[str, int, int], ...]
 
     def is_valid(self, year: int, month: int, day: int) -> bool:
-        """True for a calendar date with a year in DATE_YEAR_MIN..DATE_YEAR_MAX."""
+        """True for a calendar date with a year in DATE_YEAR_MIN..DATE_YEAR_MAX (integers only)."""
+        if not all(isinstance(part, int) and not isinstance(part, bool) for part in (year, month, day)):
+            return False
         return self.year_min <= year <= self.year_max and 1 <= month <= 12 and 1 <= day <= _days_in_month(year, month)
 
     def _value(self, year: int, month: int, day: int) -> float:
@@ -48,14 +50,15 @@ class DateEncoding:
     def encode(self, year: int, month: int, day: int) -> float:
         """The date float of a calendar date; IlahrsError(OUT_OF_RANGE) for an invalid date."""
         if not self.is_valid(year, month, day):
-            detail = f"{year:04d}-{month:02d}-{day:02d} is not a valid date"
+            detail = f"{brief(year)}-{brief(month)}-{brief(day)} is not a valid date"
             raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "date", detail)
         return self._value(year, month, day)
 
     def decode(self, value: float) -> tuple[int, int, int]:
         """(year, month, day) of a date float: the valid date whose encoding is nearest (E15)."""
-        if not math.isfinite(value) or not self.year_min - 1 <= value <= self.year_max + 2:
-            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "date", f"{value!r} is not a date float")
+        numeric = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if not numeric or not self.year_min - 1 <= value <= self.year_max + 2 or not math.isfinite(value):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "date", f"{brief(value)} is not a date float")
         best: tuple[float, int, int, int] | None = None
         base = math.floor(value)
         for year in (base - 1, base):
@@ -82,10 +85,16 @@ class DeclinationEncoding:
 
     def is_computed(self, value: float) -> bool:
         """True if the AHRS computes the declination itself."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "declination", f"{brief(value)} is not a number")
         return value > self.compute_above
 
     def is_valid(self, value: float) -> bool:
         """A declination in DECLINATION_MIN..DECLINATION_MAX, or the compute request; never NaN or infinite."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            return False
+        if isinstance(value, int):
+            value = float(value) if value.bit_length() < 1024 else math.inf
         if not math.isfinite(value) or abs(value) > FLOAT32_MAX:
             return False
         return self.low <= value <= self.high or value > self.compute_above
@@ -106,6 +115,10 @@ class CalibrationSuccessEncoding:
 
     def accuracy_deg(self, success: int) -> float | None:
         """The predicted 3-sigma heading error in degrees, or None (failed, or no estimate)."""
+        if isinstance(success, bool) or not isinstance(success, int):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "success", f"{brief(success)} is not an integer")
+        if not 0 <= success <= 0xFF:
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "success", f"{brief(success)} is not a byte")
         if success in (self.failed, self.no_estimate):
             return None
         return success / self.accuracy_divisor

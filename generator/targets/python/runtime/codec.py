@@ -13,13 +13,44 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Self
 
-from .encodings import Variant, declination_is_valid
-from .errors import ErrorKind, IlahrsError
+from .encodings import VARIANTS, Variant, declination_is_valid
+from .errors import ErrorKind, IlahrsError, brief, require_bytes, suggest
 from .valuecodec import FLOAT32_MAX
 
-__all__ = ["FLOAT32_MAX", "Buffer", "FieldInfo", "Payload", "PayloadBase", "field_kind"]
+__all__ = [
+    "FLOAT32_MAX",
+    "Buffer",
+    "FieldInfo",
+    "JsonValue",
+    "Payload",
+    "PayloadBase",
+    "field_kind",
+    "required_variant",
+    "variant_of",
+]
 
 Buffer = bytes | bytearray | memoryview
+JsonValue = int | float | str | None
+"""A value `json.dumps` writes as standard JSON."""
+
+
+def variant_of(variant: Variant | str | None) -> Variant | None:
+    """A device variant from a Variant or its name (a key of ilahrs.VARIANTS); None stays None.
+    IlahrsError(OUT_OF_RANGE) for anything else."""
+    if variant is None or isinstance(variant, Variant):
+        return variant
+    if isinstance(variant, str) and variant in VARIANTS:
+        return VARIANTS[variant]
+    detail = f"{brief(variant)} is not a variant: one of {', '.join(VARIANTS)} or a Variant{suggest(variant, VARIANTS)}"
+    raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "variant", detail)
+
+
+def required_variant(variant: Variant | str) -> Variant:
+    """`variant_of` for an accessor that needs a variant: None is refused too."""
+    found = variant_of(variant)
+    if found is None:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "variant", "this value needs the device variant (KG, KA)")
+    return found
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,7 +104,9 @@ class Payload(Protocol):
 
     def raw(self) -> dict[str, int | float | str | bytes]: ...
 
-    def values(self, variant: Variant | None = None) -> dict[str, float]: ...
+    def values(self, variant: Variant | str | None = None) -> dict[str, float]: ...
+
+    def json(self) -> dict[str, JsonValue]: ...
 
 
 def _size_error(size: int, expected: int) -> IlahrsError:
@@ -88,29 +121,31 @@ def _text(raw: bytes) -> str:
 
 def _check_int(value: object, low: int, high: int, name: str, offset: int) -> None:
     if isinstance(value, bool) or not isinstance(value, int):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not an integer")
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} is not an integer")
     if not low <= value <= high:
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value} outside {low}..{high}")
 
 
 def _check_float(value: object, low: float, high: float, name: str, offset: int) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not a number")
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} is not a number")
+    if isinstance(value, int) and abs(value) > FLOAT32_MAX:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} outside {low!r}..{high!r}")
     if not math.isfinite(value) or not low <= value <= high:
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} outside {low!r}..{high!r}")
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} outside {low!r}..{high!r}")
 
 
 def _check_declination(value: object, name: str, offset: int) -> None:
     _check_float(value, -FLOAT32_MAX, FLOAT32_MAX, name, offset)
     assert isinstance(value, (int, float))
     if not declination_is_valid(value):
-        detail = f"{value!r} is neither a declination nor the compute request"
+        detail = f"{brief(value)} is neither a declination nor the compute request"
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, detail)
 
 
 def _check_text(value: object, size: int, name: str, offset: int) -> None:
     if not isinstance(value, str):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value!r} is not text")
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{brief(value)} is not text")
     try:
         encoded = value.encode("latin-1")
     except UnicodeEncodeError as exc:
@@ -163,7 +198,9 @@ class PayloadBase:
 
     @classmethod
     def parse(cls, data: Buffer) -> Self:
-        """Decode exactly SIZE bytes (truncated / trailing_data otherwise)."""
+        """Decode exactly SIZE bytes (truncated / trailing_data otherwise; MALFORMED for a value that
+        is not a byte string)."""
+        data = require_bytes(data, "data")
         if len(data) != cls.SIZE:
             raise _size_error(len(data), cls.SIZE)
         if not cls._TEXT:
@@ -176,10 +213,13 @@ class PayloadBase:
     @classmethod
     def from_raw(cls, values: Mapping[str, object]) -> Self:
         """Build from raw field values (missing fields take their defaults); checked like `build()`."""
+        if not isinstance(values, Mapping):
+            raise IlahrsError(ErrorKind.MALFORMED, None, None, f"{brief(values)} is not a mapping of field values")
         known = {info.name for info in cls.FIELDS}
         for key in values:
             if key not in known:
-                raise IlahrsError(ErrorKind.MALFORMED, None, key, f"{cls.NAME} has no field {key!r}")
+                detail = f"{cls.NAME} has no field {brief(key)}{suggest(key, known)}"
+                raise IlahrsError(ErrorKind.MALFORMED, None, key if isinstance(key, str) else None, detail)
         result = cls(**values)
         result.check()
         return result
@@ -200,3 +240,16 @@ class PayloadBase:
     def raw(self) -> dict[str, int | float | str | bytes]:
         """Every field's raw value, in table order."""
         return {info.name: getattr(self, info.name) for info in self.FIELDS}
+
+    def json(self) -> dict[str, JsonValue]:
+        """Every field's raw value, ready for `json.dumps` (standard JSON): reserved bytes as hex
+        text, a float field's NaN or infinity as None."""
+        result: dict[str, JsonValue] = {}
+        for name, value in self.raw().items():
+            if isinstance(value, bytes):
+                result[name] = value.hex()
+            elif isinstance(value, float) and not math.isfinite(value):
+                result[name] = None
+            else:
+                result[name] = value
+        return result

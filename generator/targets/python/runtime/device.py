@@ -33,11 +33,12 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Final
 
-from .codec import FieldInfo, Payload, field_kind
+from .codec import FieldInfo, Payload, field_kind, required_variant
 from .commands import COMMANDS, ack_for
 from .encodings import CALIBRATION_FAILED, CALIBRATION_NO_ESTIMATE, VARIANTS, Variant, encode_date
-from .errors import ErrorKind, IlahrsError
+from .errors import ErrorKind, IlahrsError, brief, require_seconds
 from .frame import Frame, MessageType
+from .machine import firmware_is_valid
 from .motion import Motion, Sensors
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
 from .payloads import PAYLOADS
@@ -144,6 +145,18 @@ def default_parameters(device_id: str = DEFAULT_DEVICE_ID) -> ParameterBlock:
     return ParameterBlock.from_raw(values)
 
 
+def _check_firmware_text(text: object) -> None:
+    """The FIRMWARE answer must be Latin-1 text; it is cut to the block's size when sent."""
+    table = PAYLOADS[_FIRMWARE_BLOCK]
+    field = next(f for f in table.FIELDS if f.name == _FIRMWARE_FIELD)
+    if isinstance(text, str):
+        text = text[: field.size]
+    try:
+        table.from_raw({_FIRMWARE_FIELD: text})
+    except IlahrsError as exc:
+        raise IlahrsError(exc.kind, None, "firmware_text", exc.detail) from None
+
+
 def _round(value: float) -> int:
     """Round half away from zero."""
     return math.floor(value + 0.5) if value >= 0 else -math.floor(-value + 0.5)
@@ -199,14 +212,23 @@ class Device:
         parameters: ParameterBlock | None = None,
         device_id: str | None = None,
     ) -> None:
-        self.variant = VARIANTS[variant] if isinstance(variant, str) else variant
+        self.variant = required_variant(variant)
+        if not firmware_is_valid(firmware):
+            detail = f"{brief(firmware)} is not a firmware version such as {DEFAULT_FIRMWARE}"
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "firmware", detail)
         self.firmware = firmware
         self.firmware_text = firmware_text if firmware_text is not None else f"ilahrs virtual AHRS {firmware}"
+        _check_firmware_text(self.firmware_text)
         params = parameters if parameters is not None else default_parameters()
+        if not isinstance(params, ParameterBlock):
+            detail = f"{brief(params)} is not a {ParameterBlock.NAME} block"
+            raise IlahrsError(ErrorKind.MALFORMED, None, "parameters", detail)
         params.check()
         self._memory: dict[str, object] = {k: v for k, v in params.raw().items() if not isinstance(v, bytes)}
         if device_id is not None:
             self._memory[_DEVICE_ID_FIELD] = device_id
+        if isinstance(seed, bool) or not isinstance(seed, int):
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "seed", f"{brief(seed)} is not an integer")
         ParameterBlock.from_raw(self._memory).check()
         self._calibration_memory: dict[str, object] = {}
         """The calibration saved by ACCEPT (what CALIBRATION_RESULTS reads, Table 6.17)."""
@@ -275,9 +297,7 @@ class Device:
 
     def advance(self, seconds: float) -> bytes:
         """Let `seconds` pass; return what the AHRS sends meanwhile, in order."""
-        if not seconds >= 0:
-            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "seconds", f"{seconds!r} is not a time step")
-        target = self._now + round(seconds * _NS)
+        target = self._now + round(require_seconds(seconds) * _NS)
         out = bytearray()
         while self._deadline is not None and self._deadline <= target:
             self._now = self._deadline

@@ -12,7 +12,7 @@ import struct
 from dataclasses import dataclass
 from typing import Final
 
-from .errors import ErrorKind, IlahrsError
+from .errors import ErrorKind, IlahrsError, brief, require_bytes
 from .spec import (
     CHECKSUM_SIZE,
     FRAME_FIELDS,
@@ -63,7 +63,7 @@ _MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 
 def checksum(data: bytes | bytearray | memoryview) -> int:
     """The frame checksum of `data`: the sum of its bytes modulo 2**16 (E28)."""
-    return sum(data) & 0xFFFF
+    return sum(require_bytes(data, "data")) & 0xFFFF
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,8 +79,9 @@ class Frame:
 
     @classmethod
     def parse(cls, data: bytes | bytearray | memoryview) -> Frame:
-        """Decode exactly one frame; raise IlahrsError (see spec/README.md for the order of checks)."""
-        data = bytes(data)
+        """Decode exactly one frame; raise IlahrsError (see spec/README.md for the order of checks).
+        `data` must be a byte string (MALFORMED otherwise: hex text is not decoded for you)."""
+        data = require_bytes(data, "data")
         size = len(data)
         for index, expected in enumerate(HEADER):
             if size <= index:
@@ -116,10 +117,9 @@ class Frame:
 
     def build(self) -> bytes:
         """Encode the frame, filling in message length and checksum."""
+        self._check_types()
         if self.message_type not in _MESSAGE_TYPES:
             raise IlahrsError(ErrorKind.BAD_MESSAGE_TYPE, None, "message_type", f"message type {self.message_type}")
-        if not 0 <= self.reserved <= 0xFF:
-            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "reserved", f"reserved byte {self.reserved}")
         if not MIN_PAYLOAD_SIZE <= len(self.payload) <= MAX_PAYLOAD_SIZE:
             raise IlahrsError(
                 ErrorKind.BAD_LENGTH,
@@ -130,6 +130,16 @@ class Frame:
         body = self._body()
         return HEADER + body + _LENGTH.pack(sum(body) & 0xFFFF)
 
+    def _check_types(self) -> None:
+        """IlahrsError unless the fields are of the types the wire needs (integers, a byte string)."""
+        for name in ("message_type", "reserved"):
+            value = getattr(self, name)
+            if not _is_int(value) or not 0 <= value <= 0xFF:
+                kind = ErrorKind.BAD_MESSAGE_TYPE if name == "message_type" else ErrorKind.OUT_OF_RANGE
+                raise IlahrsError(kind, None, name, f"{name.replace('_', ' ')} {brief(value)} is not a byte")
+        if not isinstance(self.payload, (bytes, bytearray, memoryview)):
+            raise IlahrsError(ErrorKind.MALFORMED, None, "payload", f"{brief(self.payload)} is not a byte string")
+
     def _body(self) -> bytes:
         """The checksummed bytes: the fields between header and payload, then the payload."""
         values = {
@@ -137,9 +147,14 @@ class Frame:
             "reserved": self.reserved,
             "message_length": len(self.payload) + LENGTH_BIAS,
         }
-        return _PREFIX.pack(*(values[name] for name in FRAME_FIELDS)) + self.payload
+        return _PREFIX.pack(*(values[name] for name in FRAME_FIELDS)) + bytes(self.payload)
 
     @property
     def checksum(self) -> int:
         """The checksum this frame carries on the wire."""
+        self._check_types()
         return sum(self._body()) & 0xFFFF
+
+
+def _is_int(value: object) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)

@@ -15,16 +15,23 @@ unexpected is reported as a ProtocolError; nothing is guessed.
 >>> answer = device.receive(host.send("ReadAHRSPar"))
 >>> [type(event).__name__ for event in host.receive(answer)]
 ['DataBlock']
+
+A capture or a line that is already streaming is decoded with a session that starts mid-stream:
+`Host.mid_stream("AHRScont3")` believes the device is in the state where that command's output
+flows and reads every block as its output format (`COMMANDS[command].starts_output`, whose payload
+table is `OUTPUT_FORMATS[...]`, None for $PAHR sentences).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
 from typing import Final
 
 from .commands import COMMAND_SET, COMMANDS, build_command
-from .errors import ErrorKind, IlahrsError
+from .errors import ErrorKind, IlahrsError, brief, require_seconds, suggest
 from .frame import Frame, MessageType
+from .machine import firmware_is_valid
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
 from .payloads import PAYLOADS, Payload
 from .statemachine import (
@@ -77,6 +84,9 @@ class Acknowledged:
     message: str
     checksum: int
     raw: bytes = b""
+    at: float = field(default=0.0, compare=False)
+    """Seconds on the receiver's clock when the event was reported (the Host's own clock;
+    time.monotonic() in ilahrs.serial)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -87,6 +97,8 @@ class DataBlock:
     source: str
     payload: Payload
     raw: bytes = b""
+    at: float = field(default=0.0, compare=False)
+    """Seconds on the receiver's clock when the event was reported."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -99,6 +111,8 @@ class Output:
     source: str = ""
     late: bool = False
     raw: bytes = b""
+    at: float = field(default=0.0, compare=False)
+    """Seconds on the receiver's clock when the event was reported."""
 
     @property
     def usw(self) -> UnitStatusWord:
@@ -120,6 +134,8 @@ class ProtocolError:
     expected: str | None = None
     raw: bytes | None = None
     source: str | None = None
+    at: float = field(default=0.0, compare=False)
+    """Seconds on the receiver's clock when the event was reported."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -127,6 +143,8 @@ class Discarded:
     """Received bytes that belong to no valid frame or sentence (noise, a broken message)."""
 
     count: int
+    at: float = field(default=0.0, compare=False)
+    """Seconds on the receiver's clock when the event was reported."""
 
 
 HostEvent = Acknowledged | DataBlock | Output | ProtocolError | Discarded
@@ -146,7 +164,9 @@ class Host:
     `send(command, block)` returns the bytes to write; `receive(data)` and `advance(seconds)`
     return HostEvents. `state` is the state the host believes the device is in (the table's
     names); `owed` lists what the device still owes for the last command. `firmware`: the
-    device's firmware version, for the rows of the table that depend on it (E29).
+    device's firmware version, for the rows of the table that depend on it (E29). `state` and
+    `output` (a command that starts output, or an output format) start the session mid-stream
+    (see `mid_stream`). Every event carries `at`, the host's clock when it was reported.
     """
 
     def __init__(
@@ -155,21 +175,45 @@ class Host:
         firmware: str | None = None,
         reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S,
         state: str = INITIAL,
+        output: str | None = None,
     ) -> None:
+        if firmware is not None and not firmware_is_valid(firmware):
+            detail = f"{brief(firmware)} is not a firmware version such as 4.9.9.0"
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "firmware", detail)
         self.firmware = firmware
-        self.reply_timeout = reply_timeout
+        self.reply_timeout = require_seconds(reply_timeout, "reply_timeout")
+        _check_state(state)
         self._decoder = StreamDecoder()
         self._now = 0
         self._state = state
         self._owed: list[_Owed] = []
         self._target = state
-        self._output: str | None = None
+        self._output: str | None = _output_format(output)
         self._timer_deadline: int | None = None
         self._timer_index = 0
         self._late_state: str | None = None
         self._late_until = 0
         self._settings: dict[str, float] = {}
         self._arm_timer()
+
+    @classmethod
+    def mid_stream(
+        cls, command: str, *, firmware: str | None = None, reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S
+    ) -> Host:
+        """A session for a line that is already streaming the output `command` started (a capture
+        that began mid-stream): in the state where that output flows, reading its format."""
+        info = COMMANDS.get(command) if isinstance(command, str) else None
+        if info is None or info.starts_output is None:
+            detail = f"{brief(command)} is not a command that starts output{suggest(command, _STARTERS)}"
+            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, detail)
+        first = lookup(INITIAL, command, firmware)
+        state = first.to if first is not None else INITIAL
+        for _ in STATES:  # through the alignment to the state that sends output
+            timed = timer_transition(state)
+            if timed is None or timed[1].to == state:
+                break
+            state = timed[1].to
+        return cls(firmware=firmware, reply_timeout=reply_timeout, state=state, output=command)
 
     @property
     def state(self) -> str:
@@ -199,25 +243,30 @@ class Host:
     def setting(self, timer: str) -> float:
         """What the host knows of a timer's parameter (alignment time, accumulation time in s;
         update rate in Hz): learned from blocks sent and parameter blocks read, else the default."""
+        if not isinstance(timer, str) or timer not in TIMER_IS_RATE:
+            detail = f"no timer {brief(timer)}{suggest(timer, TIMER_IS_RATE)}"
+            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "timer", detail)
         default = DEFAULT_UPDATE_RATE_HZ if TIMER_IS_RATE.get(timer) else DEFAULT_ALIGNMENT_TIME_S
         return self._settings.get(timer, default)
 
     def resync(self, state: str = INITIAL) -> None:
         """Forget what is owed and believe the device is in `state` (after a Stop and a quiet line)."""
-        if state not in STATES:
-            raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, "state", f"no state {state!r}")
+        _check_state(state, ErrorKind.UNEXPECTED_MESSAGE)
         self._owed = []
         self._late_state = None
         self._state = self._target = state
         self._arm_timer()
 
-    def send(self, command: str, block: Payload | None = None) -> bytes:
-        """The bytes of `command` (ICD name), followed by its parameter block if it takes one.
+    def send(self, command: str, block: Payload | Mapping[str, object] | None = None) -> bytes:
+        """The bytes of `command` (ICD name), followed by its parameter block if it takes one (a
+        payload object or raw field values; a name its table does not have is refused, MALFORMED).
         Refused (IlahrsError UNEXPECTED_MESSAGE) while answers are owed, or if the device would
-        ignore the command in its state (E33)."""
-        info = COMMANDS.get(command)
+        ignore the command in its state (E33). Nothing is sent when an error is raised."""
+        info = COMMANDS.get(command) if isinstance(command, str) else None
         if info is None:
-            raise IlahrsError(ErrorKind.UNKNOWN_COMMAND, None, None, f"no command is called {command!r}")
+            raise COMMAND_SET.unknown(command)
+        if block is not None:
+            block = COMMAND_SET.parameter_block(command, block)
         if self._owed:
             detail = f"still waiting for {', '.join(self.owed)}"
             raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
@@ -262,13 +311,15 @@ class Host:
         dropped = self._decoder.discarded - before
         if dropped:
             events.append(Discarded(dropped))
-        return events
+        return self._stamped(events)
+
+    def _stamped(self, events: list[HostEvent]) -> list[HostEvent]:
+        now = self.now
+        return [replace(event, at=now) for event in events] if now else events
 
     def advance(self, seconds: float) -> list[HostEvent]:
         """Let time pass on the host's clock; report answers that did not come in time."""
-        if not seconds >= 0:
-            raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "seconds", f"{seconds!r} is not a time step")
-        self._now += round(seconds * _NS)
+        self._now += round(require_seconds(seconds) * _NS)
         events: list[HostEvent] = []
         if self._owed and self._owed[0].deadline < self._now:
             missing = ", ".join(self.owed)
@@ -285,7 +336,7 @@ class Host:
             detail = f"no {item} ({event}) in state {self._state}"
             events.append(ProtocolError(ErrorKind.TIMEOUT, "missing", detail, item, None, event))
             self._timer_done(transition.to)
-        return events
+        return self._stamped(events)
 
     # --- Matching messages against what is owed --------------------------------------------------
 
@@ -411,6 +462,29 @@ class Host:
             value = raw.get(name)
             if isinstance(value, (int, float)) and value > 0:
                 self._settings[timer] = float(value)
+
+
+_STARTERS: Final = tuple(name for name, info in COMMANDS.items() if info.starts_output is not None)
+
+
+def _check_state(state: object, kind: ErrorKind = ErrorKind.OUT_OF_RANGE) -> None:
+    if not isinstance(state, str) or state not in STATES:
+        detail = f"no state {brief(state)}{suggest(state, STATES)}"
+        raise IlahrsError(kind, None, "state", detail)
+
+
+def _output_format(output: object) -> str | None:
+    """The output format of `output`: a command that starts output, or an output format name."""
+    if output is None:
+        return None
+    if isinstance(output, str):
+        info = COMMANDS.get(output)
+        if info is not None and info.starts_output is not None:
+            return info.starts_output
+        if output in OUTPUT_FORMATS:
+            return output
+    detail = f"{brief(output)} is neither a command that starts output nor an output format"
+    raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "output", detail + suggest(output, [*_STARTERS, *OUTPUT_FORMATS]))
 
 
 def _describe(message: StreamEvent) -> str:

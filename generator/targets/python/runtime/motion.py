@@ -43,6 +43,9 @@ EARTH_FIELD_NT: Final = 30000.0
 """Equatorial field strength of the dipole model, nT."""
 GYRO_RANGE_DPS: Final = 300.0
 """Gyro measurement range (Table 3.1); the virtual object never turns faster than 80 % of it."""
+SETTLE_S: Final = 4.0
+"""Seconds over which a moving phase eases from where the object was held onto the gentle motion
+that is a function of the time since power-up."""
 
 Vector = tuple[float, float, float]
 Matrix = tuple[Vector, Vector, Vector]
@@ -131,14 +134,20 @@ class Motion:
     """The virtual object's orientation over time: still (alignment), moving gently (operation)
     or turning at a constant rate with constant pitch and roll (a calibration run). Each phase
     starts where the previous one left the object, except that a turning phase may be given a new
-    pitch and roll (the operator sets the object before the run, 6.4.5)."""
+    pitch and roll (the operator sets the object before the run, 6.4.5).
+
+    The gentle motion is a function of the time since power-up (`gentle(t)`), not of the time
+    since the phase began: a moving phase eases from where the object was held onto it within
+    SETTLE_S seconds, so any number of start/stop sessions leaves pitch and roll within the
+    motion's amplitude around a level mean."""
 
     def __init__(self, seed: int) -> None:
         rng = random.Random(seed)
         self._amplitude = (rng.uniform(10, 30), rng.uniform(3, 8), rng.uniform(4, 10))
         self._frequency = tuple(2 * math.pi * rng.uniform(0.05, 0.2) for _ in range(3))
         self._drift = rng.choice((-1, 1)) * rng.uniform(1, 5)
-        self._phase = _Phase("still", 0.0, rng.uniform(0, 360), rng.uniform(-3, 3), rng.uniform(-3, 3))
+        self._mean = (rng.uniform(0, 360), rng.uniform(-3, 3), rng.uniform(-3, 3))
+        self._phase = _Phase("still", 0.0, *self._mean)
 
     @property
     def kind(self) -> str:
@@ -163,16 +172,26 @@ class Motion:
         p = self._phase
         tau = max(0.0, t - p.start)
         if p.kind == "moving":
-            a, w = self._amplitude, self._frequency
-            heading = p.heading + a[0] * math.sin(w[0] * tau) + self._drift * tau
-            pitch = p.pitch + a[1] * math.sin(w[1] * tau)
-            roll = p.roll + a[2] * math.sin(w[2] * tau)
+            heading, pitch, roll = self.gentle(max(t, p.start))
+            if tau < SETTLE_S:
+                x = tau / SETTLE_S
+                weight = x * x * (3 - 2 * x)  # smoothstep: no jump in angle or rate
+                turn = (heading - p.heading + 180.0) % 360.0 - 180.0
+                heading = p.heading + weight * turn
+                pitch = p.pitch + weight * (pitch - p.pitch)
+                roll = p.roll + weight * (roll - p.roll)
         elif p.kind == "turning":
             heading = p.heading + p.turn_rate * tau
             pitch, roll = p.pitch, p.roll
         else:
             heading, pitch, roll = p.heading, p.pitch, p.roll
         return heading % 360.0, max(-89.0, min(89.0, pitch)), roll
+
+    def gentle(self, t: float) -> tuple[float, float, float]:
+        """(heading, pitch, roll) in degrees of the gentle motion at t seconds since power-up."""
+        a, w, mean = self._amplitude, self._frequency, self._mean
+        heading = mean[0] + a[0] * math.sin(w[0] * t) + self._drift * t
+        return heading % 360.0, mean[1] + a[1] * math.sin(w[1] * t), mean[2] + a[2] * math.sin(w[2] * t)
 
     def turned(self, t: float) -> float:
         """Degrees of heading turned since the phase began (turning phases)."""

@@ -11,7 +11,7 @@ import math
 import re
 from typing import TYPE_CHECKING, ClassVar, Final, Self
 
-from .errors import ErrorKind, IlahrsError
+from .errors import ErrorKind, IlahrsError, brief, require_bytes
 
 __all__ = ["SentenceBase", "SentenceField", "nmea_checksum", "scaled"]
 
@@ -25,16 +25,20 @@ _HEX: Final = re.compile(rb"[0-9A-Fa-f]+")
 def nmea_checksum(body: bytes) -> int:
     """XOR of the characters between "$" and "*"."""
     value = 0
-    for byte in body:
+    for byte in require_bytes(body, "body"):
         value ^= byte
     return value
 
 
 def scaled(value: float, divisor: int, name: str) -> int:
     """The scaled integer of an engineering value, rounding half away from zero."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 2**63:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is out of range")
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{value!r} is not a finite number")
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is not a finite number")
     product = value * divisor
+    if not math.isfinite(product) or abs(product) > 2**63:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is out of range")
     return math.floor(product + 0.5) if product >= 0 else -math.floor(-product + 0.5)
 
 
@@ -60,7 +64,7 @@ def _format_decimal(value: int, width: int, decimals: int) -> str:
 
 def _as_bytes(text: str | bytes | bytearray | memoryview) -> bytes:
     if not isinstance(text, str):
-        return bytes(text)
+        return require_bytes(text, "text")
     try:
         return text.encode("latin-1")
     except UnicodeEncodeError as exc:
@@ -118,7 +122,7 @@ def _values(parts: list[bytes], fields: tuple[SentenceField, ...], offset: int) 
         else:
             value = _decimal(part, decimals)
         if value is None:
-            raise IlahrsError(ErrorKind.MALFORMED, offset, name, f"{part!r} is not a valid {name}")
+            raise IlahrsError(ErrorKind.MALFORMED, offset, name, f"{brief(part)} is not a valid {name}")
         if not low <= value <= high:
             raise IlahrsError(ErrorKind.OUT_OF_RANGE, offset, name, f"{value} outside {low}..{high}")
         values.append(value)
@@ -154,7 +158,7 @@ class SentenceBase:
         for name, _kind, _width, _decimals, low, high, _unit in self._SPEC:
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int):
-                raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{value!r} is not an integer")
+                raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{brief(value)} is not an integer")
             if not low <= value <= high:
                 raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, name, f"{value} outside {low}..{high}")
 
