@@ -4,7 +4,7 @@
 //! command names that share its code.
 
 use super::Command;
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Name, Result};
 use crate::frame::{self, FrameRepr, MessageType};
 use crate::payload::PayloadKind;
 
@@ -30,11 +30,14 @@ impl Command {
 }
 
 /// Writes the command frame of the command whose ICD name is `name` into `buf`; returns its
-/// size (bytes). Errors: `unknown_command`, `buffer_too_small`.
+/// size (bytes). Errors: `unknown_command` (its detail the name given), `buffer_too_small`.
 pub fn build_command(name: &str, buf: &mut [u8]) -> Result<usize> {
     match Command::from_name(name) {
         Some(command) => command.build(buf),
-        None => Err(Error::new(ErrorKind::UnknownCommand)),
+        None => {
+            let error = Error::new(ErrorKind::UnknownCommand);
+            Err(error.with_detail(Detail::Name(Name::new(name))))
+        }
     }
 }
 
@@ -47,19 +50,24 @@ pub fn decode_command(frame: &[u8]) -> Result<(u8, &'static [Command])> {
     let repr = FrameRepr::parse(frame)?;
     if repr.message_type != MessageType::Command {
         let error = Error::at(ErrorKind::BadMessageType, frame::field::MESSAGE_TYPE.start);
-        return Err(error.with_field("message_type"));
+        let detail = Detail::Expected("a command frame");
+        return Err(error.with_field("message_type").with_detail(detail));
     }
     let code = match repr.payload {
         [code] => *code,
-        _ => {
+        payload => {
             let error = Error::at(ErrorKind::BadLength, frame::field::MESSAGE_LENGTH.start);
-            return Err(error.with_field("message_length"));
+            let detail = Detail::Size {
+                size: payload.len(),
+                expected: 1,
+            };
+            return Err(error.with_field("message_length").with_detail(detail));
         }
     };
     match Command::with_code(code) {
         [] => {
             let error = Error::at(ErrorKind::UnknownCommand, frame::field::PAYLOAD_START);
-            Err(error)
+            Err(error.with_detail(Detail::Code(code)))
         }
         names => Ok((code, names)),
     }
