@@ -1,8 +1,9 @@
 //! Errors as a user of the generated crate meets them, for the spec in this repository: `?`
 //! into a boxed `std::error::Error`, the detail each `Display` line carries (the value, the
-//! bound, the name not found: what the Python binding's messages say).
+//! bound, the name not found: what the Python binding's messages say), and the buffer a command
+//! with its parameter block needs.
 
-use ilahrs::command::build_command;
+use ilahrs::command::{build_command, build_load_ahrs_par, MAX_COMMAND_WITH_BLOCK_SIZE};
 use ilahrs::encoding::{Date, Declination};
 use ilahrs::error::{Detail, Float};
 use ilahrs::frame::{FrameRepr, MAX_FRAME_SIZE};
@@ -12,6 +13,23 @@ use ilahrs::{Command, ErrorKind, PahrSentence};
 /// The `Display` line of the error `result` ends in.
 fn message<T: std::fmt::Debug>(result: ilahrs::Result<T>) -> String {
     result.unwrap_err().to_string()
+}
+
+#[test]
+fn load_ahrs_par_and_its_block_fit_max_command_with_block_size() {
+    let block = AhrsParametersLoadRepr::default();
+    assert_eq!(MAX_COMMAND_WITH_BLOCK_SIZE, 67);
+    let mut buf = [0u8; MAX_COMMAND_WITH_BLOCK_SIZE];
+    assert_eq!(build_load_ahrs_par(&block, &mut buf), Ok(67));
+    let command = FrameRepr::parse(&buf[..9]).unwrap();
+    assert_eq!(command.payload, [Command::LoadAhrsPar.code()]);
+    let parameters = FrameRepr::parse(&buf[9..]).unwrap();
+    assert_eq!(AhrsParametersLoadRepr::parse(parameters.payload), Ok(block));
+    let error = build_load_ahrs_par(&block, &mut [0u8; MAX_FRAME_SIZE]).unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::BufferTooSmall);
+    assert_eq!(error.to_string(), "buffer_too_small: 60 bytes, needs 67");
+    let error = build_load_ahrs_par(&block, &mut [0u8; 4]).unwrap_err();
+    assert_eq!(error.to_string(), "buffer_too_small: 4 bytes, needs 67");
 }
 
 #[test]
