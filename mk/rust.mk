@@ -59,7 +59,7 @@ test-rust: build-rust
 	cargo fmt --check --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml
 	$(CARGO) clippy --quiet --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml --all-targets -- -D warnings
 	$(CARGO) test --quiet --manifest-path $(RUST_EXTENDED)/generated/rust/Cargo.toml
-	$(CARGO) build --quiet --manifest-path $(RUST_LIB) --no-default-features
+	$(CARGO) test --quiet --manifest-path $(RUST_LIB) --no-default-features
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB)
 	$(CARGO) test --quiet --manifest-path $(RUST_LIB) --all-features
 	$(CARGO) test --quiet --release --manifest-path tests/rust/Cargo.toml

@@ -23,6 +23,15 @@ pub use frames::{build_command, decode_command, Response};
 use crate::error::Result;
 use crate::payload::{self, PayloadKind};
 
+/// The buffer a command and the parameter block that follows it need together, for the
+/// largest block (bytes): a command frame (9 bytes, the frame around the one-byte code)
+/// and the data frame of Table 6.9, Parameters to load (58 bytes), the block
+/// after `LoadAHRSPar`.
+///
+/// [`crate::frame::MAX_FRAME_SIZE`] holds one frame: a buffer of this size holds what any
+/// `build_...` function for a command with its block writes.
+pub const MAX_COMMAND_WITH_BLOCK_SIZE: usize = 67;
+
 /// An operating mode of the AHRS (section 6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Mode {
@@ -381,7 +390,8 @@ impl Command {
 /// Writes `LoadAHRSPar` and, right after it, its parameter block (Table 6.9) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`payload::AhrsParametersLoadRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::AhrsParametersLoadRepr::build`], `buffer_too_small` (a buffer of
+/// [`MAX_COMMAND_WITH_BLOCK_SIZE`] bytes holds both).
 pub fn build_load_ahrs_par(
     parameters: &payload::AhrsParametersLoadRepr,
     buf: &mut [u8],
@@ -396,7 +406,8 @@ pub fn build_load_ahrs_par(
 /// Writes `Start2DClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small` (a buffer of
+/// [`MAX_COMMAND_WITH_BLOCK_SIZE`] bytes holds both).
 pub fn build_start_2d_clb(
     parameters: &payload::CalibrationParametersRepr,
     buf: &mut [u8],
@@ -411,7 +422,8 @@ pub fn build_start_2d_clb(
 /// Writes `Start2D2TClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small` (a buffer of
+/// [`MAX_COMMAND_WITH_BLOCK_SIZE`] bytes holds both).
 pub fn build_start_2d2t_clb(
     parameters: &payload::CalibrationParametersRepr,
     buf: &mut [u8],
@@ -426,7 +438,8 @@ pub fn build_start_2d2t_clb(
 /// Writes `Start3DClb` and, right after it, its parameter block (Table 6.13) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationParametersRepr::build`], `buffer_too_small` (a buffer of
+/// [`MAX_COMMAND_WITH_BLOCK_SIZE`] bytes holds both).
 pub fn build_start_3d_clb(
     parameters: &payload::CalibrationParametersRepr,
     buf: &mut [u8],
@@ -441,7 +454,8 @@ pub fn build_start_3d_clb(
 /// Writes `StartClbRun` and, right after it, its parameter block (Table 6.16) as a
 /// data frame into `buf`; returns the size of both (bytes).
 ///
-/// Errors: those of [`payload::CalibrationRunParametersRepr::build`], `buffer_too_small`.
+/// Errors: those of [`payload::CalibrationRunParametersRepr::build`], `buffer_too_small` (a buffer of
+/// [`MAX_COMMAND_WITH_BLOCK_SIZE`] bytes holds both).
 pub fn build_start_clb_run(
     parameters: &payload::CalibrationRunParametersRepr,
     buf: &mut [u8],

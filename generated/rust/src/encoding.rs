@@ -162,13 +162,16 @@ impl CalibrationSuccess {
     const ACCURACY_DIVISOR: f64 = 10.0;
 }
 
-/// True unless the encoding of a float field refuses the raw value `raw`.
-pub(crate) fn accepts(encoding: Option<crate::payload::Encoding>, raw: f64) -> bool {
+/// What the encoding of a float field refuses in the raw value `raw`, or `None`.
+pub(crate) fn refuses(
+    encoding: Option<crate::payload::Encoding>,
+    raw: f64,
+) -> Option<crate::error::Detail> {
     match encoding {
-        Some(crate::payload::Encoding::Declination) => Declination::accepts(raw),
+        Some(crate::payload::Encoding::Declination) => Declination::refuses(raw),
         _ => {
             let _ = raw;
-            true
+            None
         }
     }
 }

@@ -18,7 +18,7 @@
 //! # Ok::<(), ilahrs::Error>(())
 //! ```
 
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Result};
 use crate::wire;
 
 mod layout;
@@ -31,10 +31,10 @@ pub use layout::{
 impl TryFrom<u8> for MessageType {
     type Error = Error;
 
-    /// The type with code `raw`, or `bad_message_type` naming the field.
+    /// The type with code `raw`, or `bad_message_type` naming the field and the code.
     fn try_from(raw: u8) -> Result<MessageType> {
         let error = Error::new(ErrorKind::BadMessageType).with_field("message_type");
-        MessageType::from_raw(raw).ok_or(error)
+        MessageType::from_raw(raw).ok_or(error.with_detail(Detail::Code(raw)))
     }
 }
 
@@ -56,36 +56,54 @@ pub fn checksum(data: &[u8]) -> u16 {
 ///
 /// Runs the checks of a frame decode in order, except the one for trailing bytes: header,
 /// enough bytes for the fixed fields, message type, message length, enough bytes for the
-/// message, checksum. The first failure is the error, at its offset in `data`.
+/// message, checksum. The first failure is the error, at its offset in `data`, with its
+/// detail: the byte, code, length or checksum found and what was expected (a frame cut short
+/// before its length is known needs [`MIN_FRAME_SIZE`] bytes at least).
 pub fn check_frame(data: &[u8]) -> Result<usize> {
+    let truncated = |expected| {
+        let size = data.len();
+        Error::at(ErrorKind::Truncated, size).with_detail(Detail::Size { size, expected })
+    };
     for (index, expected) in HEADER.iter().enumerate() {
         match data.get(index) {
-            None => return Err(Error::at(ErrorKind::Truncated, index)),
-            Some(byte) if byte != expected => {
-                return Err(Error::at(ErrorKind::BadHeader, index).with_field("header"));
+            None => return Err(truncated(MIN_FRAME_SIZE)),
+            Some(&found) if found != *expected => {
+                let error = Error::at(ErrorKind::BadHeader, index).with_field("header");
+                let expected = *expected;
+                return Err(error.with_detail(Detail::Byte { found, expected }));
             }
             Some(_) => {}
         }
     }
     if data.len() < field::PAYLOAD_START {
-        return Err(Error::at(ErrorKind::Truncated, data.len()));
+        return Err(truncated(MIN_FRAME_SIZE));
     }
-    if MessageType::from_raw(wire::get::<u8>(data, field::MESSAGE_TYPE)).is_none() {
+    let code = wire::get::<u8>(data, field::MESSAGE_TYPE);
+    if MessageType::from_raw(code).is_none() {
         let error = Error::at(ErrorKind::BadMessageType, field::MESSAGE_TYPE.start);
-        return Err(error.with_field("message_type"));
+        return Err(error
+            .with_field("message_type")
+            .with_detail(Detail::Code(code)));
     }
     let length = wire::get::<u16>(data, field::MESSAGE_LENGTH);
     if !(MIN_MESSAGE_LENGTH..=MAX_MESSAGE_LENGTH).contains(&length) {
         let error = Error::at(ErrorKind::BadLength, field::MESSAGE_LENGTH.start);
-        return Err(error.with_field("message_length"));
+        let detail = Detail::Range {
+            value: i64::from(length),
+            min: i64::from(MIN_MESSAGE_LENGTH),
+            max: i64::from(MAX_MESSAGE_LENGTH),
+        };
+        return Err(error.with_field("message_length").with_detail(detail));
     }
     let sum = field::checksum(usize::from(length));
     if data.len() < sum.end {
-        return Err(Error::at(ErrorKind::Truncated, data.len()));
+        return Err(truncated(sum.end));
     }
-    if checksum(wire::bytes(data, HEADER_SIZE..sum.start)) != wire::get::<u16>(data, sum.clone()) {
-        let error = Error::at(ErrorKind::BadChecksum, sum.start);
-        return Err(error.with_field("checksum"));
+    let computed = checksum(wire::bytes(data, HEADER_SIZE..sum.start));
+    let sent = wire::get::<u16>(data, sum.clone());
+    if computed != sent {
+        let error = Error::at(ErrorKind::BadChecksum, sum.start).with_field("checksum");
+        return Err(error.with_detail(Detail::Checksum { sent, computed }));
     }
     Ok(sum.end)
 }
@@ -121,7 +139,11 @@ impl<T: AsRef<[u8]>> Frame<T> {
         let data = self.buffer.as_ref();
         let size = check_frame(data)?;
         if data.len() > size {
-            return Err(Error::at(ErrorKind::TrailingData, size));
+            let detail = Detail::Size {
+                size: data.len(),
+                expected: size,
+            };
+            return Err(Error::at(ErrorKind::TrailingData, size).with_detail(detail));
         }
         Ok(())
     }
@@ -266,17 +288,23 @@ impl<'a> FrameRepr<'a> {
     /// Writes the frame into `buf`, filling length and checksum; returns its size (bytes).
     ///
     /// Errors: `bad_length` (field `payload`) for a payload outside [`MIN_PAYLOAD`] to
-    /// [`MAX_PAYLOAD`] bytes, `buffer_too_small` when `buf` cannot hold the frame.
+    /// [`MAX_PAYLOAD`] bytes, `buffer_too_small` when `buf` cannot hold the frame (its detail
+    /// says how many bytes it needs).
     pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        let bad_length = Error::new(ErrorKind::BadLength)
+            .with_field("payload")
+            .with_detail(Detail::Range {
+                value: i64::try_from(self.payload.len()).unwrap_or(i64::MAX),
+                min: MIN_PAYLOAD as i64,
+                max: MAX_PAYLOAD as i64,
+            });
         if !(MIN_PAYLOAD..=MAX_PAYLOAD).contains(&self.payload.len()) {
-            return Err(Error::new(ErrorKind::BadLength).with_field("payload"));
+            return Err(bad_length);
         }
         let size = self.buffer_len();
-        let length = u16::try_from(self.payload.len() + LENGTH_BIAS)
-            .map_err(|_| Error::new(ErrorKind::BadLength).with_field("payload"))?;
-        let out = buf
-            .get_mut(..size)
-            .ok_or(Error::new(ErrorKind::BufferTooSmall))?;
+        let length = u16::try_from(self.payload.len() + LENGTH_BIAS).map_err(|_| bad_length)?;
+        let available = buf.len();
+        let out = buf.get_mut(..size).ok_or(too_small(available, size))?;
         let mut frame = Frame::new_unchecked(out);
         frame.set_header();
         frame.set_message_type(self.message_type.raw());
@@ -286,6 +314,11 @@ impl<'a> FrameRepr<'a> {
         frame.fill_checksum();
         Ok(size)
     }
+}
+
+/// `buffer_too_small`: a buffer of `size` bytes where `expected` are needed.
+pub(crate) const fn too_small(size: usize, expected: usize) -> Error {
+    Error::new(ErrorKind::BufferTooSmall).with_detail(Detail::Size { size, expected })
 }
 
 /// Writes the acknowledgement of the host message `message` into `buf` and returns its size

@@ -4,10 +4,16 @@
 //! Unit tests drawn from the spec: every command, every payload table, every error of a frame
 //! decode in order, sentences and the stream decoder, byte by byte.
 
+extern crate std;
+
+use std::format;
+use std::string::ToString;
+
 use crate::command::{decode_command, Command};
-use crate::error::ErrorKind;
+use crate::error::{Detail, ErrorKind, Float, Name};
 use crate::frame::{self, checksum, Frame, FrameRepr, MessageType};
-use crate::payload::{AnyPayload, PayloadKind, Value};
+use crate::nmea::{PahrSentence, MAX_LENGTH, PREFIX};
+use crate::payload::{AnyPayload, FieldKind, PayloadKind, Value};
 use crate::stream::{find_any, StreamDecoder};
 
 /// Builds a frame of `payload` into an array.
@@ -205,6 +211,170 @@ fn builders_refuse_out_of_range_values_at_the_field() {
             assert_eq!(error.field(), Some(info.name));
         }
     }
+}
+
+#[test]
+fn frame_errors_say_what_was_found_and_expected() {
+    let (good, n) = frame_of(MessageType::Data, &[1, 2, 3]);
+    let detail = |data: &[u8]| Frame::new_checked(data).unwrap_err().detail();
+    let size = |size, expected| Some(Detail::Size { size, expected });
+    assert_eq!(detail(&[]), size(0, frame::MIN_FRAME_SIZE));
+    assert_eq!(detail(&good[..n - 1]), size(n - 1, n));
+    assert_eq!(detail(&good[..n + 1]), size(n + 1, n));
+    let mut bad = good;
+    bad[1] ^= 0xFF;
+    let (found, expected) = (bad[1], frame::HEADER[1]);
+    assert_eq!(detail(&bad[..n]), Some(Detail::Byte { found, expected }));
+    bad = good;
+    bad[frame::field::MESSAGE_TYPE.start] = 0xFF;
+    assert_eq!(detail(&bad[..n]), Some(Detail::Code(0xFF)));
+    bad = good;
+    bad[frame::field::PAYLOAD_START] ^= 1;
+    let view = Frame::new_unchecked(&bad[..n]);
+    let (sent, computed) = (view.checksum(), view.compute_checksum());
+    assert_eq!(detail(&bad[..n]), Some(Detail::Checksum { sent, computed }));
+    bad = good;
+    bad[frame::field::MESSAGE_LENGTH.start] = 0xFF;
+    let (min, max) = (frame::MIN_MESSAGE_LENGTH, frame::MAX_MESSAGE_LENGTH);
+    let value = i64::from(Frame::new_unchecked(&bad[..n]).message_length());
+    let range = Detail::Range {
+        value,
+        min: i64::from(min),
+        max: i64::from(max),
+    };
+    assert_eq!(detail(&bad[..n]), Some(range));
+    let error = Frame::new_checked(&bad[..n]).unwrap_err();
+    let text = format!(
+        "bad_length at byte {} (field message_length): {value} outside {min}..={max}",
+        frame::field::MESSAGE_LENGTH.start
+    );
+    assert_eq!(error.to_string(), text);
+
+    let empty = FrameRepr::new(MessageType::Data, &[]);
+    let range = Detail::Range {
+        value: 0,
+        min: frame::MIN_PAYLOAD as i64,
+        max: frame::MAX_PAYLOAD as i64,
+    };
+    let mut buf = [0u8; frame::MAX_FRAME_SIZE];
+    assert_eq!(empty.build(&mut buf).unwrap_err().detail(), Some(range));
+    let error = Command::ALL[0].build(&mut buf[..2]).unwrap_err();
+    assert_eq!(error.detail(), size(2, frame::OVERHEAD + 1));
+}
+
+#[test]
+fn command_errors_say_what_was_found() {
+    let code = (0..=255u8).find(|code| Command::with_code(*code).is_empty());
+    if let Some(code) = code {
+        let (buf, n) = frame_of(MessageType::Command, &[code]);
+        let error = decode_command(&buf[..n]).unwrap_err();
+        assert_eq!(error.detail(), Some(Detail::Code(code)));
+    }
+    let (buf, n) = frame_of(MessageType::Command, &[0, 0]);
+    let error = decode_command(&buf[..n]).unwrap_err();
+    assert_eq!(
+        error.detail(),
+        Some(Detail::Size {
+            size: 2,
+            expected: 1
+        })
+    );
+    let error = crate::build_command("NoSuchCommand", &mut [0u8; 16]).unwrap_err();
+    let name = Detail::Name(Name::new("NoSuchCommand"));
+    assert_eq!(error.detail(), Some(name));
+}
+
+#[test]
+fn payload_errors_give_the_value_and_what_the_field_takes() {
+    for kind in PayloadKind::ALL {
+        let data = [0u8; frame::MAX_PAYLOAD + 1];
+        let size = kind.size();
+        let short = AnyPayload::parse(kind, &data[..size - 1]).unwrap_err();
+        let expected = Some(Detail::Size {
+            size: size - 1,
+            expected: size,
+        });
+        assert_eq!(short.detail(), expected);
+        for (index, info) in kind.fields().iter().enumerate() {
+            let mut value = AnyPayload::new(kind);
+            let too_long = [0u8; frame::MAX_PAYLOAD + 1];
+            let (bad, expected) = match info.kind {
+                FieldKind::Float => {
+                    let (value, min, max) = (Float(f64::NAN), Float(info.min), Float(info.max));
+                    (
+                        Value::Float(f64::NAN),
+                        Detail::FloatRange { value, min, max },
+                    )
+                }
+                FieldKind::Char => (
+                    Value::Bytes(&too_long),
+                    Detail::Limit {
+                        size: too_long.len(),
+                        max: info.size,
+                    },
+                ),
+                FieldKind::Reserved => (
+                    Value::Bytes(&too_long),
+                    Detail::Size {
+                        size: too_long.len(),
+                        expected: info.size,
+                    },
+                ),
+                _ => {
+                    let (min, max) = (info.min as i64, info.max as i64);
+                    let value = max + 1;
+                    (Value::Int(value), Detail::Range { value, min, max })
+                }
+            };
+            let error = value.set_value(index, bad).unwrap_err();
+            assert_eq!(error.detail(), Some(expected), "{}", info.name);
+        }
+        let count = kind.fields().len();
+        let error = AnyPayload::new(kind)
+            .set_value(count, Value::Int(0))
+            .unwrap_err();
+        let range = Detail::Range {
+            value: count as i64,
+            min: 0,
+            max: count as i64 - 1,
+        };
+        assert_eq!(error.detail(), Some(range));
+    }
+}
+
+#[test]
+fn sentence_errors_say_what_was_found_and_expected() {
+    let mut buf = [0u8; MAX_LENGTH + 8];
+    let n = PahrSentence::default().build(&mut buf).unwrap();
+    let detail = |data: &[u8]| PahrSentence::parse(data).unwrap_err().detail();
+    let prefix = core::str::from_utf8(PREFIX).unwrap();
+    assert_eq!(detail(&[]), Some(Detail::Expected(prefix)));
+    let found = b'X';
+    let expected = PREFIX[0];
+    assert_eq!(detail(b"X"), Some(Detail::Byte { found, expected }));
+    assert_eq!(detail(&buf[..n - 2]), Some(Detail::Expected("CR LF")));
+    let mut bad = buf;
+    bad[n - 3] = if bad[n - 3] == b'0' { b'1' } else { b'0' };
+    match detail(&bad[..n]) {
+        Some(Detail::Checksum { sent, computed }) => assert_ne!(sent, computed),
+        other => panic!("{other:?}"),
+    }
+    bad = buf;
+    bad[n - 5] = b'#';
+    let star = Some(Detail::Expected("*CC before CR LF"));
+    assert_eq!(detail(&bad[..n]), star);
+    let mut long = [b' '; MAX_LENGTH + 8];
+    long[..PREFIX.len()].copy_from_slice(PREFIX);
+    let limit = Some(Detail::Limit {
+        size: long.len(),
+        max: MAX_LENGTH,
+    });
+    assert_eq!(detail(&long), limit);
+    let trailing = Some(Detail::Size {
+        size: n + 1,
+        expected: n,
+    });
+    assert_eq!(detail(&buf[..n + 1]), trailing);
 }
 
 #[test]

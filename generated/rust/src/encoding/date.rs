@@ -3,6 +3,8 @@
 // Do not edit: change the runtime source and run `make generate`.
 //! Calendar dates as the ICD sends them: one float of fractional years.
 
+use crate::error::Detail;
+
 /// A calendar date, sent as a float (fractional years, see [`Date::encoded_f64`]).
 ///
 /// Decoding (the spec's `nearest_calendar_date`) returns the valid calendar date whose encoding
@@ -35,6 +37,26 @@ impl Date {
             && self.year <= Self::YEAR_MAX
             && self.day >= 1
             && self.day <= days_in_month(self.year, self.month)
+    }
+
+    /// What [`Date::encode`] refuses in the date: the year outside the range, else the month,
+    /// else the day outside its month; `None` for a valid date.
+    pub const fn refusal(self) -> Option<Detail> {
+        let (value, min, max) = if self.year < Self::YEAR_MIN || self.year > Self::YEAR_MAX {
+            (
+                self.year as i64,
+                Self::YEAR_MIN as i64,
+                Self::YEAR_MAX as i64,
+            )
+        } else if self.month < 1 || self.month > 12 {
+            (self.month as i64, 1, 12)
+        } else if self.day < 1 || self.day > days_in_month(self.year, self.month) {
+            let days = days_in_month(self.year, self.month);
+            (self.day as i64, 1, days as i64)
+        } else {
+            return None;
+        };
+        Some(Detail::Range { value, min, max })
     }
 
     /// The float sent on the wire (fractional years), or `None` for an invalid date.

@@ -4,6 +4,8 @@
 //! The magnetic declination field: degrees, or a value above a threshold that asks the AHRS to
 //! compute the declination itself.
 
+use crate::error::{Detail, Float};
+
 /// The magnetic declination field: degrees, or a request that the AHRS compute it (the limits
 /// are the constants of [`Declination`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -25,6 +27,15 @@ impl Declination {
         }
     }
 
+    /// What [`Declination::encode`] refuses in the value (degrees outside the range), or
+    /// `None`.
+    pub fn refusal(self) -> Option<Detail> {
+        match self {
+            Declination::Computed => None,
+            Declination::Degrees(degrees) => Self::refuses(f64::from(degrees)),
+        }
+    }
+
     /// The raw value to send (degrees), or `None` for degrees outside the range.
     pub fn encode(self) -> Option<f32> {
         match self {
@@ -37,5 +48,16 @@ impl Declination {
     /// True if a builder accepts `raw` (degrees): inside the range, or above the threshold.
     pub fn accepts(raw: f64) -> bool {
         (Self::MIN..=Self::MAX).contains(&raw) || raw > Self::COMPUTE_ABOVE
+    }
+
+    /// What a builder refuses in `raw` (degrees outside the range), or `None` when it accepts
+    /// it ([`Declination::accepts`]).
+    pub fn refuses(raw: f64) -> Option<Detail> {
+        let detail = Detail::FloatRange {
+            value: Float(raw),
+            min: Float(Self::MIN),
+            max: Float(Self::MAX),
+        };
+        (!Self::accepts(raw)).then_some(detail)
     }
 }

@@ -23,7 +23,8 @@ pub const MIN_PAYLOAD: usize = 1;
 pub const MAX_PAYLOAD: usize = 52;
 /// The smallest frame (bytes).
 pub const MIN_FRAME_SIZE: usize = 9;
-/// The largest frame (bytes).
+/// The largest frame (bytes). A command and the parameter block that follows it need
+/// [`crate::command::MAX_COMMAND_WITH_BLOCK_SIZE`].
 pub const MAX_FRAME_SIZE: usize = 60;
 
 /// Where the fields of a frame sit (byte offsets).

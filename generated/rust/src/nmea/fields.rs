@@ -3,7 +3,7 @@
 
 //! The $PAHR sentence as the spec writes it (Table 6.7, section 6.2): `$PAHR,RRRR.rr,PPP.pp,HHH.hh,TTT.t,V.vv,SSSS*CC<CR><LF>`.
 
-use super::{refuse, scale_round, FieldSpec};
+use super::{refuse, refuse_engineering, scale_round, FieldSpec};
 use crate::error::Result;
 
 /// The identifier after `$`.
@@ -83,11 +83,12 @@ impl PahrSentence {
         usw: u16,
     ) -> Result<PahrSentence> {
         let values = [
-            scale_round(roll_deg, 100.0).ok_or(refuse(0))?,
-            scale_round(pitch_deg, 100.0).ok_or(refuse(1))?,
-            scale_round(heading_deg, 100.0).ok_or(refuse(2))?,
-            scale_round(temperature_degc, 10.0).ok_or(refuse(3))?,
-            scale_round(vdd_v, 100.0).ok_or(refuse(4))?,
+            scale_round(roll_deg, 100.0).ok_or_else(|| refuse_engineering(0, roll_deg))?,
+            scale_round(pitch_deg, 100.0).ok_or_else(|| refuse_engineering(1, pitch_deg))?,
+            scale_round(heading_deg, 100.0).ok_or_else(|| refuse_engineering(2, heading_deg))?,
+            scale_round(temperature_degc, 10.0)
+                .ok_or_else(|| refuse_engineering(3, temperature_degc))?,
+            scale_round(vdd_v, 100.0).ok_or_else(|| refuse_engineering(4, vdd_v))?,
             i64::from(usw),
         ];
         PahrSentence::from_scaled(values)

@@ -260,7 +260,8 @@ impl AhrsParametersLoadRepr {
 
     /// Sets Magnetic declination, Mdec. Error: `out_of_range` for degrees outside the range.
     pub fn set_declination_decoded(&mut self, value: Declination) -> Result<()> {
-        self.declination = value.encode().ok_or(info::DECLINATION.refuse())?;
+        let refused = info::DECLINATION.refuse_because(value.refusal());
+        self.declination = value.encode().ok_or(refused)?;
         Ok(())
     }
 
@@ -271,7 +272,8 @@ impl AhrsParametersLoadRepr {
 
     /// Sets Date (Year, Month, Day) from a calendar date. Error: `out_of_range` for a date that does not exist or lies outside the year range.
     pub fn set_date_decoded(&mut self, date: Date) -> Result<()> {
-        self.date = date.encode().ok_or(info::DATE.refuse())?;
+        let refused = info::DATE.refuse_because(date.refusal());
+        self.date = date.encode().ok_or(refused)?;
         Ok(())
     }
 }

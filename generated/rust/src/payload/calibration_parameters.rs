@@ -178,7 +178,8 @@ impl CalibrationParametersRepr {
 
     /// Sets Date (Year, Month, Day) from a calendar date. Error: `out_of_range` for a date that does not exist or lies outside the year range.
     pub fn set_date_decoded(&mut self, date: Date) -> Result<()> {
-        self.date = date.encode().ok_or(info::DATE.refuse())?;
+        let refused = info::DATE.refuse_because(date.refusal());
+        self.date = date.encode().ok_or(refused)?;
         Ok(())
     }
 }

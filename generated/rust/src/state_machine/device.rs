@@ -6,7 +6,7 @@
 
 use super::{Answer, Event, State, MAX_FIRMWARE_PARTS, OLDER_FIRMWARE, TRANSITIONS};
 use crate::command::Command;
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Result};
 
 impl State {
     /// The state whose spec name is `name`.
@@ -116,9 +116,17 @@ impl Firmware {
         for part in text.split('.') {
             let digits = part.bytes().all(|byte| byte.is_ascii_digit());
             let value = part.parse::<u32>().ok().filter(|_| digits);
-            match (value, parts.get_mut(len)) {
-                (Some(value), Some(slot)) => *slot = value,
-                _ => return Err(Error::at(ErrorKind::Malformed, at)),
+            let expected = match (value, parts.get_mut(len)) {
+                (Some(value), Some(slot)) => {
+                    *slot = value;
+                    None
+                }
+                (None, _) => Some("a decimal number up to 4294967295"),
+                (Some(_), None) => Some("the end of the version"),
+            };
+            if let Some(expected) = expected {
+                let error = Error::at(ErrorKind::Malformed, at);
+                return Err(error.with_detail(Detail::Expected(expected)));
             }
             len += 1;
             at += part.len() + 1;

@@ -17,7 +17,7 @@
 //! # Ok::<(), ilahrs::Error>(())
 //! ```
 
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Float, Result};
 
 mod fields;
 
@@ -26,6 +26,12 @@ pub use fields::{PahrSentence, FIELD_COUNT, IDENTIFIER, MAX_LENGTH, MAX_RATE_HZ,
 
 /// `*`, two checksum digits, CR, LF (bytes).
 const TAIL: usize = 5;
+
+/// [`PREFIX`] as text, for the detail of an error.
+const PREFIX_TEXT: &str = match core::str::from_utf8(PREFIX) {
+    Ok(text) => text,
+    Err(_) => "the identifier",
+};
 
 /// How a field is written.
 #[derive(Clone, Copy)]
@@ -65,6 +71,20 @@ impl FieldSpec {
         }
     }
 
+    /// What the field's text must be, for the detail of an error.
+    const fn grammar(&self) -> &'static str {
+        match self.format {
+            Format::Decimal { .. } => "a decimal number",
+            Format::Hex { .. } => "hex digits",
+        }
+    }
+
+    /// The detail of the scaled value `value` outside the field's range.
+    const fn outside(&self, value: i64) -> Detail {
+        let (min, max) = (self.min, self.max);
+        Detail::Range { value, min, max }
+    }
+
     /// A hex field of 1 to `width` digits, its value in `min..=max`.
     pub(crate) const fn hex(name: &'static str, width: usize, min: i64, max: i64) -> FieldSpec {
         let format = Format::Hex { width };
@@ -98,34 +118,52 @@ impl PahrSentence {
     /// the CR LF end (`truncated`, `bad_length` at [`MAX_LENGTH`], `trailing_data`), `*` and two hex
     /// digits before it (`malformed`), the checksum (`bad_checksum` at its first digit), the
     /// number of fields (`malformed`), then each field's grammar (`malformed`) and range
-    /// (`out_of_range`), naming the field, at its offset.
+    /// (`out_of_range`), naming the field, at its offset. Each error's detail says what was
+    /// found and what was expected.
     pub fn parse(data: &[u8]) -> Result<PahrSentence> {
         let size = data.len();
-        match data.first() {
-            None => return Err(Error::at(ErrorKind::Truncated, 0)),
-            Some(first) if Some(first) != PREFIX.first() => {
-                return Err(Error::at(ErrorKind::BadHeader, 0));
+        let expected = Detail::Expected(PREFIX_TEXT);
+        let truncated = |expected| Error::at(ErrorKind::Truncated, size).with_detail(expected);
+        match (data.first(), PREFIX.first()) {
+            (None, _) => return Err(truncated(expected)),
+            (Some(&found), Some(&start)) if found != start => {
+                let detail = Detail::Byte {
+                    found,
+                    expected: start,
+                };
+                return Err(Error::at(ErrorKind::BadHeader, 0).with_detail(detail));
             }
-            Some(_) => {}
+            _ => {}
         }
         if !PREFIX.starts_with(data.get(..PREFIX.len()).unwrap_or(data)) {
-            return Err(Error::at(ErrorKind::BadHeader, 1));
+            return Err(Error::at(ErrorKind::BadHeader, 1).with_detail(expected));
         }
         if size < PREFIX.len() {
-            return Err(Error::at(ErrorKind::Truncated, size));
+            return Err(truncated(expected));
         }
+        let too_long = |size| {
+            let detail = Detail::Limit {
+                size,
+                max: MAX_LENGTH,
+            };
+            Error::at(ErrorKind::BadLength, MAX_LENGTH).with_detail(detail)
+        };
         let Some(crlf) = data.windows(2).position(|pair| pair == b"\r\n") else {
             if size > MAX_LENGTH {
-                return Err(Error::at(ErrorKind::BadLength, MAX_LENGTH));
+                return Err(too_long(size));
             }
-            return Err(Error::at(ErrorKind::Truncated, size));
+            return Err(truncated(Detail::Expected("CR LF")));
         };
         let end = crlf + 2;
         if end > MAX_LENGTH {
-            return Err(Error::at(ErrorKind::BadLength, MAX_LENGTH));
+            return Err(too_long(end));
         }
         if end < size {
-            return Err(Error::at(ErrorKind::TrailingData, end));
+            let detail = Detail::Size {
+                size,
+                expected: end,
+            };
+            return Err(Error::at(ErrorKind::TrailingData, end).with_detail(detail));
         }
         parse_body(data)
     }
@@ -138,11 +176,12 @@ impl PahrSentence {
     }
 
     /// Checks every field against its range, in sentence order: `out_of_range` naming the
-    /// field (no offset).
+    /// field (no offset), its detail the scaled value and range.
     pub fn validate(&self) -> Result<()> {
-        for (index, (value, spec)) in self.scaled().into_iter().zip(FIELDS.iter()).enumerate() {
+        for (value, spec) in self.scaled().into_iter().zip(FIELDS.iter()) {
             if value < spec.min || value > spec.max {
-                return Err(refuse(index));
+                let error = Error::new(ErrorKind::OutOfRange).with_field(spec.name);
+                return Err(error.with_detail(spec.outside(value)));
             }
         }
         Ok(())
@@ -166,11 +205,16 @@ impl PahrSentence {
         self.write(&mut out);
         let size = out.len;
         if size > MAX_LENGTH {
-            return Err(Error::new(ErrorKind::BadLength));
+            let detail = Detail::Limit {
+                size,
+                max: MAX_LENGTH,
+            };
+            return Err(Error::new(ErrorKind::BadLength).with_detail(detail));
         }
+        let available = buf.len();
         let target = buf
             .get_mut(..size)
-            .ok_or(Error::new(ErrorKind::BufferTooSmall))?;
+            .ok_or(crate::frame::too_small(available, size))?;
         for (slot, byte) in target.iter_mut().zip(scratch.iter()) {
             *slot = *byte;
         }
@@ -204,22 +248,29 @@ impl PahrSentence {
 /// with [`PREFIX`], ends with its first CR LF and holds at most [`MAX_LENGTH`] bytes. The
 /// remaining checks of [`PahrSentence::parse`], in its order, in one pass over the fields.
 pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
+    let malformed =
+        |at, what| Error::at(ErrorKind::Malformed, at).with_detail(Detail::Expected(what));
     let star = match data.len().checked_sub(TAIL) {
         Some(star) if star >= PREFIX.len() && data.get(star) == Some(&b'*') => star,
-        Some(star) => return Err(Error::at(ErrorKind::Malformed, star)),
-        None => return Err(Error::at(ErrorKind::Malformed, 0)),
+        Some(star) => return Err(malformed(star, "*CC before CR LF")),
+        None => return Err(malformed(0, "*CC before CR LF")),
     };
     let sent = match data.get(star + 1..star + 3) {
         Some(&[high, low]) => match (hex_digit(high), hex_digit(low)) {
             (Some(high), Some(low)) => high << 4 | low,
-            _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
+            _ => return Err(malformed(star + 1, "two hex digits")),
         },
-        _ => return Err(Error::at(ErrorKind::Malformed, star + 1)),
+        _ => return Err(malformed(star + 1, "two hex digits")),
     };
     // The fields run to the star.
     let body = data.get(..star).unwrap_or(&[]);
-    if checksum(body.get(1..).unwrap_or(&[])) != sent {
-        return Err(Error::at(ErrorKind::BadChecksum, star + 1));
+    let computed = checksum(body.get(1..).unwrap_or(&[]));
+    if computed != sent {
+        let detail = Detail::Checksum {
+            sent: u16::from(sent),
+            computed: u16::from(computed),
+        };
+        return Err(Error::at(ErrorKind::BadChecksum, star + 1).with_detail(detail));
     }
     #[cfg(not(feature = "small"))]
     if data.len() == canonical::LENGTH {
@@ -241,11 +292,14 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
                     Format::Decimal { decimals, .. } => read_decimal(body, at, decimals),
                     Format::Hex { width } => read_hex(body, at, width),
                 };
-                let error = |kind| Some(Error::at(kind, start).with_field(spec.name));
                 match value {
-                    None => first_error = error(ErrorKind::Malformed),
+                    None => {
+                        let error = Error::at(ErrorKind::Malformed, start).with_field(spec.name);
+                        first_error = Some(error.with_detail(Detail::Expected(spec.grammar())));
+                    }
                     Some(value) if value < spec.min || value > spec.max => {
-                        first_error = error(ErrorKind::OutOfRange);
+                        let error = Error::at(ErrorKind::OutOfRange, start).with_field(spec.name);
+                        first_error = Some(error.with_detail(spec.outside(value)));
                     }
                     Some(value) => *slot = value,
                 }
@@ -259,7 +313,11 @@ pub(crate) fn parse_body(data: &[u8]) -> Result<PahrSentence> {
         at += 1;
     }
     if count != FIELD_COUNT {
-        return Err(Error::at(ErrorKind::Malformed, PREFIX.len()));
+        let detail = Detail::Fields {
+            count,
+            expected: FIELD_COUNT,
+        };
+        return Err(Error::at(ErrorKind::Malformed, PREFIX.len()).with_detail(detail));
     }
     if let Some(error) = first_error {
         return Err(error);
@@ -478,6 +536,28 @@ pub(crate) fn refuse(index: usize) -> Error {
     match FIELDS.get(index) {
         Some(spec) => Error::new(ErrorKind::OutOfRange).with_field(spec.name),
         None => Error::new(ErrorKind::OutOfRange),
+    }
+}
+
+/// The error for the engineering value `value` of field `index`, which cannot be scaled (not
+/// finite, or far too large): its detail the value and the field's range in the same unit.
+pub(crate) fn refuse_engineering(index: usize, value: f64) -> Error {
+    match FIELDS.get(index) {
+        Some(spec) => {
+            let scale = match spec.format {
+                Format::Decimal { decimals, .. } => {
+                    (0..decimals).fold(1.0, |scale, _| scale * 10.0)
+                }
+                Format::Hex { .. } => 1.0,
+            };
+            let detail = Detail::FloatRange {
+                value: Float(value),
+                min: Float(spec.min as f64 / scale),
+                max: Float(spec.max as f64 / scale),
+            };
+            refuse(index).with_detail(detail)
+        }
+        None => refuse(index),
     }
 }
 

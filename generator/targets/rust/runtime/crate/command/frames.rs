@@ -2,7 +2,7 @@
 //! command names that share its code.
 
 use super::Command;
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Name, Result};
 use crate::frame::{self, FrameRepr, MessageType};
 use crate::payload::PayloadKind;
 
@@ -28,11 +28,14 @@ impl Command {
 }
 
 /// Writes the command frame of the command whose ICD name is `name` into `buf`; returns its
-/// size (bytes). Errors: `unknown_command`, `buffer_too_small`.
+/// size (bytes). Errors: `unknown_command` (its detail the name given), `buffer_too_small`.
 pub fn build_command(name: &str, buf: &mut [u8]) -> Result<usize> {
     match Command::from_name(name) {
         Some(command) => command.build(buf),
-        None => Err(Error::new(ErrorKind::UnknownCommand)),
+        None => {
+            let error = Error::new(ErrorKind::UnknownCommand);
+            Err(error.with_detail(Detail::Name(Name::new(name))))
+        }
     }
 }
 
@@ -45,32 +48,96 @@ pub fn decode_command(frame: &[u8]) -> Result<(u8, &'static [Command])> {
     let repr = FrameRepr::parse(frame)?;
     if repr.message_type != MessageType::Command {
         let error = Error::at(ErrorKind::BadMessageType, frame::field::MESSAGE_TYPE.start);
-        return Err(error.with_field("message_type"));
+        let detail = Detail::Expected("a command frame");
+        return Err(error.with_field("message_type").with_detail(detail));
     }
     let code = match repr.payload {
         [code] => *code,
-        _ => {
+        payload => {
             let error = Error::at(ErrorKind::BadLength, frame::field::MESSAGE_LENGTH.start);
-            return Err(error.with_field("message_length"));
+            let detail = Detail::Size {
+                size: payload.len(),
+                expected: 1,
+            };
+            return Err(error.with_field("message_length").with_detail(detail));
         }
     };
     match Command::with_code(code) {
         [] => {
             let error = Error::at(ErrorKind::UnknownCommand, frame::field::PAYLOAD_START);
-            Err(error)
+            Err(error.with_detail(Detail::Code(code)))
         }
         names => Ok((code, names)),
     }
 }
 
 /// Writes `command` and, right after it, its parameter block `parameters` (the payload of a
-/// data frame) into `buf`; returns the size of both (bytes).
+/// data frame) into `buf`; returns the size of both (bytes). The errors come in that order,
+/// and a `buffer_too_small` says what both frames need.
 pub(crate) fn build_with_block(
     command: Command,
     parameters: impl FnOnce(&mut [u8]) -> Result<usize>,
     buf: &mut [u8],
 ) -> Result<usize> {
-    let size = command.build(buf)?;
+    let total = buf.len();
+    let size = match command.build(buf) {
+        Ok(size) => size,
+        Err(error) if error.kind() == ErrorKind::BufferTooSmall => {
+            // The size both need, when the block can be built.
+            let mut scratch = [0u8; frame::MAX_FRAME_SIZE];
+            let needed = command.build(&mut scratch).and_then(|size| {
+                let block = parameters(&mut scratch)?;
+                Ok(size + block)
+            });
+            return Err(needed.map_or(error, |needed| frame::too_small(total, needed)));
+        }
+        Err(error) => return Err(error),
+    };
     let rest = buf.get_mut(size..).unwrap_or(&mut []);
-    Ok(size + parameters(rest)?)
+    parameters(rest).map(|block| size + block).map_err(|error| {
+        match (error.kind(), error.detail()) {
+            (ErrorKind::BufferTooSmall, Some(Detail::Size { expected, .. })) => {
+                frame::too_small(total, size + expected)
+            }
+            _ => error,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{build_with_block, Command};
+    use crate::command::MAX_COMMAND_WITH_BLOCK_SIZE;
+    use crate::error::{Detail, ErrorKind};
+    use crate::frame::{self, FrameRepr, MessageType};
+
+    #[test]
+    fn every_command_with_its_block_fits_max_command_with_block_size() {
+        let mut largest = 0;
+        for command in Command::ALL {
+            let Some(kind) = command.parameter_block() else {
+                continue;
+            };
+            let block = [0u8; frame::MAX_PAYLOAD];
+            let write = |buf: &mut [u8]| {
+                let payload = &block[..kind.size()];
+                let frame = FrameRepr::new(MessageType::Data, payload);
+                build_with_block(command, |rest| frame.build(rest), buf)
+            };
+            let mut buf = [0u8; MAX_COMMAND_WITH_BLOCK_SIZE];
+            let n = write(&mut buf).unwrap();
+            assert_eq!(n, 2 * frame::OVERHEAD + 1 + kind.size());
+            largest = largest.max(n);
+            // A buffer too small for the block, or for the command itself, says what both need.
+            for size in [n - 1, 1] {
+                let error = write(&mut buf[..size]).unwrap_err();
+                assert_eq!(error.kind(), ErrorKind::BufferTooSmall);
+                assert_eq!(error.detail(), Some(Detail::Size { size, expected: n }));
+            }
+        }
+        assert_eq!(
+            largest.max(frame::OVERHEAD + 1),
+            MAX_COMMAND_WITH_BLOCK_SIZE
+        );
+    }
 }

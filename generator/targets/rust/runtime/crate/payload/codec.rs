@@ -5,7 +5,7 @@
 use core::ops::Range;
 
 use super::{AnyPayload, Encoding, PayloadKind, Unit};
-use crate::error::{Error, ErrorKind, Result};
+use crate::error::{Detail, Error, ErrorKind, Float, Result};
 use crate::variant::{Variant, VariantParameter};
 use crate::wire::{self, Field, Number};
 
@@ -179,6 +179,53 @@ impl FieldInfo {
         Error::at(ErrorKind::OutOfRange, self.offset).with_field(self.name)
     }
 
+    /// [`FieldInfo::refuse`] with `detail`, where one is known.
+    pub fn refuse_because(&self, detail: Option<Detail>) -> Error {
+        match detail {
+            Some(detail) => self.refuse().with_detail(detail),
+            None => self.refuse(),
+        }
+    }
+
+    /// The error a builder gives for the bad value `value` of this field: [`FieldInfo::refuse`]
+    /// with the value and what the field takes.
+    pub fn refuse_value(&self, value: Value<'_>) -> Error {
+        let detail = match (self.kind, value) {
+            (FieldKind::Unsigned | FieldKind::Signed, Value::Int(value)) => Detail::Range {
+                value,
+                min: self.min as i64,
+                max: self.max as i64,
+            },
+            (FieldKind::Unsigned | FieldKind::Signed, _) => Detail::Expected("an integer"),
+            (FieldKind::Float, Value::Int(raw)) => {
+                return self.refuse_value(Value::Float(raw as f64))
+            }
+            (FieldKind::Float, Value::Float(raw)) => {
+                let encoding = crate::encoding::refuses(self.encoding, raw);
+                match encoding {
+                    Some(detail) if (self.min..=self.max).contains(&raw) => detail,
+                    _ => Detail::FloatRange {
+                        value: Float(raw),
+                        min: Float(self.min),
+                        max: Float(self.max),
+                    },
+                }
+            }
+            (FieldKind::Float, Value::Bytes(_)) => Detail::Expected("a number"),
+            (FieldKind::Char, Value::Bytes(text)) => Detail::Limit {
+                size: text.len(),
+                max: self.size,
+            },
+            (FieldKind::Char, _) => Detail::Expected("text"),
+            (FieldKind::Reserved, Value::Bytes(bytes)) => Detail::Size {
+                size: bytes.len(),
+                expected: self.size,
+            },
+            (FieldKind::Reserved, _) => Detail::Expected("bytes"),
+        };
+        self.refuse().with_detail(detail)
+    }
+
     /// The field's raw value in `payload` (a whole payload of the field's table).
     pub fn read<'a>(&self, payload: &'a [u8]) -> Value<'a> {
         let at = self.position();
@@ -198,7 +245,8 @@ impl FieldInfo {
     /// Checks `value` the way a builder does: an integer inside the field's range, a finite
     /// float inside its range (and float32), text no longer than the field, reserved bytes of
     /// exactly its size, plus the rules of the field's encoding. Error: `out_of_range` at the
-    /// field's offset, naming the field.
+    /// field's offset, naming the field, with the value and what the field takes
+    /// ([`FieldInfo::refuse_value`]).
     pub fn check(&self, value: Value<'_>) -> Result<()> {
         let ok = match (self.kind, value) {
             (FieldKind::Unsigned | FieldKind::Signed, Value::Int(raw)) => {
@@ -206,7 +254,8 @@ impl FieldInfo {
             }
             (FieldKind::Float, Value::Float(raw)) => {
                 let inside = (self.min..=self.max).contains(&raw);
-                raw.is_finite() && inside && self.encoding_accepts(raw)
+                let encoding = crate::encoding::refuses(self.encoding, raw);
+                raw.is_finite() && inside && encoding.is_none()
             }
             (FieldKind::Float, Value::Int(raw)) => return self.check(Value::Float(raw as f64)),
             (FieldKind::Char, Value::Bytes(text)) => text.len() <= self.size,
@@ -216,13 +265,8 @@ impl FieldInfo {
         if ok {
             Ok(())
         } else {
-            Err(self.refuse())
+            Err(self.refuse_value(value))
         }
-    }
-
-    /// True unless the field's encoding refuses the float `raw`.
-    fn encoding_accepts(&self, raw: f64) -> bool {
-        crate::encoding::accepts(self.encoding, raw)
     }
 
     /// Checks `value` (see [`FieldInfo::check`]) and writes it into `payload`.
@@ -239,7 +283,7 @@ impl FieldInfo {
             (FieldKind::Float, 4, _) => f32::from_value(self, value)?.write(payload, at),
             (FieldKind::Char, _, Value::Bytes(text)) => wire::set_padded(payload, at, text),
             (FieldKind::Reserved, _, Value::Bytes(bytes)) => wire::put(payload, at, bytes),
-            _ => return Err(self.refuse()),
+            _ => return Err(self.refuse_value(value)),
         }
         Ok(())
     }
@@ -248,8 +292,8 @@ impl FieldInfo {
     pub fn int<T: TryFrom<i64>>(&self, value: Value<'_>) -> Result<T> {
         self.check(value)?;
         match value {
-            Value::Int(raw) => T::try_from(raw).map_err(|_| self.refuse()),
-            _ => Err(self.refuse()),
+            Value::Int(raw) => T::try_from(raw).map_err(|_| self.refuse_value(value)),
+            _ => Err(self.refuse_value(value)),
         }
     }
 
@@ -259,7 +303,7 @@ impl FieldInfo {
         match value {
             Value::Float(raw) => Ok(raw as f32),
             Value::Int(raw) => Ok(raw as f32),
-            Value::Bytes(_) => Err(self.refuse()),
+            Value::Bytes(_) => Err(self.refuse_value(value)),
         }
     }
 
@@ -272,22 +316,36 @@ impl FieldInfo {
                 wire::put(&mut out, 0..bytes.len(), bytes);
                 Ok(out)
             }
-            _ => Err(self.refuse()),
+            _ => Err(self.refuse_value(value)),
         }
     }
 
     /// The raw value for the engineering value `value`: scaled, rounded half away from zero for
     /// integer fields, and checked. Errors: `out_of_range` for a value the field cannot hold
-    /// (or a variant-dependent scale without a variant).
+    /// (its detail the raw value and the raw bounds), or a variant-dependent scale without a
+    /// variant.
     pub fn raw_from(&self, value: f64, variant: Option<Variant>) -> Result<Value<'static>> {
         let raw = match self.scale {
-            Some(scale) => scale.raw(value, variant).ok_or(self.refuse())?,
+            Some(scale) => {
+                let no_variant = self
+                    .refuse()
+                    .with_detail(Detail::Expected("a device variant"));
+                scale.raw(value, variant).ok_or(no_variant)?
+            }
             None => value,
         };
         let raw = match self.kind {
-            FieldKind::Unsigned | FieldKind::Signed => {
-                Value::Int(wire::round_half_away(raw).ok_or(self.refuse())?)
-            }
+            FieldKind::Unsigned | FieldKind::Signed => match wire::round_half_away(raw) {
+                Some(raw) => Value::Int(raw),
+                None => {
+                    let detail = Detail::FloatRange {
+                        value: Float(raw),
+                        min: Float(self.min),
+                        max: Float(self.max),
+                    };
+                    return Err(self.refuse().with_detail(detail));
+                }
+            },
             _ => Value::Float(raw),
         };
         self.check(raw)?;
@@ -329,12 +387,16 @@ impl FieldInfo {
 }
 
 /// Checks that a payload of `len` bytes has exactly `size` bytes: `truncated` at `len` when
-/// shorter, `trailing_data` at `size` when longer.
+/// shorter, `trailing_data` at `size` when longer (the detail both sizes).
 pub const fn check_size(len: usize, size: usize) -> Result<()> {
+    let detail = Detail::Size {
+        size: len,
+        expected: size,
+    };
     if len < size {
-        Err(Error::at(ErrorKind::Truncated, len))
+        Err(Error::at(ErrorKind::Truncated, len).with_detail(detail))
     } else if len > size {
-        Err(Error::at(ErrorKind::TrailingData, size))
+        Err(Error::at(ErrorKind::TrailingData, size).with_detail(detail))
     } else {
         Ok(())
     }
@@ -557,9 +619,10 @@ macro_rules! payload_table {
             /// `buf`; returns its size (bytes), or `buffer_too_small`.
             pub fn build(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
                 self.validate()?;
-                let out = buf.get_mut(..SIZE).ok_or($crate::error::Error::new(
-                    $crate::error::ErrorKind::BufferTooSmall,
-                ))?;
+                let available = buf.len();
+                let out = buf
+                    .get_mut(..SIZE)
+                    .ok_or($crate::frame::too_small(available, SIZE))?;
                 self.emit(&mut $View::new_unchecked(out));
                 Ok(SIZE)
             }
@@ -600,7 +663,12 @@ macro_rules! payload_table {
                     $($index => self.$name = $crate::payload::codec::payload_table!(@from_value $kind $type, info::$CONST, value)?,)*
                     _ => {
                         let error = $crate::error::Error::new($crate::error::ErrorKind::OutOfRange);
-                        return Err(error);
+                        let detail = $crate::error::Detail::Range {
+                            value: i64::try_from(index).unwrap_or(i64::MAX),
+                            min: 0,
+                            max: $count - 1,
+                        };
+                        return Err(error.with_detail(detail));
                     }
                 }
                 Ok(())
