@@ -101,3 +101,16 @@ def test_an_empty_tree_prints_zeros(tmp_path: Path) -> None:
     assert data["runtime_files"] == {"count": 0, "total_lines": 0, "largest": None}
     assert data["generated"] == {"total_lines": 0, "bindings": {}}
     assert "largest: none" in run("--root", str(tmp_path))
+
+
+def test_this_repository_keeps_its_limits() -> None:
+    """Templates hold only what the spec decides (at most 5,000 lines in all, none over 300), and no
+    generator module grows past 400 lines: fixed code belongs in a target's runtime/ folder."""
+    data = json.loads(run("--json"))
+    limits = data["limits"]
+    templates = data["templates"]
+    assert templates["total_lines"] <= limits["template_total_lines"]
+    over = [(t["path"], t["lines"]) for t in templates["files"] if t["lines"] > limits["template_lines"]]
+    assert not over, f"templates over {limits['template_lines']} lines: {over}"
+    largest = data["generator_modules"]["largest"]
+    assert largest["lines"] <= limits["module_lines"], f"generator module over the limit: {largest}"
