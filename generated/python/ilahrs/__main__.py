@@ -11,9 +11,12 @@ import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
 
+from .conformance import add_arguments as conformance_arguments
+from .conformance import run as run_conformance
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
 from .encodings import VARIANTS
 from .errors import IlahrsError
+from .misbehave import MISBEHAVIOURS, device_class
 from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
 from .simulate import BAUDRATE, Faults, Line, run_pty, run_tcp
 from .spec import SPEC_VERSION
@@ -51,8 +54,20 @@ def _parser() -> argparse.ArgumentParser:
     sim.add_argument(
         "--garbage-rate", type=_rate, default=0.0, metavar="P", help="probability of noise before a message"
     )
+    sim.add_argument(
+        "--misbehave",
+        choices=sorted(MISBEHAVIOURS),
+        help="test only: break one protocol rule (" + "; ".join(f"{k}: {v}" for k, v in MISBEHAVIOURS.items()) + ")",
+    )
     sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
     commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
+    conformance = commands.add_parser(
+        "conformance",
+        help="run the conformance suite against a runner (--command) or a device (--device)",
+        description="Run the conformance vectors shipped with the package against a runner that speaks the "
+        "runner protocol (--command), or the session flows live against a device (--device).",
+    )
+    conformance_arguments(conformance)
     return parser
 
 
@@ -63,7 +78,7 @@ def _device(args: argparse.Namespace) -> Device:
         if value is not None:
             raw[TIMER_FIELDS[timer][1]] = value
     parameters = ParameterBlock.from_raw(raw)
-    return Device(
+    return device_class(args.misbehave)(
         seed=args.seed,
         variant=args.variant,
         firmware=args.firmware,
@@ -74,6 +89,8 @@ def _device(args: argparse.Namespace) -> Device:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "conformance":
+        return run_conformance(args)
     if args.command == "diagram":
         sys.stdout.write(mermaid())
         return 0

@@ -36,6 +36,12 @@ CODEC = ("errors", "frame", "valuecodec", "codec", "sentence", "commandset", "st
 BEHAVIOUR_TABLES = ("statemachine", "roles")
 BEHAVIOUR = ("diagram", "machine", "synthetic", "motion", "device", "host", "simulate", "serial", "__main__")
 # What a spec must have for the package to be generated.
+# The conformance suite: the harness and its suites (package data, copied byte for byte from the
+# repository's conformance/vectors); with the state machine, the live run against a device and the
+# virtual device's test-only misbehaviours.
+CONFORMANCE = ("conformance",)
+LIVE = ("live", "misbehave")
+VECTORS = Path(__file__).resolve().parents[3] / "conformance" / "vectors"
 REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibration_success", "ack_payload")
 
 LINE_LENGTH = 120
@@ -51,6 +57,9 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     if spec.state_machine is not None:
         files += [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_TABLES]
         files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in BEHAVIOUR]
+        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in LIVE]
+    files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CONFORMANCE]
+    files += [vectors_output(path) for path in sorted(VECTORS.glob("*.json"))]
     files += [
         Output(f"{PACKAGE}/__init__.py", "__init__.py.j2"),
         Output(f"{PACKAGE}/py.typed", "py.typed.j2"),
@@ -59,6 +68,11 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
         Output("python/README.md", "README.md.j2"),
     ]
     return files
+
+
+def vectors_output(path: Path) -> Output:
+    """A suite of conformance/vectors as package data, unchanged (`make check` finds any drift)."""
+    return Output(f"{PACKAGE}/vectors/{path.name}", "vector.json.j2", {"text": path.read_text(encoding="utf-8")})
 
 
 def format(files: dict[str, str]) -> dict[str, str]:
