@@ -124,7 +124,9 @@ def test_junit_failures_carry_request_expected_and_actual(tmp_path: Path) -> Non
 
 
 def test_bad_options_are_one_line_and_status_two(tmp_path: Path) -> None:
-    for args in (["--kinds", "teleport", "--command", "true"], [], ["--suites", "nope", "--command", "true"]):
+    bad = (["--kinds", "teleport", "--command", "true"], [], ["--suites", "nope", "--command", "true"],
+           ["--device", str(tmp_path / "no-such-port")])
+    for args in bad:
         run = subprocess.run([sys.executable, "-m", "ilahrs", "conformance", *args], capture_output=True,
                              text=True, check=False)
         assert run.returncode == 2 and run.stderr.count("\n") == 1 and "Traceback" not in run.stderr, run.stderr
@@ -257,3 +259,18 @@ def test_full_live_run(tmp_path: Path) -> None:
         code, text, report = live(port, tmp_path, "--allow-calibration")
     assert code == 0, text
     assert all(f["status"] == "passed" for f in report["flows"])
+
+
+def test_live_on_a_silent_line_says_so(tmp_path: Path) -> None:
+    master, slave = os.openpty()
+    try:
+        run = subprocess.run(
+            [sys.executable, "-m", "ilahrs", "conformance", "--device", os.ttyname(slave), *FAST],
+            capture_output=True, text=True, check=False, timeout=60,
+        )
+    finally:
+        os.close(master)
+        os.close(slave)
+    assert run.returncode == 1, run.stdout + run.stderr
+    assert "ReadAHRSPar: no ahrs_parameters_read within 1.0 s" in run.stderr
+    assert "parameters not changed" in run.stdout and "Traceback" not in run.stderr

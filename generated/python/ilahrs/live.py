@@ -570,6 +570,8 @@ class LiveReport:
     plans: dict[str, Plan] = field(default_factory=dict)
     restored: str | None = "not started"
     interrupted: bool = False
+    touched: bool = False
+    """Whether the run read the parameters (and so may have changed them)."""
     seconds: float = 0.0
 
     @property
@@ -609,6 +611,7 @@ def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport,
     report.firmware_text = device.firmware()
     report.firmware = _version(report.firmware_text)
     device.original = original
+    report.touched = True
     run_values = dict(original)
     alignment = TIMER_FIELDS["alignment"][1]
     current = original[alignment]
@@ -645,6 +648,8 @@ def _summary(report: LiveReport, out: IO[str]) -> None:
             out.write(f"\nFAILED {case.name}: {case.message}\n")
             out.write("".join(f"  {line}\n" for line in case.detail.splitlines()))
     restored = "parameters restored" if report.restored is None else f"PARAMETERS NOT RESTORED: {report.restored}"
+    if not report.touched:
+        restored = "parameters not changed"
     out.write(
         f"\nlive: {len(report.cases)} flows: {counts['passed']} passed, {counts['failed']} failed, "
         f"{counts['skipped']} skipped in {report.seconds:.1f} s; {restored}\n"
