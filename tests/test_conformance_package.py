@@ -124,8 +124,12 @@ def test_junit_failures_carry_request_expected_and_actual(tmp_path: Path) -> Non
 
 
 def test_bad_options_are_one_line_and_status_two(tmp_path: Path) -> None:
-    bad = (["--kinds", "teleport", "--command", "true"], [], ["--suites", "nope", "--command", "true"],
-           ["--device", str(tmp_path / "no-such-port")])
+    bad: list[list[str]] = [
+        ["--kinds", "teleport", "--command", "true"],
+        [],
+        ["--suites", "nope", "--command", "true"],
+        ["--device", str(tmp_path / "no-such-port")],
+    ]
     for args in bad:
         run = subprocess.run([sys.executable, "-m", "ilahrs", "conformance", *args], capture_output=True,
                              text=True, check=False)
