@@ -6,14 +6,21 @@
 #   make vectors                             rewrite conformance/vectors from conformance/tools/make_vectors.py
 #                                            (conformance/tools/suites/: a module and a case file per suite)
 #
-# The harness is stdlib-only Python; it starts each runner once and prints a binding x suite table.
-# tests/test_conformance*.py run under the root pytest run (test-python).
+#   make test-conformance-example           the example runner of a foreign implementation
+#                                            (conformance/examples/javascript, Node 20) on its kinds
+#
+# The harness is the Python package's (ilahrs.conformance, also `ilahrs conformance` once installed;
+# conformance/harness.py runs it with the repository's defaults); stdlib-only, it starts each runner
+# once and prints a binding x suite table. tests/test_conformance*.py run under the root pytest run
+# (test-python), among them the installed package in a fresh virtual environment and the live mode.
 
 VECTORS ?= conformance/vectors
 BINDINGS ?=
 CONFORMANCE_ARGS ?=
 
-.PHONY: vectors check-vectors
+EXAMPLE_KINDS := checksum,frame_decode,frame_encode,ack
+
+.PHONY: vectors check-vectors test-conformance-example
 
 conformance: setup build
 	$(PY) conformance/harness.py --vectors $(VECTORS) $(if $(BINDINGS),--bindings $(BINDINGS)) $(CONFORMANCE_ARGS)
@@ -26,3 +33,12 @@ check-vectors: setup
 	$(PY) conformance/tools/make_vectors.py --check
 
 CHECK_TARGETS += check-vectors
+
+# A runner in a second language joins with no registration: --kinds holds it to the kinds it does.
+test-conformance-example: setup
+	@command -v node >/dev/null || { echo "test-conformance-example: needs Node.js 20 (node)" >&2; exit 1; }
+	mkdir -p $(BUILD)
+	$(PY) conformance/harness.py --command "node conformance/examples/javascript/runner.mjs" \
+		--name javascript --kinds $(EXAMPLE_KINDS) --junit $(BUILD)/conformance-example.xml
+
+TEST_TARGETS += test-conformance-example

@@ -39,6 +39,12 @@ BEHAVIOUR = ("diagram", "machine", "synthetic", "motion", "device", "host", "sim
 # monitor, calibrate, plot).
 CLI = ("cli_common", "cli_capture", "cli_decode", "cli_device", "cli_monitor", "cli_plot", "cli")
 # What a spec must have for the package to be generated.
+# The conformance suite: the harness and its suites (package data, copied byte for byte from the
+# repository's conformance/vectors); with the state machine, the live run against a device and the
+# virtual device's test-only misbehaviours.
+CONFORMANCE = ("conformance",)
+LIVE = ("live", "misbehave")
+VECTORS = Path(__file__).resolve().parents[3] / "conformance" / "vectors"
 REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibration_success", "ack_payload")
 
 LINE_LENGTH = 120
@@ -55,6 +61,9 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
         files += [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_TABLES]
         files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in BEHAVIOUR]
         files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CLI]
+        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in LIVE]
+    files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CONFORMANCE]
+    files += [vectors_output(path) for path in sorted(VECTORS.glob("*.json"))]
     files += [
         Output(f"{PACKAGE}/__init__.py", "__init__.py.j2"),
         Output(f"{PACKAGE}/py.typed", "py.typed.j2"),
@@ -63,6 +72,11 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
         Output("python/README.md", "README.md.j2"),
     ]
     return files
+
+
+def vectors_output(path: Path) -> Output:
+    """A suite of conformance/vectors as package data, unchanged (`make check` finds any drift)."""
+    return Output(f"{PACKAGE}/vectors/{path.name}", "vector.json.j2", {"text": path.read_text(encoding="utf-8")})
 
 
 def format(files: dict[str, str]) -> dict[str, str]:

@@ -9,9 +9,12 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 
 from .cli import COMMANDS_RUN, OneLineParser, add_subcommands, run
+from .conformance import add_arguments as conformance_arguments
+from .conformance import run as run_conformance
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
 from .encodings import VARIANTS
 from .errors import IlahrsError
+from .misbehave import MISBEHAVIOURS, device_class
 from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
 from .simulate import BAUDRATE, Faults, Line, recorder, run_pty, run_tcp
 from .spec import SPEC_VERSION
@@ -50,10 +53,22 @@ def _parser() -> argparse.ArgumentParser:
     sim.add_argument(
         "--garbage-rate", type=_rate, default=0.0, metavar="P", help="probability of noise before a message"
     )
+    sim.add_argument(
+        "--misbehave",
+        choices=sorted(MISBEHAVIOURS),
+        help="test only: break one protocol rule (" + "; ".join(f"{k}: {v}" for k, v in MISBEHAVIOURS.items()) + ")",
+    )
     sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
     sim.add_argument("--record", metavar="FILE.pcapng", help="record both directions with timestamps as pcapng")
     commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
     add_subcommands(commands)
+    conformance = commands.add_parser(
+        "conformance",
+        help="run the conformance suite against a runner (--command) or a device (--device)",
+        description="Run the conformance vectors shipped with the package against a runner that speaks the "
+        "runner protocol (--command), or the session flows live against a device (--device).",
+    )
+    conformance_arguments(conformance)
     return parser
 
 
@@ -64,7 +79,7 @@ def _device(args: argparse.Namespace) -> Device:
         if value is not None:
             raw[TIMER_FIELDS[timer][1]] = value
     parameters = ParameterBlock.from_raw(raw)
-    return Device(
+    return device_class(args.misbehave)(
         seed=args.seed,
         variant=args.variant,
         firmware=args.firmware,
@@ -77,6 +92,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if args.command in COMMANDS_RUN:
         return run(args)
+    if args.command == "conformance":
+        return run_conformance(args)
     if args.command == "diagram":
         sys.stdout.write(mermaid())
         return 0
