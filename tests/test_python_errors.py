@@ -74,7 +74,8 @@ def _accessor_probe(accessor: str) -> Callable[[Any], object]:
     return method
 
 
-def _probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
+def _codec_probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
+    """Frames, sentences, payload tables and their variant accessors."""
     yield "Frame.parse", ilahrs.Frame.parse
     yield "checksum", ilahrs.checksum
     yield "Frame(message_type=v).build", lambda v: ilahrs.Frame(v, b"x").build()
@@ -95,6 +96,10 @@ def _probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
         yield f"{name}().values(v)", _values_probe(cls)
     for accessor in VARIANT_ACCESSORS:
         yield f"{SOME_PAYLOAD.NAME}.{accessor}(v)", _accessor_probe(accessor)
+
+
+def _command_probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
+    """Commands, parameter blocks, value encodings and the state-machine table."""
     yield "build_command", ilahrs.build_command
     yield "build_command(reserved=v)", lambda v: ilahrs.build_command("Stop", reserved=v)
     yield "build_parameter_block(v)", lambda v: ilahrs.build_parameter_block(v, {})
@@ -117,6 +122,10 @@ def _probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
     yield "command_event(code=v)", lambda v: statemachine.command_event(v, "idle")
     yield "command_event(state=v)", lambda v: statemachine.command_event(0xFE, v)
     yield "timer_transition", statemachine.timer_transition
+
+
+def _session_probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
+    """The device model and the host session."""
     yield "Device(variant=v)", lambda v: Device(variant=v)
     yield "Device(firmware=v)", lambda v: Device(firmware=v)
     yield "Device(firmware_text=v)", lambda v: Device(firmware_text=v)
@@ -139,7 +148,7 @@ def _probes() -> Iterator[tuple[str, Callable[[Any], object]]]:
     yield "Host.setting", lambda v: Host().setting(v)
 
 
-PROBES = list(_probes())
+PROBES = [*_codec_probes(), *_command_probes(), *_session_probes()]
 
 
 @pytest.mark.parametrize(("name", "call"), PROBES, ids=[name for name, _ in PROBES])
