@@ -14,7 +14,7 @@ import math
 import struct
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Self
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
 from .encodings import Variant, declination_is_valid
 from .errors import ErrorKind, IlahrsError
@@ -23,6 +23,10 @@ from .valuecodec import FLOAT32_MAX
 __all__ = ["FLOAT32_MAX", "Buffer", "FieldInfo", "Payload", "PayloadBase", "field_kind"]
 
 Buffer = bytes | bytearray | memoryview
+
+_P = TypeVar("_P")
+"""The class a classmethod is called on (typing.Self, which needs Python 3.11)."""
+_B = TypeVar("_B", bound="PayloadBase")
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,10 +69,10 @@ class Payload(Protocol):
     FIELDS: ClassVar[tuple[FieldInfo, ...]]
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self: ...
+    def parse(cls: type[_P], data: Buffer) -> _P: ...
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self: ...
+    def from_raw(cls: type[_P], values: Mapping[str, object]) -> _P: ...
 
     def build(self) -> bytes: ...
 
@@ -165,7 +169,7 @@ class PayloadBase:
         cls._TEXT = tuple(index for index, info in enumerate(cls.FIELDS) if info.type == "char")
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self:
+    def parse(cls: type[_B], data: Buffer) -> _B:
         """Decode exactly SIZE bytes (truncated / trailing_data otherwise)."""
         if len(data) != cls.SIZE:
             raise _size_error(len(data), cls.SIZE)
@@ -177,7 +181,7 @@ class PayloadBase:
         return cls(*values)
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
+    def from_raw(cls: type[_B], values: Mapping[str, object]) -> _B:
         """Build from raw field values (missing fields take their defaults); checked like `build()`."""
         known = {info.name for info in cls.FIELDS}
         for key in values:

@@ -6,9 +6,11 @@ the frame (Table 6.2, Table 6.3) and its message types, the serial line and the 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from enum import IntEnum, StrEnum
+from enum import IntEnum
 from types import MappingProxyType
 from typing import Final
+
+from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
 SPEC_SHA256: Final = "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"

@@ -5,8 +5,10 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import IntFlag, StrEnum
+from enum import IntFlag
 from typing import Final
+
+from .compat import StrEnum
 
 __all__ = ["USW_FAILURE_FLAGS", "USW_MODE_MASK", "USW_WARNING_FLAGS", "UnitStatusWord", "UswFlag", "UswMode"]
 

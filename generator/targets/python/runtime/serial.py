@@ -26,7 +26,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Mapping
 from types import TracebackType
-from typing import Any, Final, Self
+from typing import Any, Final, TypeVar
 
 from .commands import COMMANDS, build_command
 from .errors import ErrorKind, IlahrsError
@@ -86,6 +86,9 @@ def _as_block(table: str | None, block: Payload | Mapping[str, object]) -> Paylo
     return PAYLOADS[table].from_raw(block)
 
 
+_C = TypeVar("_C", bound="AhrsClient")
+
+
 class AhrsClient:
     """One AHRS on one serial port, driven through a Host session."""
 
@@ -119,7 +122,7 @@ class AhrsClient:
     def close(self) -> None:
         self._port.close()
 
-    def __enter__(self) -> Self:
+    def __enter__(self: _C) -> _C:
         return self
 
     def __exit__(
