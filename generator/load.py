@@ -67,7 +67,18 @@ class LoadedSpec:
 
 
 class _Loader(yaml.SafeLoader):
-    """SafeLoader whose scalars are plain YAML 1.1 values (no dates)."""
+    """SafeLoader whose scalars are plain YAML 1.1 values (no dates), refusing aliases.
+
+    An alias (`*name`) repeats a node; a few nested ones multiply into billions of values (the
+    "billion laughs"), so a spec writes every value out and an alias is an error where it stands.
+    """
+
+    def compose_node(self, parent: Node | None, index: int) -> Node | None:
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()  # type: ignore[no-untyped-call]
+            problem = f"an alias (*{event.anchor}): a spec writes every value out, aliases are refused"
+            raise yaml.composer.ComposerError(None, None, problem, event.start_mark)
+        return super().compose_node(parent, index)
 
 
 # Keep "2014-03-11" a string: dates have no meaning in the spec.
@@ -97,9 +108,17 @@ def _convert(node: Node, path: PathKey, lines: dict[PathKey, int], loader: _Load
 
 def load(path: Path, display_name: str | None = None) -> LoadedSpec:
     """Read and parse `path`. `display_name` is what messages call the file."""
-    raw = path.read_bytes()
     name = display_name if display_name is not None else path.as_posix()
-    loader = _Loader(raw.decode("utf-8"))
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise SpecError(name, None, (), f"cannot read the spec file: {exc.strerror or exc}") from exc
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        bad_line = raw.count(b"\n", 0, exc.start) + 1
+        raise SpecError(name, bad_line, (), f"not UTF-8: byte 0x{raw[exc.start]:02X} at offset {exc.start}") from exc
+    loader = _Loader(text)
     try:
         try:
             root = loader.get_single_node()

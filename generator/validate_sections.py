@@ -128,9 +128,16 @@ def check_status_word(spec: LoadedSpec, sw: dict[str, Any]) -> None:
 
 
 def check_nmea(spec: LoadedSpec, nmea: dict[str, Any]) -> None:
-    """Sentence fields named once, each with an integer range (low first) its digits can print."""
+    """Sentence fields named once, each with an integer range (low first) its digits can print, and
+    their widths alone within the sentence's maximum length ("$ID", a comma before each field, "*hh" CR LF)."""
     unique(spec, nmea["fields"], ("nmea", "fields"), "name", "sentence field")
+    shortest = 1 + len(nmea["identifier"]) + 5
     for i, f in enumerate(nmea["fields"]):
+        shortest += 1 + f["width"]
+        limit = nmea.get("max_length")
+        if limit is not None and shortest > limit:
+            message = f"the sentence is at least {shortest} characters up to this field, above max_length {limit}"
+            raise spec.error(("nmea", "fields", i, "width"), message)
         low, high = f["range"]
         if not (isinstance(low, int) and isinstance(high, int)) or low > high:
             raise spec.error(

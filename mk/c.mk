@@ -48,7 +48,7 @@ FUZZ_TARGETS += fuzz-c
 .PHONY: setup-c build-c lint-c test-c test-c-be test-c-m4 bench-c footprint-c fuzz-c setup-c-arm setup-c-be setup-c-m4 \
         setup-c-valgrind
 
-APT_INSTALL = (apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(1) >/dev/null)
+APT_INSTALL = tools/need $(1)
 
 setup-c:
 	@command -v $(CLANG) >/dev/null && command -v clang++ >/dev/null || $(call APT_INSTALL,clang)

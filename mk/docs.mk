@@ -8,7 +8,7 @@ SVG_FILE := generated/docs/state-machine.svg
 .PHONY: docs check-docs setup-graphviz
 
 setup-graphviz:
-	@command -v dot >/dev/null || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq graphviz >/dev/null; }
+	@command -v dot >/dev/null || tools/need --tool dot graphviz
 
 docs: setup-graphviz
 	@hash=$$(sha256sum $(DOT_FILE) | cut -d' ' -f1); \

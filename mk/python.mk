@@ -14,7 +14,7 @@ PY_LINT_PATHS := generator generated/python tools/generator_stats.py $(wildcard 
 # their module names may repeat across folders.
 PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
 
-.PHONY: lint-python test-python
+.PHONY: lint-python test-python test-python-versions
 
 # The runtime modules of the package (generator/targets/python/runtime) are ruff-checked and
 # format-checked where they are written; mypy checks them as the package's modules, in
@@ -24,7 +24,8 @@ PY_RUNTIME := generator/targets/python/runtime
 lint-python: setup
 	$(VENV)/bin/ruff check $(PY_LINT_PATHS) $(PY_LINT_FOLDERS)
 	$(VENV)/bin/ruff format --check $(PY_RUNTIME) generated/python
-	$(VENV)/bin/mypy --exclude '^$(PY_RUNTIME)/' --exclude '^build/' --exclude '^\.venv/' $(PY_LINT_PATHS)
+	$(VENV)/bin/mypy --exclude '^$(PY_RUNTIME)/' --exclude '(^|/)build/' --exclude '^\.venv/' $(PY_LINT_PATHS)
+	$(VENV)/bin/mypy --python-version 3.10 --cache-dir $(BUILD)/mypy-py310 -p ilahrs
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 
 # tests/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
@@ -34,5 +35,19 @@ test-python: setup
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq tmux tshark >/dev/null; }
 	$(PY) -m pytest tests
 
+# The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
+# version under build/python-versions/ with the pinned pytest and pyserial only, the package
+# installed with pip). The tests are those that use the package and nothing else of the repository:
+# the host session, the simulator's line and its command line end to end (all but the two long pty
+# flows, which the main run covers), the pcapng writer; then the conformance harness runs the Python
+# runner on every vector. Tests that import the generator (test_python_binding, test_device_model)
+# are left out: its pinned dependencies (rpds-py) do not install on 3.10.
+PY_VERSION_TESTS := tests/test_host_session.py tests/test_simulator_line.py tests/test_pcapng.py \
+                    tests/test_simulator_e2e.py -k "not full_flow"
+
+test-python-versions: setup
+	tools/test-python-versions $(BUILD)/python-versions $(PY_VERSION_TESTS)
+
 LINT_TARGETS += lint-python
+TEST_TARGETS += test-python-versions
 FINAL_TEST_TARGETS += test-python

@@ -11,8 +11,7 @@ WS_OUT := $(BUILD)/wireshark
 .PHONY: setup-wireshark test-wireshark
 
 setup-wireshark:
-	@command -v tshark >/dev/null || { apt-get update -qq >/dev/null && \
-		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq tshark >/dev/null; }
+	@command -v tshark >/dev/null || tools/need tshark
 
 test-wireshark: setup setup-wireshark
 	$(PY) tests/wireshark/differential.py generated/wireshark/ilahrs.lua $(WS_OUT)

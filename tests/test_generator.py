@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import copy
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -30,7 +32,9 @@ def test_there_are_invalid_specs() -> None:
 
 @pytest.mark.parametrize("path", INVALID, ids=[p.stem for p in INVALID])
 def test_invalid_spec_is_rejected_with_location(path: Path) -> None:
-    first = path.read_text(encoding="utf-8").splitlines()[0]
+    # (read leniently: one of them is not UTF-8, which is its point)
+    text = path.read_bytes().decode("utf-8", errors="replace")
+    first = text.splitlines()[0]
     assert first.startswith("# expect: "), f"{path.name} must start with '# expect: <message>'"
     expected = first.removeprefix("# expect: ")
     with pytest.raises(SpecError) as info:
@@ -40,12 +44,28 @@ def test_invalid_spec_is_rejected_with_location(path: Path) -> None:
     match = re.match(r"^spec/invalid/[a-z_]+\.yaml:(\d+): ", message)
     assert match, f"no file:line in {message!r}"
     line = int(match.group(1))
-    lines = path.read_text(encoding="utf-8").splitlines()
+    lines = text.splitlines()
     assert 1 <= line <= len(lines)
     # The line named is where the offending value (or its enclosing item) is written.
     last = info.value.path[-1] if info.value.path else None
     if isinstance(last, str) and last not in ("name",):
         assert last in lines[line - 1] or last in " ".join(lines[line - 2 : line + 1]), (line, lines[line - 1])
+
+
+def test_a_missing_spec_file_is_named_not_a_traceback(tmp_path: Path) -> None:
+    missing = tmp_path / "nowhere.yaml"
+    with pytest.raises(SpecError, match=r"nowhere\.yaml: \(top\): cannot read the spec file: No such file"):
+        build_spec(missing)
+    result = subprocess.run(
+        [sys.executable, "-m", "generator", "--spec", str(missing), "--validate-only"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 2
+    assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
+    assert "nowhere.yaml: (top): cannot read the spec file" in result.stderr
 
 
 def test_output_is_reproducible_and_names_the_spec() -> None:

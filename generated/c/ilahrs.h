@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+/* Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /**
@@ -7,7 +7,7 @@
  * tables, the Unit Status Word, $PAHR sentences and a stream decoder, in C99.
  *
  * Spec ilahrs 1.0.0; every protocol fact below comes from spec/ilahrs.yaml
- * (errata E1-E39 there explain each choice where the ICD is unclear).
+ * (errata E1-E40 there explain each choice where the ICD is unclear).
  */
 /**
  * Copy ilahrs.h and ilahrs.c into your project; there is nothing to configure. The library
@@ -85,7 +85,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"
+#define ILAHRS_SPEC_HASH "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
 

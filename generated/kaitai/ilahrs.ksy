@@ -1,13 +1,14 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the spec or the generator and run `make generate`.
 #
 # Kaitai Struct description of the Inertial Labs AHRS Interface Control Document, revision 1.7
-# (2014-03-11), spec ilahrs 1.0.0. The top-level type is one binary frame; each payload table is a
-# type of its own, to parse a frame's payload with once the context says which table it follows
-# (E7). Every type stays within what both the python and the construct targets of ksc 0.11
-# translate: no switch, no parameters on types that are parsed, no enums on value instances. Keys
-# starting with "-ilahrs-" are ignored by the compiler: they name the spec's error kind for a
-# failing `valid` or `contents` check.
+# (2014-03-11), spec ilahrs 1.0.0. The top-level type is one binary frame, `capture` a recording
+# of many (E40); each payload table is a type of its own, to parse a frame's payload with once the
+# context says which table it follows (E7). Every type but the capture's stays within what both
+# the python and the construct targets of ksc 0.11 translate (those carry -ilahrs-not-for:
+# construct, which has no stream position): no switch, no parameters on types that are parsed, no
+# enums on value instances. Keys starting with "-ilahrs-" are ignored by the compiler: they name
+# the spec's error kind for a failing `valid` or `contents` check.
 meta:
   id: ilahrs
   title: 'Inertial Labs AHRS Interface Control Document rev 1.7, binary frame'
@@ -108,6 +109,100 @@ types:
       - id: code
         type: u1
         enum: command
+  capture:
+    doc: |
+      A capture: the messages of a serial line as recorded, to the end of the stream. At each
+      position, a binary frame whose every check passes (header, message type, length, checksum,
+      as the top-level type checks them) is read as one; any other byte is skipped, one at a time
+      (the leftmost-valid-message rule of spec/README). $PAHR sentences and a frame cut off by the
+      end of the capture are skipped as bytes: what Kaitai cannot express is in E40.
+    -ilahrs-not-for: [construct]
+    seq:
+      - id: messages
+        type: capture_message
+        repeat: eos
+  capture_message:
+    doc: |
+      One frame (`frame`, with its payload decoded where the message length alone decides the
+      table) or one skipped byte (`skipped`).
+    -ilahrs-not-for: [construct]
+    seq:
+      - id: frame
+        size: head.message_length + 2
+        type: ilahrs
+        if: is_frame
+      - id: skipped
+        type: u1
+        if: not is_frame
+    instances:
+      start:
+        value: _io.pos
+        doc: Where this message starts (read before anything of it is).
+      head:
+        pos: start
+        type: capture_head
+        if: _io.size - start >= 6
+      plausible:
+        value: >-
+          _io.size - start >= 6 and head.header_0 == 0xAA and head.header_1 == 0x55
+          and (head.message_type == 0 or head.message_type == 1)
+          and head.message_length >= 7 and head.message_length <= 58
+          and _io.size - start >= head.message_length + 2
+      checked_bytes:
+        pos: start + 2
+        size: head.message_length - 2
+        type: byte_sum
+        if: plausible
+      sent_checksum:
+        pos: start + head.message_length
+        type: u2
+        if: plausible
+      is_frame:
+        value: plausible and sent_checksum == checked_bytes.total % 65536
+      command:
+        pos: start + 6
+        type: command_payload
+        if: is_frame and head.message_type == 0 and head.message_length == 7
+      bit_result:
+        pos: start + 6
+        size: 4
+        type: bit_result
+        if: is_frame and head.message_type == 1 and head.message_length == 10
+      calibration_parameters:
+        pos: start + 6
+        size: 22
+        type: calibration_parameters
+        if: is_frame and head.message_type == 1 and head.message_length == 28
+      calibration_run_result:
+        pos: start + 6
+        size: 30
+        type: calibration_run_result
+        if: is_frame and head.message_type == 1 and head.message_length == 36
+      calibration_run_parameters:
+        pos: start + 6
+        size: 6
+        type: calibration_run_parameters
+        if: is_frame and head.message_type == 1 and head.message_length == 12
+      acknowledgement:
+        pos: start + 6
+        size: 2
+        type: acknowledgement
+        if: is_frame and head.message_type == 1 and head.message_length == 8
+  capture_head:
+    doc: |
+      The fixed part of a frame before the payload, unchecked: what `capture_message` looks at to
+      decide.
+    seq:
+      - id: header_0
+        type: u1
+      - id: header_1
+        type: u1
+      - id: message_type
+        type: u1
+      - id: reserved
+        type: u1
+      - id: message_length
+        type: u2
   status_word:
     doc: |
       The Unit Status Word (6.5, Table 6.18, Table 6.19). Failure flags in the low byte, warnings

@@ -4,6 +4,8 @@
 //
 // Writes every file the compiler returns into OUTDIR; any compiler error exits 1 with the
 // compiler's message. No imports between .ksy files are needed, so no importer is given.
+// A type whose `-ilahrs-not-for` key lists LANGUAGE is left out for it: the construct target, for
+// one, has no stream position, which the `capture` type reads (E40).
 "use strict";
 
 const fs = require("fs");
@@ -20,6 +22,11 @@ async function main(argv) {
     throw new Error(`ksc ${compiler.version} has no target ${language}`);
   }
   const ksy = yaml.load(fs.readFileSync(input, "utf8"));
+  for (const [name, type] of Object.entries(ksy.types || {})) {
+    if ((type["-ilahrs-not-for"] || []).includes(language)) {
+      delete ksy.types[name];
+    }
+  }
   const files = await compiler.compile(language, ksy, null, false);
   fs.mkdirSync(outdir, { recursive: true });
   for (const name of Object.keys(files).sort()) {

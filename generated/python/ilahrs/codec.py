@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/codec.py for spec/ilahrs.yaml,
-# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the runtime source and run `make generate`.
 """What every payload class is made of: its field table (FieldInfo), the Payload protocol, and the
 code that decodes, checks and encodes a payload by walking the table (PayloadBase).
@@ -14,7 +14,7 @@ import math
 import struct
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Self
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
 from .encodings import VARIANTS, Variant, declination_is_valid
 from .errors import ErrorKind, IlahrsError, brief, require_bytes, suggest
@@ -54,6 +54,11 @@ def required_variant(variant: Variant | str) -> Variant:
     if found is None:
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "variant", "this value needs the device variant (KG, KA)")
     return found
+
+
+_P = TypeVar("_P")
+"""The class a classmethod is called on (typing.Self, which needs Python 3.11)."""
+_B = TypeVar("_B", bound="PayloadBase")
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,10 +101,10 @@ class Payload(Protocol):
     FIELDS: ClassVar[tuple[FieldInfo, ...]]
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self: ...
+    def parse(cls: type[_P], data: Buffer) -> _P: ...
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self: ...
+    def from_raw(cls: type[_P], values: Mapping[str, object]) -> _P: ...
 
     def build(self) -> bytes: ...
 
@@ -200,7 +205,7 @@ class PayloadBase:
         cls._TEXT = tuple(index for index, info in enumerate(cls.FIELDS) if info.type == "char")
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self:
+    def parse(cls: type[_B], data: Buffer) -> _B:
         """Decode exactly SIZE bytes (truncated / trailing_data otherwise; MALFORMED for a value that
         is not a byte string)."""
         data = require_bytes(data, "data")
@@ -214,7 +219,7 @@ class PayloadBase:
         return cls(*values)
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
+    def from_raw(cls: type[_B], values: Mapping[str, object]) -> _B:
         """Build from raw field values (missing fields take their defaults); checked like `build()`."""
         if not isinstance(values, Mapping):
             raise IlahrsError(ErrorKind.MALFORMED, None, None, f"{brief(values)} is not a mapping of field values")

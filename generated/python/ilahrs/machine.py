@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/machine.py for spec/ilahrs.yaml,
-# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the runtime source and run `make generate`.
 """The device's state table, interpreted: the types of its rows and the lookups every reader of
 the table makes (the device model and the host session). `ilahrs.statemachine` holds the spec's
@@ -111,4 +111,4 @@ class Machine:
 
     def mermaid(self) -> str:
         """The table as a Mermaid state diagram (`ilahrs diagram`)."""
-        return diagram.mermaid(self.initial, self.rows())
+        return diagram.mermaid(self.initial, self.rows(), {name: info.mode for name, info in self.states.items()})

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/sentence.py for spec/ilahrs.yaml,
-# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the runtime source and run `make generate`.
 """The code of an NMEA 0183 sentence class: parse, check and build, read from the class's field
 table (`_SPEC`: name, format, width, decimals, bounds and unit of each value), its identifier and
@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import TYPE_CHECKING, ClassVar, Final, Self
+from typing import TYPE_CHECKING, ClassVar, Final, TypeVar
 
 from .errors import ErrorKind, IlahrsError, brief, require_bytes
 
@@ -133,6 +133,10 @@ def _values(parts: list[bytes], fields: tuple[SentenceField, ...], offset: int) 
     return values
 
 
+_S = TypeVar("_S", bound="SentenceBase")
+"""The class `parse` is called on (typing.Self, which needs Python 3.11)."""
+
+
 class SentenceBase:
     """The code of a sentence class: `parse`, `check` and `build`."""
 
@@ -148,7 +152,7 @@ class SentenceBase:
         def __init__(self, *values: int) -> None: ...
 
     @classmethod
-    def parse(cls, text: str | bytes | bytearray | memoryview) -> Self:
+    def parse(cls: type[_S], text: str | bytes | bytearray | memoryview) -> _S:
         """Decode one sentence, "$" through CR LF; IlahrsError in the order of spec/README.md."""
         data = _as_bytes(text)
         prefix = f"${cls.IDENTIFIER},".encode("ascii")

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/serial.py for spec/ilahrs.yaml,
-# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the runtime source and run `make generate`.
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
@@ -32,7 +32,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from types import TracebackType
-from typing import Any, Final, Self, TypeVar
+from typing import Any, Final, TypeVar
 
 from .commands import COMMAND_SET, COMMANDS, build_command
 from .encodings import CalibrationType
@@ -114,6 +114,9 @@ def _as_block(table: str | None, block: Payload | Mapping[str, object]) -> Paylo
     return PAYLOADS[table].from_raw(block)
 
 
+_C = TypeVar("_C", bound="AhrsClient")
+
+
 class AhrsClient:
     """One AHRS on one serial port, driven through a Host session."""
 
@@ -156,7 +159,7 @@ class AhrsClient:
     def close(self) -> None:
         self._port.close()
 
-    def __enter__(self) -> Self:
+    def __enter__(self: _C) -> _C:
         return self
 
     def __exit__(

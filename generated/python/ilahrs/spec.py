@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -6,12 +6,14 @@ the frame (Table 6.2, Table 6.3) and its message types, the serial line and the 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from enum import IntEnum, StrEnum
+from enum import IntEnum
 from types import MappingProxyType
 from typing import Final
 
+from .compat import StrEnum
+
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f"
+SPEC_SHA256: Final = "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8"
 ICD_DATE: Final = (2014, 3, 11)
 """The date of Inertial Labs AHRS Interface Control Document, rev 1.7: (year, month, day)."""
 

@@ -1,13 +1,14 @@
-# Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The Unit Status Word (6.5, Table 6.18, Table 6.19)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import IntFlag, StrEnum
+from enum import IntFlag
 from typing import Final
 
+from .compat import StrEnum
 from .errors import ErrorKind, IlahrsError, brief
 
 __all__ = ["USW_FAILURE_FLAGS", "USW_MODE_MASK", "USW_WARNING_FLAGS", "UnitStatusWord", "UswFlag", "UswMode"]

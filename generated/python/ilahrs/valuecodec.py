@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/valuecodec.py for spec/ilahrs.yaml,
-# spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 # Do not edit: change the runtime source and run `make generate`.
 """The value encodings the ICD defines: the date float, the declination that asks the AHRS to
 compute it, and the calibration success byte. `ilahrs.encodings` describes each one with the

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 #![doc = include_str!("../README.md")]
@@ -39,7 +39,7 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f";
+pub const SPEC_HASH: &str = "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
 /// True when numbers are sent most significant byte first (the spec's `byte_order`).

@@ -54,15 +54,48 @@ def send_text(t: Transition) -> str:
     return ", ".join(t.send) if t.send else "nothing"
 
 
-def edges(sm: StateMachine) -> list[dict[str, Any]]:
-    """The diagram's arrows: one per (from, to, firmware condition), labelled with one line per
-    answer listing the events that give it (the folding of `ilahrs diagram`, shared with the Python
-    runtime). Wildcard rows read `any other command`."""
+def _wrap(line: str, width: int = 28) -> str:
+    """A label line broken after a comma where it passes `width` characters (Graphviz's newline)."""
+    out = ""
+    current = ""
+    for part in line.split(", "):
+        if current and len(current) + 2 + len(part) > width:
+            out += current + ",\\n"
+            current = part
+        else:
+            current = f"{current}, {part}" if current else part
+    return out + current
+
+
+def drawing(sm: StateMachine) -> dict[str, list[dict[str, Any]]]:
+    """The state diagram: the arrows of `ilahrs diagram` (one per from, to and firmware condition,
+    labelled with one line per answer and the events giving it; wildcard rows read `any other
+    command`; a transition every state of a mode has drawn once, from a note standing for any state
+    of the mode), with each state's self-loop written in its box (`stays`) instead of drawn.
+    `states`: name, mode, stays; `notes`: name, mode; `arrows`: from, to, label, legacy."""
     rows = [(t.state, t.event, t.to, t.send, t.wildcard, t.firmware_before) for t in sm.transitions]
-    return [
-        {"from": e.state, "to": e.to, "label": e.label("\\n"), "legacy": e.firmware is not None}
-        for e in diagram.fold(rows)
-    ]
+    taken = {st.name for st in sm.states}
+    notes: dict[str, str] = {}
+    stays: dict[str, list[str]] = {}
+    arrows = []
+    for e in diagram.fold(rows, modes={st.name: st.mode for st in sm.states}):
+        if e.whole_mode and e.state not in notes:
+            name = f"mode_{e.state}"
+            while name in taken:
+                name += "_"
+            notes[e.state] = name
+            taken.add(name)
+        lines = [_wrap(line) for line in e.label("\n").split("\n")]
+        if e.state == e.to and not e.whole_mode and e.firmware is None:
+            stays.setdefault(e.state, []).extend(lines)
+            continue
+        origin = notes[e.state] if e.whole_mode else e.state
+        arrows.append({"from": origin, "to": e.to, "label": "\\n".join(lines), "legacy": e.firmware is not None})
+    return {
+        "states": [{"name": st.name, "mode": st.mode, "stays": "\\n".join(stays.get(st.name, []))} for st in sm.states],
+        "notes": [{"name": name, "mode": mode} for mode, name in notes.items()],
+        "arrows": arrows,
+    }
 
 
 FILTERS: dict[str, Callable[..., Any]] = {
@@ -70,5 +103,5 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "wire_type": wire_type,
     "scale_text": scale_text,
     "send_text": send_text,
-    "edges": edges,
+    "drawing": drawing,
 }

@@ -7,6 +7,7 @@ an offset (fields carry `.offset`, the frame `.payload_offset` and `.length_bias
 from __future__ import annotations
 
 import re
+from collections import Counter
 from dataclasses import dataclass
 
 import yaml
@@ -288,6 +289,13 @@ def check_names(spec: Spec) -> None:
         raise ValueError(f"kaitai: types and enums share the names {clashes}")
 
 
+def length_decided(spec: Spec) -> list[tuple[Payload, int]]:
+    """(table, message length) of the payload tables no other table shares a size with: a data frame
+    of that length can only hold that table (sizes shared by several tables need the context, E7)."""
+    sizes = Counter(p.size for p in spec.payloads)
+    return [(p, p.size + spec.frame.length_bias) for p in spec.payloads if sizes[p.size] == 1]
+
+
 FILTERS = {
     "ksy_id": ksy_id,
     "ksy_type": ksy_type,
@@ -314,6 +322,7 @@ FILTERS = {
 }
 
 GLOBALS = {
+    "length_decided": length_decided,
     "command_codes": command_codes,
     "variant_values": variant_values,
     "CHAR_ENCODING": CHAR_ENCODING,

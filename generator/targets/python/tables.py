@@ -96,7 +96,9 @@ def mermaid(spec: Spec) -> str:
     """The state machine as a Mermaid state diagram, as `ilahrs diagram` prints it."""
     sm = _machine(spec)
     rows = [*transitions(spec), *transitions(spec, True)]
-    return diagram.mermaid(sm.initial, [(t.state, t.event, t.to, t.send, t.wildcard, t.firmware_before) for t in rows])
+    modes = {st.name: st.mode for st in sm.states}
+    table = [(t.state, t.event, t.to, t.send, t.wildcard, t.firmware_before) for t in rows]
+    return diagram.mermaid(sm.initial, table, modes)
 
 
 def quantity(field: Field) -> tuple[str, ...]:

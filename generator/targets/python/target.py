@@ -27,9 +27,9 @@ GLOBALS = {**TABLE_GLOBALS, "roles": roles, "encoding_properties": ENCODING_PROP
 PACKAGE = "python/ilahrs"
 # Generated modules: the spec's facts, from the bottom of the import graph up.
 TABLES = ("spec", "encodings", "status", "payloads", "commands", "nmea")
-# Runtime modules: the codec (errors, frame, value encodings, payloads, sentences, commands) and the
-# stream decoder.
-CODEC = ("errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream")
+# Runtime modules: what Python 3.10 lacks (compat), the codec (errors, frame, value encodings,
+# payloads, sentences, commands) and the stream decoder.
+CODEC = ("compat", "errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream")
 # The protocol's behaviour: the state-machine table and the roles of the commands (generated), the
 # device model and the host session (sans-I/O), then the edge: the virtual device on a pty or loopback
 # socket, the serial client, the command line.
@@ -84,7 +84,7 @@ def format(files: dict[str, str]) -> dict[str, str]:
     with settings that do not depend on the machine."""
 
     def command(paths: list[Path]) -> list[str]:
-        settings = ["--isolated", "--no-cache", f"--line-length={LINE_LENGTH}", "--target-version=py311"]
+        settings = ["--isolated", "--no-cache", f"--line-length={LINE_LENGTH}", "--target-version=py310"]
         return [tool("ruff"), "format", *settings, *map(str, paths)]
 
     return run_formatter(files, (".py", ".md"), command)

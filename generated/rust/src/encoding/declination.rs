@@ -1,5 +1,5 @@
 // Copied from generator/targets/rust/runtime/crate/encoding/declination.rs for spec/ilahrs.yaml,
-// spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 // Do not edit: change the runtime source and run `make generate`.
 //! The magnetic declination field: degrees, or a value above a threshold that asks the AHRS to
 //! compute the declination itself.

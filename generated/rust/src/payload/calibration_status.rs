@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash af3b7671e6a989940ee52f3a699e8d4497531bc68066f57c0c5f2b4e271b050f.
+// Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Table 6.17, Calibration results read back (52 bytes, E2).

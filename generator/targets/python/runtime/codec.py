@@ -11,7 +11,7 @@ import math
 import struct
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Protocol, Self
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
 from .encodings import VARIANTS, Variant, declination_is_valid
 from .errors import ErrorKind, IlahrsError, brief, require_bytes, suggest
@@ -51,6 +51,11 @@ def required_variant(variant: Variant | str) -> Variant:
     if found is None:
         raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "variant", "this value needs the device variant (KG, KA)")
     return found
+
+
+_P = TypeVar("_P")
+"""The class a classmethod is called on (typing.Self, which needs Python 3.11)."""
+_B = TypeVar("_B", bound="PayloadBase")
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,10 +98,10 @@ class Payload(Protocol):
     FIELDS: ClassVar[tuple[FieldInfo, ...]]
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self: ...
+    def parse(cls: type[_P], data: Buffer) -> _P: ...
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self: ...
+    def from_raw(cls: type[_P], values: Mapping[str, object]) -> _P: ...
 
     def build(self) -> bytes: ...
 
@@ -197,7 +202,7 @@ class PayloadBase:
         cls._TEXT = tuple(index for index, info in enumerate(cls.FIELDS) if info.type == "char")
 
     @classmethod
-    def parse(cls, data: Buffer) -> Self:
+    def parse(cls: type[_B], data: Buffer) -> _B:
         """Decode exactly SIZE bytes (truncated / trailing_data otherwise; MALFORMED for a value that
         is not a byte string)."""
         data = require_bytes(data, "data")
@@ -211,7 +216,7 @@ class PayloadBase:
         return cls(*values)
 
     @classmethod
-    def from_raw(cls, values: Mapping[str, object]) -> Self:
+    def from_raw(cls: type[_B], values: Mapping[str, object]) -> _B:
         """Build from raw field values (missing fields take their defaults); checked like `build()`."""
         if not isinstance(values, Mapping):
             raise IlahrsError(ErrorKind.MALFORMED, None, None, f"{brief(values)} is not a mapping of field values")

@@ -108,4 +108,4 @@ class Machine:
 
     def mermaid(self) -> str:
         """The table as a Mermaid state diagram (`ilahrs diagram`)."""
-        return diagram.mermaid(self.initial, self.rows())
+        return diagram.mermaid(self.initial, self.rows(), {name: info.mode for name, info in self.states.items()})

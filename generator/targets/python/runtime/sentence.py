@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import TYPE_CHECKING, ClassVar, Final, Self
+from typing import TYPE_CHECKING, ClassVar, Final, TypeVar
 
 from .errors import ErrorKind, IlahrsError, brief, require_bytes
 
@@ -130,6 +130,10 @@ def _values(parts: list[bytes], fields: tuple[SentenceField, ...], offset: int) 
     return values
 
 
+_S = TypeVar("_S", bound="SentenceBase")
+"""The class `parse` is called on (typing.Self, which needs Python 3.11)."""
+
+
 class SentenceBase:
     """The code of a sentence class: `parse`, `check` and `build`."""
 
@@ -145,7 +149,7 @@ class SentenceBase:
         def __init__(self, *values: int) -> None: ...
 
     @classmethod
-    def parse(cls, text: str | bytes | bytearray | memoryview) -> Self:
+    def parse(cls: type[_S], text: str | bytes | bytearray | memoryview) -> _S:
         """Decode one sentence, "$" through CR LF; IlahrsError in the order of spec/README.md."""
         data = _as_bytes(text)
         prefix = f"${cls.IDENTIFIER},".encode("ascii")
