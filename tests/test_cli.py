@@ -20,6 +20,7 @@ from pathlib import Path
 
 import pytest
 
+from ilahrs import Frame, build_command
 from ilahrs.cli_common import field_columns
 from ilahrs.cli_decode import BASE_COLUMNS
 from ilahrs.pcapng import Direction, read
@@ -181,7 +182,9 @@ def test_send_params_and_calibrate_change_the_device(tmp_path: Path) -> None:
         status = ilahrs("send", sim.port, "GetClbRes")
         assert status.returncode == 0 and "calibration_status calibration_type=1 runs_used=1" in status.stdout
         assert "bit_result" in ilahrs("send", sim.port, "GetBIT").stdout
-        assert ilahrs("send", sim.port, "AHRScont3").stdout.strip() == "AHRScont3: acknowledged"
+        sent = Frame.parse(build_command("AHRScont3"))
+        acknowledged = ilahrs("send", sim.port, "AHRScont3").stdout.strip()
+        assert acknowledged == f"acknowledged AHRScont3 (checksum {sent.checksum:#06x})"
         time.sleep(1.5)
         sim.stop()
         last = sim.entries()[-1]

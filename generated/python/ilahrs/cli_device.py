@@ -24,7 +24,7 @@ from .payloads import PAYLOADS
 from .pcapng import Direction, PcapngWriter
 from .roles import ACCEPT, FINISH, LOAD_PARAMETERS, START_RUN, START_RUNS, STOP
 from .spec import SERIAL_LINE
-from .statemachine import ACK, CALIBRATION_TYPES, STATES, TIMER_EVENTS, command_event
+from .statemachine import CALIBRATION_TYPES, STATES, TIMER_EVENTS, command_event
 from .statemachine import lookup as transition
 
 if TYPE_CHECKING:
@@ -218,8 +218,7 @@ def send(port: str, baud: int, command: str, assignments: Sequence[str], *, vari
         except IlahrsError as exc:
             raise _failure(port, name, exc) from exc
         if not answers:
-            acknowledged = COMMANDS[name].response == ACK
-            print(f"{name}: {'acknowledged' if acknowledged else 'sent (the command has no answer)'}", file=out)
+            print(f"{name}: sent (the command has no answer)", file=out)
         for event in answers:
             if not isinstance(event, ProtocolError):
                 print(_event_line(event, variant), file=out)
