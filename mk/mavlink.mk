@@ -28,7 +28,7 @@ MAV_OS := -Os -DILAHRS_OPTIMIZE_SIZE=1
 MAV_O2 := -O2
 MAV_ARM_CC ?= arm-none-eabi-gcc
 MAV_ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sections
-MAV_APT = (apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(1) >/dev/null)
+
 
 MAV_COMPARE = $(PY) bench/mavlink/compare.py --bench-o2 $(MAV_OUT)/bench_o2 --bench-os $(MAV_OUT)/bench_os \
 	--ilahrs generated/c --mavlink $(MAV_OUT)/c/bench --cc $(MAV_ARM_CC) --flags "$(MAV_ARM_FLAGS)"
@@ -44,8 +44,8 @@ $(MAV_STAMP): bench/mavlink/requirements.txt $(VENV)/.stamp
 	touch $@
 
 setup-mavlink: $(MAV_STAMP)
-	@command -v valgrind >/dev/null || $(call MAV_APT,valgrind)
-	@command -v $(MAV_ARM_CC) >/dev/null || $(call MAV_APT,gcc-arm-none-eabi libnewlib-arm-none-eabi)
+	@command -v valgrind >/dev/null || tools/need valgrind
+	@command -v $(MAV_ARM_CC) >/dev/null || tools/need --tool $(MAV_ARM_CC) gcc-arm-none-eabi libnewlib-arm-none-eabi
 
 $(MAV_DIALECT): bench/mavlink/dialect.py $(MAV_STAMP)
 	@mkdir -p $(@D)

@@ -31,8 +31,8 @@ lint-python: setup
 # tests/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
 # are installed from Debian's packages when missing.
 test-python: setup
-	@command -v tmux >/dev/null && command -v tshark >/dev/null || { apt-get update -qq >/dev/null && \
-		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq tmux tshark >/dev/null; }
+	@command -v tmux >/dev/null || tools/need tmux
+	@command -v tshark >/dev/null || tools/need tshark
 	$(PY) -m pytest tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
