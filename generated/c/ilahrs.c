@@ -2547,7 +2547,7 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         return ILAHRS_ERR_MALFORMED;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
-        sum ^= p[k];
+        sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     for (k = 0;; k++) {
