@@ -103,13 +103,10 @@ def test_python_filters() -> None:
     assert py_filters.tuple_literal(["x"]) == "('x',)"
 
 
-def test_c_tables_fit_their_packing() -> None:
-    """The C target's generation-time facts: the longest in-range $PAHR sentence, string pools that
-    store a name ending another name as its tail, and a field table packed into the widths chosen."""
-    import itertools
+def test_c_longest_sentence() -> None:
+    """The C target's longest in-range $PAHR sentence; a field too wide for the maximum is refused."""
     from dataclasses import replace
 
-    from generator.targets.c import tables
     from generator.targets.c import target as c_target
 
     spec = build_spec()
@@ -119,6 +116,15 @@ def test_c_tables_fit_their_packing() -> None:
     with pytest.raises(ValueError, match="above the maximum"):
         c_target.outputs(replace(spec, nmea=wide))
 
+
+def test_c_string_pools_share_tails() -> None:
+    """C string pools store a name ending another name as its tail; part numbers and char defaults
+    stay in pools of their own."""
+    from dataclasses import replace
+
+    from generator.targets.c import tables
+
+    spec = build_spec()
     t = tables.build_tables(spec)
     for pool in t.pools.values():
         if not pool.strings:
@@ -140,8 +146,16 @@ def test_c_tables_fit_their_packing() -> None:
     assert t2.pools["text"].strings == ["X1"] and "X1" not in t2.pools["field"].offsets
     assert [r.text for r in t2.defaults if r.text >= 0] == [0]
 
-    # One pool for the names of the accessors: each section lists its kind in enum order, the event
-    # section continues the command section, and a USW bit without a flag has the empty name.
+
+def test_c_name_sections() -> None:
+    """One pool for the names of the accessors: each section lists its kind in enum order, the event
+    section continues the command section, and a USW bit without a flag has the empty name."""
+    import itertools
+
+    from generator.targets.c import tables
+
+    spec = build_spec()
+    t = tables.build_tables(spec)
     sections = {s.kind: s for s in t.name_sections}
     assert [s.first for s in t.name_sections] == [0, *itertools.accumulate(len(s.names) for s in t.name_sections)][:-1]
     assert sections["command"].names == tuple(c.name for c in spec.commands)
@@ -153,6 +167,14 @@ def test_c_tables_fit_their_packing() -> None:
     distinct = {n for s in t.name_sections for n in s.names}
     assert "" in sections["flag"].names and t.pools["name"].size < sum(len(n) + 1 for n in distinct)
 
+
+def test_c_tables_fit_their_packing() -> None:
+    """The C field table packed into the widths chosen, and rows of small tables in the smallest
+    types that hold them."""
+    from generator.targets.c import tables
+    from generator.targets.c import target as c_target
+
+    t = tables.build_tables(build_spec())
     fp = c_target.field_packing(t)
     width = {"uint8_t": 8, "uint16_t": 16, "uint32_t": 32}
     assert t.pools["field"].size <= 1 << (width[fp.name_type] - fp.type_bits)

@@ -89,6 +89,24 @@ def link(cc: str, flags: list[str], obj: Path, entries: list[str], elf: Path) ->
          *keep, str(obj), "-o", str(elf), "-lc", "-lgcc"])
 
 
+def type_sizes(cc: str, flags: list[str], include: Path, out: Path) -> dict[str, int]:
+    """Decoder state and message sizes, from the compiler: ilahrs_sizeof_stream and _message."""
+    probe = out / "sizes.c"
+    probe.write_text(
+        '#include "ilahrs.h"\n'
+        "const char ilahrs_sizeof_stream[sizeof(ilahrs_stream_t)] = {0};\n"
+        "const char ilahrs_sizeof_message[sizeof(ilahrs_message_t)] = {0};\n",
+        encoding="utf-8",
+    )
+    probe_obj = out / "sizes.o"
+    run([cc, *flags, f"-I{include}", "-c", str(probe), "-o", str(probe_obj)])
+    return {
+        parts[3]: int(parts[1], 16)
+        for parts in (line.split() for line in run([tool(cc, "nm"), "-S", str(probe_obj)]).splitlines())
+        if len(parts) == 4
+    }
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--cc", default="arm-none-eabi-gcc")
@@ -117,21 +135,7 @@ def main() -> int:
 
     public = public_of(obj)
 
-    # Decoder state and message sizes, from the compiler.
-    probe = out / "sizes.c"
-    probe.write_text(
-        '#include "ilahrs.h"\n'
-        "const char ilahrs_sizeof_stream[sizeof(ilahrs_stream_t)] = {0};\n"
-        "const char ilahrs_sizeof_message[sizeof(ilahrs_message_t)] = {0};\n",
-        encoding="utf-8",
-    )
-    probe_obj = out / "sizes.o"
-    run([args.cc, *flags, f"-I{args.include}", "-c", str(probe), "-o", str(probe_obj)])
-    sizes = {
-        parts[3]: int(parts[1], 16)
-        for parts in (line.split() for line in run([tool(args.cc, "nm"), "-S", str(probe_obj)]).splitlines())
-        if len(parts) == 4
-    }
+    sizes = type_sizes(args.cc, flags, args.include, out)
 
     print(f"compiler: {run([args.cc, '--version']).splitlines()[0]}")
     print(f"flags: {args.flags}")

@@ -1427,6 +1427,14 @@ static const struct {
 #define OPAQUE(x) ((void)0)
 #endif
 
+/* FAST: compiled for speed (optimizing, not for size). A few hot loops then take a word at a time;
+ * compiled for size they take a byte at a time, in less code. The answers are the same. */
+#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#define FAST 1
+#else
+#define FAST 0
+#endif
+
 /* Copy n bytes front to back: right for separate buffers and for moves to a lower address
  * within one buffer. */
 static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
@@ -1603,12 +1611,40 @@ const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind)
 
 /* ---- Frame ----------------------------------------------------------------------------- */
 
-/* The sum of the bytes, modulo 2^32 (so modulo the checksum's width too). */
+/* The sum of the bytes, modulo 2^32 (so modulo the checksum's width too). Compiled for speed,
+ * eight bytes at a time: the even and the odd bytes of each word add up in four 16-bit lanes, which
+ * 128 words (2 * 128 * 255 < 2^16: 127 whole words and a last partial one) cannot overflow; a sum of
+ * bytes does not depend on their order, so neither does it on the host's byte order. */
 static uint32_t sum_bytes(const uint8_t *data, size_t len)
 {
     uint32_t sum = 0;
-    size_t i;
-    for (i = 0; i < len; i++) {
+    size_t i = 0;
+#if FAST
+    const uint64_t lanes = 0x00FF00FF00FF00FFull;
+    const uint16_t one = 1;
+    uint8_t little; /* the host's byte order: 1 if little-endian */
+    memcpy(&little, &one, 1);
+    while (len - i >= 8) {
+        uint64_t acc = 0;
+        uint64_t w;
+        size_t words = (len - i) / 8 < 127 ? (len - i) / 8 : 127;
+        for (; words != 0; words--, i += 8) {
+            memcpy(&w, data + i, 8);
+            acc += (w & lanes) + ((w >> 8) & lanes);
+        }
+        if (len - i < 8 && len != i) {
+            /* The last 8 bytes, of which the first 8 - (len - i) are summed already. */
+            unsigned drop = 8u * (8u - (unsigned)(len - i));
+            memcpy(&w, data + len - 8, 8);
+            w = little ? w >> drop : w << drop;
+            acc += (w & lanes) + ((w >> 8) & lanes);
+            i = len;
+        }
+        acc = (acc & 0x0000FFFF0000FFFFull) + ((acc >> 16) & 0x0000FFFF0000FFFFull);
+        sum += (uint32_t)acc + (uint32_t)(acc >> 32);
+    }
+#endif
+    for (; i < len; i++) {
         sum += data[i];
     }
     return sum;
@@ -2410,41 +2446,58 @@ static unsigned digit_value(uint8_t c)
  * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
  * it, so any number of digits reads without a wider type or a division.
  */
+/* The digits of a number in base 10 or 16 from q, with at most one point among them: its
+ * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
+ * XORed into *sum. Returns where the number ends. */
+static inline const uint8_t *pahr_digits(const uint8_t *q, unsigned base, uint32_t *m, const uint8_t **point,
+                                         unsigned *sum)
+{
+    unsigned x = *sum;
+    uint32_t v = 0;
+    for (;; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || *point != NULL) {
+                    break;
+                }
+                *point = q; /* in a hex field, a point is followed by a fraction it cannot have */
+                x ^= c;
+                continue;
+            }
+        }
+        x ^= c;
+        if (v < SATURATED) {
+            v = v * base + d;
+        }
+    }
+    *m = v;
+    *sum = x;
+    return q;
+}
+
 static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
                                       ilahrs_pahr_t *out, unsigned *sum)
 {
     const uint8_t *q = *at;
     const uint8_t *digits;
     const uint8_t *point = NULL;
-    unsigned base = f->hex ? 16u : 10u;
-    unsigned x = *sum;
     bool negative = !f->hex && *q == '-';
-    uint32_t m = 0;
+    uint32_t m;
     size_t whole;
     size_t fraction = 0;
     int32_t value;
-    x ^= negative ? (unsigned)'-' : 0u;
-    for (q += negative, digits = q;; q++) {
-        unsigned c = *q;
-        unsigned d = c - '0';
-        if (d > 9u) {
-            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
-            if (d < 10u || d >= base) {
-                if (c != '.' || point != NULL) {
-                    break;
-                }
-                point = q; /* in a hex field, a point is followed by a fraction it cannot have */
-                x ^= c;
-                continue;
-            }
-        }
-        x ^= c;
-        if (m < SATURATED) {
-            m = m * base + d;
-        }
-    }
+    *sum ^= negative ? (unsigned)'-' : 0u;
+    digits = q + negative;
+#if FAST
+    /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
+    q = f->hex ? pahr_digits(digits, 16u, &m, &point, sum) : pahr_digits(digits, 10u, &m, &point, sum);
+#else
+    q = pahr_digits(digits, f->hex ? 16u : 10u, &m, &point, sum);
+#endif
     *at = q;
-    *sum = x;
     whole = (size_t)((point != NULL ? point : q) - digits);
     if (point != NULL) {
         fraction = (size_t)(q - point) - 1u;
@@ -2494,7 +2547,7 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         return ILAHRS_ERR_MALFORMED;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
-        sum ^= p[k];
+        sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     for (k = 0;; k++) {
@@ -2828,8 +2881,15 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
     }
     seen = seen > i ? seen : i;
+#if FAST
+    {
+        const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
+        i = lf != NULL ? (size_t)(lf - p) : limit;
+    }
+#else
     for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
     }
+#endif
     if (i == limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {

@@ -76,41 +76,58 @@ static unsigned digit_value(uint8_t c)
  * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
  * it, so any number of digits reads without a wider type or a division.
  */
+/* The digits of a number in base 10 or 16 from q, with at most one point among them: its
+ * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
+ * XORed into *sum. Returns where the number ends. */
+static inline const uint8_t *pahr_digits(const uint8_t *q, unsigned base, uint32_t *m, const uint8_t **point,
+                                         unsigned *sum)
+{
+    unsigned x = *sum;
+    uint32_t v = 0;
+    for (;; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || *point != NULL) {
+                    break;
+                }
+                *point = q; /* in a hex field, a point is followed by a fraction it cannot have */
+                x ^= c;
+                continue;
+            }
+        }
+        x ^= c;
+        if (v < SATURATED) {
+            v = v * base + d;
+        }
+    }
+    *m = v;
+    *sum = x;
+    return q;
+}
+
 static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
                                       ilahrs_pahr_t *out, unsigned *sum)
 {
     const uint8_t *q = *at;
     const uint8_t *digits;
     const uint8_t *point = NULL;
-    unsigned base = f->hex ? 16u : 10u;
-    unsigned x = *sum;
     bool negative = !f->hex && *q == '-';
-    uint32_t m = 0;
+    uint32_t m;
     size_t whole;
     size_t fraction = 0;
     int32_t value;
-    x ^= negative ? (unsigned)'-' : 0u;
-    for (q += negative, digits = q;; q++) {
-        unsigned c = *q;
-        unsigned d = c - '0';
-        if (d > 9u) {
-            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
-            if (d < 10u || d >= base) {
-                if (c != '.' || point != NULL) {
-                    break;
-                }
-                point = q; /* in a hex field, a point is followed by a fraction it cannot have */
-                x ^= c;
-                continue;
-            }
-        }
-        x ^= c;
-        if (m < SATURATED) {
-            m = m * base + d;
-        }
-    }
+    *sum ^= negative ? (unsigned)'-' : 0u;
+    digits = q + negative;
+#if FAST
+    /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
+    q = f->hex ? pahr_digits(digits, 16u, &m, &point, sum) : pahr_digits(digits, 10u, &m, &point, sum);
+#else
+    q = pahr_digits(digits, f->hex ? 16u : 10u, &m, &point, sum);
+#endif
     *at = q;
-    *sum = x;
     whole = (size_t)((point != NULL ? point : q) - digits);
     if (point != NULL) {
         fraction = (size_t)(q - point) - 1u;
@@ -160,7 +177,7 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         return ILAHRS_ERR_MALFORMED;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
-        sum ^= p[k];
+        sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     for (k = 0;; k++) {

@@ -85,8 +85,15 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
     }
     seen = seen > i ? seen : i;
+#if FAST
+    {
+        const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
+        i = lf != NULL ? (size_t)(lf - p) : limit;
+    }
+#else
     for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
     }
+#endif
     if (i == limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {
