@@ -13,7 +13,7 @@ from pathlib import Path
 from . import DEFAULT_SPEC, ROOT, build_spec
 from .formatting import FormatterError
 from .load import SpecError
-from .render import derived_files, render, target_names
+from .render import derived_files, render, target_names, writers
 
 # Build products that may sit inside generated/ without being generated.
 IGNORED_PARTS = {
@@ -67,8 +67,12 @@ def main(argv: list[str] | None = None) -> int:
     except FormatterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    # A target's outputs live under generated/<target-folder>/; a target may write more than one folder.
-    folders = sorted({path.split("/", 1)[0] for path in files})
+    # A target's outputs live under generated/<target-folder>/; a target may write more than one folder,
+    # and a folder may hold the outputs of several targets (docs/): a file is stale only in a folder
+    # whose every writer ran.
+    folders = sorted(
+        folder for folder in {path.split("/", 1)[0] for path in files} if writers(spec)[folder] <= set(targets)
+    )
     existing = _on_disk(args.out, folders)
     changed = [
         p

@@ -65,6 +65,16 @@ def derived_files(targets: list[str]) -> set[str]:
     return found
 
 
+def writers(spec: Spec) -> dict[str, set[str]]:
+    """For each folder of generated/, the targets that write into it."""
+    found: dict[str, set[str]] = {}
+    for target in target_names():
+        module = importlib.import_module(f"generator.targets.{target}.target")
+        for out in module.outputs(spec):
+            found.setdefault(out.path.split("/", 1)[0], set()).add(target)
+    return found
+
+
 def notice(spec: Spec) -> list[str]:
     """The lines every generated file starts with, in the target's comment syntax."""
     return [

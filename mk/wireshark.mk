@@ -3,7 +3,7 @@
 #
 #   make test-wireshark   the dissector against the Python binding on a recorded session (every
 #                         command and payload table, calibrations, $PAHR, damaged bytes), two
-#                         device variants, TCP; the pcapng writer against tshark; FIELDS.md against
+#                         device variants, TCP; the pcapng writer against tshark; generated/docs/wireshark.md against
 #                         the registered fields; a spec with one more command and payload table
 
 WS_OUT := $(BUILD)/wireshark

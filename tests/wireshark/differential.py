@@ -12,7 +12,7 @@
    Again for another device variant, chosen in the dissector's preferences.
 4. The same session over TCP (Ethernet, IPv4, TCP in pcapng) on the port of the preferences must
    give the same messages.
-5. FIELDS.md names exactly the fields tshark registers.
+5. generated/docs/wireshark.md names exactly the fields tshark registers.
 6. A capture of random traffic (valid and broken frames and sentences, unknown commands, noise,
    both directions, any chunking) decodes without a Lua error, into the messages and discarded
    bytes the binding's StreamDecoder finds, packet by packet.
@@ -203,10 +203,11 @@ def summary(shown: list[tshark.Shown]) -> list[tuple[Any, ...]]:
 
 def check_fields_doc(lua: Path) -> int:
     registered = {row[2] for row in tshark.fields(lua)}
-    text = (lua.parent / "FIELDS.md").read_text(encoding="utf-8")
+    text = (lua.parent.parent / "docs" / "wireshark.md").read_text(encoding="utf-8")
     documented = set(re.findall(r"^\| `([a-z0-9_.]+)` \|", text, re.MULTILINE))
     documented |= {name + ".raw" for name in documented if f"`{name}` | double" in text}
-    check(documented == registered, "FIELDS.md", f"differs from tshark -G fields: {sorted(documented ^ registered)}")
+    difference = sorted(documented ^ registered)
+    check(documented == registered, "docs/wireshark.md", f"differs from tshark -G fields: {difference}")
     return len(registered)
 
 
@@ -335,7 +336,7 @@ def main(argv: list[str]) -> int:
     over_tcp = summary(tshark.parse(tshark.run(lua, tcp, f"{P}.tcp_port:{TCP_PORT}")))
     check(over_tcp == summary(shown), str(tcp), "TCP shows other messages than the serial capture")
     print(f"TCP port {TCP_PORT}: the same {len(over_tcp)} messages")
-    print(f"FIELDS.md: {check_fields_doc(lua)} fields, as tshark registers them")
+    print(f"docs/wireshark.md: {check_fields_doc(lua)} fields, as tshark registers them")
     noise = out / "random.pcapng"
     random_traffic(noise, seed=5, count=3000)
     text = tshark.run(lua, noise, fmt=("-V",))

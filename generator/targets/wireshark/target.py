@@ -72,7 +72,7 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     return [
         Output(f"wireshark/{spec.name}.lua", "dissector.lua.j2", {"runtime": RUNTIME}),
         Output("wireshark/README.md", "README.md.j2"),
-        Output("wireshark/FIELDS.md", "FIELDS.md.j2"),
+        Output("docs/wireshark.md", "FIELDS.md.j2"),
     ]
 
 
