@@ -229,6 +229,13 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake/install >/dev/null
 	cmake --build $(C_OUT)/cmake >/dev/null && cmake --install $(C_OUT)/cmake >/dev/null
 	test -f $(C_OUT)/cmake/install/lib/pkgconfig/ilahrs.pc -o -f $(C_OUT)/cmake/install/lib64/pkgconfig/ilahrs.pc
+	@# A user's project: find_package(ilahrs 1.0 REQUIRED) finds the installed package and builds against
+	@# it; asking for a major version the package is not is refused.
+	rm -rf $(C_OUT)/cmake-consumer && cmake -S tests/c/cmake_consumer -B $(C_OUT)/cmake-consumer \
+		-DILAHRS_VERSION_WANTED=1.0 -DCMAKE_PREFIX_PATH=$(ROOT)/$(C_OUT)/cmake/install >/dev/null
+	cmake --build $(C_OUT)/cmake-consumer >/dev/null && $(C_OUT)/cmake-consumer/consumer
+	! cmake -S tests/c/cmake_consumer -B $(C_OUT)/cmake-consumer-2 -DILAHRS_VERSION_WANTED=2.0 \
+		-DCMAKE_PREFIX_PATH=$(ROOT)/$(C_OUT)/cmake/install >/dev/null 2>&1
 	rm -rf $(C_OUT)/cmake-names-off && cmake -S $(C_DIR) -B $(C_OUT)/cmake-names-off -DILAHRS_NAMES=OFF \
 		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake-names-off/install >/dev/null
 	cmake --build $(C_OUT)/cmake-names-off >/dev/null && cmake --install $(C_OUT)/cmake-names-off >/dev/null

@@ -1,8 +1,9 @@
 # Build ilahrs as a library for those who prefer linking to copying ilahrs.h and ilahrs.c:
 #   cmake -S generated/c -B build/ilahrs && cmake --build build/ilahrs && cmake --install build/ilahrs
-# Then link with `find_package(ilahrs)` (target ilahrs::ilahrs) or `pkg-config --cflags --libs ilahrs`.
+# Then link with `find_package(ilahrs 1.0)` (target ilahrs::ilahrs; any 1.x at or above the version asked for) or `pkg-config --cflags --libs ilahrs`.
 
 include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
 
 option(ILAHRS_BUILD_EXAMPLES "Build examples/decode_capture (needs ILAHRS_NAMES)" OFF)
 option(ILAHRS_NAMES "Name strings, name accessors and by-name lookups (OFF: -DILAHRS_NAMES=0, see ilahrs.h)" ON)
@@ -35,6 +36,11 @@ install(TARGETS ilahrs EXPORT ilahrsTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT ilahrsTargets NAMESPACE ilahrs:: FILE ilahrsConfig.cmake
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/ilahrs)
+# find_package(ilahrs 1.0) accepts this package for any 1.x at or above the version asked for.
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/ilahrsConfigVersion.cmake
+    COMPATIBILITY SameMajorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ilahrsConfigVersion.cmake
     DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/ilahrs)
 
 configure_file(ilahrs.pc.in ${CMAKE_CURRENT_BINARY_DIR}/ilahrs.pc @ONLY)
