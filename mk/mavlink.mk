@@ -24,7 +24,7 @@ MAV_CFLAGS := -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror -I
               -isystem $(MAV_OUT)/c/bench -DMAVLINK_COMM_NUM_BUFFERS=1 -DMAVLINK_NO_SIGNATURE_CHECK \
               -DMAVLINK_NO_SIGN_PACKET
 # -Os as a Cortex-M firmware builds: ilahrs.c's size-optimized decoder (its default on 32-bit targets).
-MAV_OS := -Os -DILAHRS_OPTIMIZE_SIZE=1
+MAV_OS := -Os
 MAV_O2 := -O2
 MAV_ARM_CC ?= arm-none-eabi-gcc
 MAV_ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sections

@@ -245,7 +245,7 @@ def main() -> int:
         ),
     ]
     for label, binary in (
-        ("-Os, ilahrs.c size build as on a Cortex-M", args.bench_os),
+        ("-Os, as on a Cortex-M", args.bench_os),
         ("-O2, host build", args.bench_o2),
     ):
         per_byte = {name: instructions(binary, name, args.callgrind_size, args.out) for name in DECODERS}
