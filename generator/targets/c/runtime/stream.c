@@ -186,8 +186,12 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
 }
 
 /* A byte that may decide something: appended to the held bytes (the message handed out last
- * leaves), which are then decided. */
+ * leaves), which are then decided. Frames only, every byte takes this way, in less code. */
+#if ILAHRS_STREAM_SENTENCES
 static NOINLINE bool push_decide(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+#else
+bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
+#endif
 {
     size_t seen = s->count;
     if (s->start != 0) {
@@ -199,6 +203,7 @@ static NOINLINE bool push_decide(ilahrs_stream_t *s, uint8_t byte, ilahrs_messag
     return scan_held(s, seen, false, msg);
 }
 
+#if ILAHRS_STREAM_SENTENCES
 bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
 {
     /* Most bytes only extend the candidate waiting in held[0..count): a frame's short of its
@@ -214,12 +219,9 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
                     ? ILAHRS_FRAME_PAYLOAD_OFFSET
                     : ILAHRS_FRAME_HEADER_SIZE
                           + LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
-    }
-#if ILAHRS_STREAM_SENTENCES
-    else if (h[0] == PAHR_START) {
+    } else if (h[0] == PAHR_START) {
         until = n < PAHR_PREFIX_LENGTH ? PAHR_PREFIX_LENGTH : printable(byte) ? ILAHRS_PAHR_MAX_LENGTH : 0;
     }
-#endif
     if (n + 1 >= until) {
         return push_decide(s, byte, msg);
     }
@@ -227,17 +229,25 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
     s->count = (uint8_t)(n + 1);
     return false;
 }
+#endif
 
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
 {
     for (;;) {
-        if (s->start != 0) {
+        /* Held bytes after a message handed out; after them no message is handed out (start is 0).
+         * Frames only, in less code: any held bytes (a candidate waiting there waits again). */
+        if (!ILAHRS_STREAM_SENTENCES || s->start != 0) {
             if (scan_held(s, 0, false, msg)) {
                 return true;
             }
-        } else if (*len == 0) {
+            if (ILAHRS_STREAM_SENTENCES) {
+                continue;
+            }
+        }
+        if (*len == 0) {
             return false;
-        } else if (s->count != 0) {
+        }
+        if (s->count != 0) {
             /* A candidate waits in `held`: the input reaches it a byte at a time. */
             (*len)--;
             if (ilahrs_stream_push(s, *(*data)++, msg)) {
@@ -252,8 +262,9 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
 
 bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
-    /* Without a message handed out, the held bytes are a candidate waiting for input. */
-    return s->start != 0 && scan_held(s, 0, false, msg);
+    /* Without a message handed out, the held bytes are a candidate waiting for input (frames only,
+     * in less code: scanned again, it waits again). */
+    return (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, 0, false, msg);
 }
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
