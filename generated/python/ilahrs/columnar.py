@@ -7,11 +7,12 @@ friends.
 `columns(capture, FullOutput)` reads the blocks `ilahrs.bulk.decode_output` reads (the frames
 the stream decoder accepts, of message type DATA, with the table's payload size) into a dict of
 equal-length arrays: `offset`, where each frame starts in the capture; then every scaled field
-in engineering units (float64, the value of the block's `values()`), every other number raw (the
-Unit Status Word, integers). Text and reserved bytes are left out; a field whose scale is the
-device variant's needs `variant`. With numpy installed (the `columns` extra) the arrays are numpy
-arrays, found and decoded without a Python loop per frame; without it they are `array.array`
-('d' for engineering values, 'q' for integers). Both give the values the objects give.
+in engineering units (float64, the value of the block's `values()`), every other number raw
+(int64 or float64, as the block holds it: the Unit Status Word, ADC counts). Text and reserved
+bytes are left out; a field whose scale is the device variant's needs `variant`. With numpy
+installed (the `columns` extra) the arrays are numpy arrays, found and decoded without a Python
+loop per frame; without it they are `array.array` ('d' for engineering values, 'q' for
+integers). Both give the values the objects give.
 
 >>> from ilahrs.frame import Frame
 >>> from ilahrs.payloads import Quaternion
@@ -31,7 +32,7 @@ from typing import Any, Final
 
 from .bulk import Capture, _capture, _offsets, _payload_class
 from .codec import FieldInfo, PayloadBase, field_kind, variant_of
-from .encodings import Variant
+from .encodings import VARIANTS, Variant
 from .errors import ErrorKind, IlahrsError, brief
 from .frame import (
     CHECKSUM_SIZE,
@@ -89,11 +90,13 @@ def _numpy(backend: str) -> ModuleType | None:
 
 
 def _scales(cls: type[PayloadBase], variant: Variant | None) -> list[Scale]:
+    # The scaled fields are those `values()` gives with a variant (a unit alone does not say).
+    scaled = set(cls().values(next(iter(VARIANTS.values()))))  # type: ignore[attr-defined]
     result: list[Scale] = []
     for info in cls.FIELDS:
         if field_kind(info) not in ("integer", "float"):
             continue
-        if info.unit is None:
+        if info.name not in scaled:
             result.append((info, 1, None))
         elif isinstance(info.divisor, str):
             if variant is not None:
