@@ -11,7 +11,6 @@ from typing import Any
 import pytest
 
 import ilahrs
-from ilahrs.codec import PayloadBase
 from ilahrs.statemachine import OUTPUT_FORMATS
 
 SEED = 20140311
@@ -20,15 +19,15 @@ TABLES = [ilahrs.PAYLOADS[name] for name in OUTPUT_FORMATS.values() if name is n
 OTHER = ilahrs.PAYLOADS["initial_alignment"]
 
 
-def frame(cls: type[PayloadBase], rng: random.Random) -> bytes:
+def frame(cls: type[ilahrs.Payload], rng: random.Random) -> bytes:
     return ilahrs.Frame(ilahrs.MessageType.DATA, rng.randbytes(cls.SIZE)).build()
 
 
-def clean_capture(cls: type[PayloadBase], count: int, rng: random.Random) -> bytes:
+def clean_capture(cls: type[ilahrs.Payload], count: int, rng: random.Random) -> bytes:
     return b"".join(frame(cls, rng) for _ in range(count))
 
 
-def damaged_capture(cls: type[PayloadBase], count: int, rng: random.Random) -> bytes:
+def damaged_capture(cls: type[ilahrs.Payload], count: int, rng: random.Random) -> bytes:
     """Good frames mixed with noise, false headers, truncated and corrupted frames, frames of another
     table and of the command type, sentences, and a good frame inside a truncated one."""
     parts: list[bytes] = []
@@ -53,7 +52,7 @@ def damaged_capture(cls: type[PayloadBase], count: int, rng: random.Random) -> b
     return b"".join(parts)
 
 
-def objects(capture: bytes, cls: type[PayloadBase]) -> list[Any]:
+def objects(capture: bytes, cls: type[ilahrs.Payload]) -> list[Any]:
     """The blocks of `cls` as the stream decoder and the payload class give them."""
     decoder = ilahrs.StreamDecoder()
     events = decoder.feed(capture) + decoder.finish()
@@ -66,7 +65,7 @@ def objects(capture: bytes, cls: type[PayloadBase]) -> list[Any]:
     ]
 
 
-def offsets(capture: bytes, cls: type[PayloadBase]) -> list[int]:
+def offsets(capture: bytes, cls: type[ilahrs.Payload]) -> list[int]:
     decoder = ilahrs.StreamDecoder()
     result, at = [], 0
     for event in decoder.feed(capture) + decoder.finish():
@@ -78,7 +77,7 @@ def offsets(capture: bytes, cls: type[PayloadBase]) -> list[int]:
     return result
 
 
-def expected_columns(blocks: list[Any], cls: type[PayloadBase]) -> dict[str, list[Any]]:
+def expected_columns(blocks: list[Any], cls: type[ilahrs.Payload]) -> dict[str, list[Any]]:
     result: dict[str, list[Any]] = {}
     for info in cls.FIELDS:
         if info.type in ("char", "reserved"):
@@ -92,7 +91,7 @@ CAPTURES = [("clean", clean_capture), ("damaged", damaged_capture)]
 
 @pytest.mark.parametrize("cls", TABLES, ids=lambda c: c.NAME)
 @pytest.mark.parametrize(("kind", "make"), CAPTURES, ids=[k for k, _ in CAPTURES])
-def test_decode_output_gives_the_stream_decoders_objects(cls: type[PayloadBase], kind: str, make: Any) -> None:
+def test_decode_output_gives_the_stream_decoders_objects(cls: type[ilahrs.Payload], kind: str, make: Any) -> None:
     capture = make(cls, 300, random.Random(SEED))
     expected = objects(capture, cls)
     assert len(expected) >= 300
@@ -107,13 +106,13 @@ def test_decode_output_gives_the_stream_decoders_objects(cls: type[PayloadBase],
 def test_decoded_objects_stay_immutable() -> None:
     block = next(ilahrs.decode_output(clean_capture(TABLES[0], 1, random.Random(SEED)), TABLES[0]))
     with pytest.raises(AttributeError):
-        block.heading = 1  # type: ignore[misc]
+        block.heading = 1  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize("backend", ["numpy", "array"])
 @pytest.mark.parametrize("cls", TABLES, ids=lambda c: c.NAME)
 @pytest.mark.parametrize(("kind", "make"), CAPTURES, ids=[k for k, _ in CAPTURES])
-def test_columns_hold_the_objects_values(cls: type[PayloadBase], kind: str, make: Any, backend: str) -> None:
+def test_columns_hold_the_objects_values(cls: type[ilahrs.Payload], kind: str, make: Any, backend: str) -> None:
     capture = make(cls, 300, random.Random(SEED))
     table = ilahrs.columns(capture, cls, variant=VARIANT, backend=backend)
     expected = expected_columns(objects(capture, cls), cls)
@@ -157,12 +156,12 @@ def test_columns_of_captures_without_blocks_are_empty(capture: bytes, backend: s
 @pytest.mark.parametrize(
     ("call", "kind"),
     [
-        (lambda: ilahrs.columns("aa55", TABLES[0]), ilahrs.ErrorKind.MALFORMED),
+        (lambda: ilahrs.columns("aa55", TABLES[0]), ilahrs.ErrorKind.MALFORMED),  # type: ignore[arg-type]
         (lambda: ilahrs.columns(b"", "full_output"), ilahrs.ErrorKind.MALFORMED),  # type: ignore[arg-type]
         (lambda: ilahrs.columns(b"", TABLES[0], backend="pandas"), ilahrs.ErrorKind.MALFORMED),
         (lambda: ilahrs.columns(b"", TABLES[0], variant="KG"), ilahrs.ErrorKind.OUT_OF_RANGE),
         (lambda: ilahrs.decode_output("aa55", TABLES[0]), ilahrs.ErrorKind.MALFORMED),  # type: ignore[arg-type]
-        (lambda: ilahrs.decode_output(b"", int), ilahrs.ErrorKind.MALFORMED),  # type: ignore[type-var]
+        (lambda: ilahrs.decode_output(b"", int), ilahrs.ErrorKind.MALFORMED),
     ],
 )
 def test_bad_arguments_are_refused_at_once(call: Any, kind: ilahrs.ErrorKind) -> None:

@@ -11,7 +11,7 @@ MAX_MESSAGE_SIZE bytes. See spec/README.md for the exact rules every binding fol
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Generator
 from dataclasses import dataclass
 from typing import Final
 
@@ -81,7 +81,7 @@ class StreamDecoder:
         anything but a byte string (nothing is added)."""
         return list(self.feed_iter(data))
 
-    def feed_iter(self, data: bytes | bytearray | memoryview) -> Iterator[StreamEvent]:
+    def feed_iter(self, data: bytes | bytearray | memoryview) -> Generator[StreamEvent, None, None]:
         """`feed` as an iterator: the messages come as they are found, and memory stays flat for
         an input of any size (a whole capture at once). IlahrsError(MALFORMED) at once for
         anything but a byte string. Closed early, it keeps the bytes it has not scanned yet for
@@ -89,7 +89,7 @@ class StreamDecoder:
         view = memoryview(require_bytes(data, "data"))
         return self._events(view)
 
-    def _events(self, view: memoryview) -> Iterator[StreamEvent]:
+    def _events(self, view: memoryview) -> Generator[StreamEvent, None, None]:
         start = 0
         try:
             while start < len(view):

@@ -28,7 +28,7 @@ from types import ModuleType
 from typing import Any, Final
 
 from .bulk import Capture, _capture, _offsets, _payload_class
-from .codec import FieldInfo, PayloadBase, field_kind, variant_of
+from .codec import FieldInfo, Payload, PayloadBase, field_kind, variant_of
 from .encodings import VARIANTS, Variant
 from .errors import ErrorKind, IlahrsError, brief
 from .frame import (
@@ -54,7 +54,7 @@ Scale = tuple[FieldInfo, int, "int | float | None"]
 
 
 def columns(
-    data: Capture, payload: type[PayloadBase], *, variant: Variant | str | None = None, backend: str = "auto"
+    data: Capture, payload: type[Payload], *, variant: Variant | str | None = None, backend: str = "auto"
 ) -> dict[str, Any]:
     """Every block of table `payload` in the capture `data` as columns (see the module's note).
     IlahrsError(MALFORMED) for a capture that is not a byte string, a `payload` that is not a
@@ -86,9 +86,9 @@ def _numpy(backend: str) -> ModuleType | None:
     return numpy
 
 
-def _scales(cls: type[PayloadBase], variant: Variant | None) -> list[Scale]:
+def _scales(cls: type[Any], variant: Variant | None) -> list[Scale]:
     # The scaled fields are those `values()` gives with a variant (a unit alone does not say).
-    scaled = set(cls().values(next(iter(VARIANTS.values()))))  # type: ignore[attr-defined]
+    scaled = set(cls().values(next(iter(VARIANTS.values()))))
     result: list[Scale] = []
     for info in cls.FIELDS:
         if field_kind(info) not in ("integer", "float"):
