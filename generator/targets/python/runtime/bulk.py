@@ -4,7 +4,8 @@
 format gives as its `Output` blocks: the frames the stream decoder accepts ("leftmost valid
 message", input ended), those of message type DATA whose payload is the table's size, each parsed
 by the table's `parse`. It walks the capture's bytes in place (no copy of a bytes or bytearray
-capture, no per-message event objects), so it suits long logs; `payload_offsets` gives where the
+capture, no per-message event objects; the blocks are made in batches with the garbage
+collector paused), so it suits long logs; `payload_offsets` gives where the
 payloads are, for a reader of its own (`ilahrs.columnar` reads them into columns).
 
 >>> from ilahrs.frame import Frame
@@ -16,9 +17,10 @@ payloads are, for a reader of its own (`ilahrs.columnar` reads them into columns
 
 from __future__ import annotations
 
+import gc
 from collections.abc import Iterator
 from functools import partial
-from itertools import starmap
+from itertools import islice, starmap
 from typing import Any, Final, TypeVar
 
 from .codec import PayloadBase, maker
@@ -42,6 +44,8 @@ _P = TypeVar("_P")
 _MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 _DATA: Final = int(MessageType.DATA)
 _LENGTH_HIGH: Final = MESSAGE_LENGTH_OFFSET + 1
+_BATCH: Final = 4096
+"""decode_output makes the blocks in batches of this many."""
 
 Capture = bytes | bytearray | memoryview
 
@@ -104,4 +108,17 @@ def _decode(data: bytes | bytearray, cls: type[Any]) -> Iterator[Any]:
         for offset in _offsets(data, size):
             yield parse(data[offset : offset + size])
         return
-    yield from starmap(maker(cls), map(partial(cls._STRUCT.unpack_from, data), _offsets(data, size)))
+    blocks = starmap(maker(cls), map(partial(cls._STRUCT.unpack_from, data), _offsets(data, size)))
+    while True:
+        # The collector, run every few hundred new objects, costs more than the decoding when the
+        # caller keeps the blocks: it is paused while a batch is made (never while the caller runs).
+        paused = gc.isenabled()
+        gc.disable()
+        try:
+            batch = list(islice(blocks, _BATCH))
+        finally:
+            if paused:
+                gc.enable()
+        if not batch:
+            return
+        yield from batch
