@@ -11,7 +11,14 @@ The frames are deterministic (seeded): every payload table in turn with random b
 output formats (Tables 6.4-6.6) three times as often. Timings use time.perf_counter; each engine
 runs REPEAT times over all frames and the best run counts.
 
-    .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R]
+Then a capture of one output format (Table 6.4, random payloads, one frame in ten after a few
+bytes of noise), decoded end to end from its bytes: a minimal standard-library loop (find AA 55,
+length, sum, struct.unpack_from: the reference), what a user writes with the stream decoder
+(`feed_iter`, then the payload class's `parse`), `ilahrs.decode_output` (payload objects), and
+`ilahrs.columns` (one array per field) with numpy and with the array fallback; and the memory a
+256 MiB capture fed at once to `StreamDecoder.feed_iter` adds (ru_maxrss, in a subprocess).
+
+    .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R] [--rss-mib M]
 """
 
 from __future__ import annotations
@@ -20,6 +27,9 @@ import argparse
 import io
 import platform
 import random
+import resource
+import struct
+import subprocess
 import sys
 import time
 from collections.abc import Callable
@@ -36,6 +46,10 @@ import ilahrs  # noqa: E402
 
 SEED = 20140311
 TARGET_RATIO = 20.0
+TARGET_LOOP_RATIO = 0.5
+TARGET_COLUMNS_RATIO = 200.0
+TARGET_RSS_MIB = 64
+OUTPUT_TABLE = "full_output"
 
 Decoder = Callable[[list[tuple[Any, bytes]]], int]
 
@@ -76,11 +90,125 @@ def rate(decode: Decoder, work: list[tuple[Any, bytes]], repeat: int) -> float:
     return len(work) / best
 
 
+def output_capture(count: int, rng: random.Random) -> bytes:
+    size = ilahrs.PAYLOADS[OUTPUT_TABLE].SIZE
+    parts = []
+    for index in range(count):
+        if index % 10 == 0:
+            parts.append(rng.randbytes(rng.randrange(1, 8)))
+        parts.append(ilahrs.Frame(ilahrs.MessageType.DATA, rng.randbytes(size)).build())
+    return b"".join(parts)
+
+
+def stdlib_loop(data: bytes) -> int:
+    """The reference: find AA 55, read the length, check the sum, unpack the payload's fields."""
+    unpack_from = struct.Struct(ilahrs.PAYLOADS[OUTPUT_TABLE]._STRUCT.format).unpack_from  # type: ignore[attr-defined]
+    find = data.find
+    size = len(data)
+    found = []
+    pos = find(b"\xaa\x55")
+    while pos >= 0:
+        end = pos + 2 + (data[pos + 4] | data[pos + 5] << 8)
+        if end <= size and sum(data[pos + 2 : end - 2]) & 0xFFFF == data[end - 2] | data[end - 1] << 8:
+            found.append(unpack_from(data, pos + 6))
+            pos = find(b"\xaa\x55", end)
+        else:
+            pos = find(b"\xaa\x55", pos + 1)
+    return len(found)
+
+
+def stream_and_parse(data: bytes) -> int:
+    cls = ilahrs.PAYLOADS[OUTPUT_TABLE]
+    decoder = ilahrs.StreamDecoder()
+    found = [cls.parse(e.frame.payload) for e in decoder.feed_iter(data) if e.frame is not None]
+    return len(found)
+
+
+def decode_output(data: bytes) -> int:
+    return len(list(ilahrs.decode_output(data, ilahrs.PAYLOADS[OUTPUT_TABLE])))
+
+
+def columns_numpy(data: bytes) -> int:
+    return len(ilahrs.columns(data, ilahrs.PAYLOADS[OUTPUT_TABLE], backend="numpy")["offset"])
+
+
+def columns_array(data: bytes) -> int:
+    return len(ilahrs.columns(data, ilahrs.PAYLOADS[OUTPUT_TABLE], backend="array")["offset"])
+
+
+def capture_rate(decode: Callable[[bytes], int], data: bytes, count: int, repeat: int) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        start = time.perf_counter()
+        found = decode(data)
+        best = min(best, time.perf_counter() - start)
+    assert found == count, (decode.__name__, found, count)
+    return count / best
+
+
+def rss_child(mib: int) -> int:
+    """Feed a `mib` MiB capture at once to StreamDecoder.feed_iter; print the peak RSS growth."""
+    block = output_capture(10000, random.Random(SEED))
+    data = block * (mib * 2**20 // len(block))
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    decoder = ilahrs.StreamDecoder()
+    start = time.perf_counter()
+    count = sum(1 for _ in decoder.feed_iter(data))
+    count += len(decoder.finish())
+    elapsed = time.perf_counter() - start
+    growth = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before) / 1024
+    print(f"{len(data) / 2**20:.0f} {count} {growth:.1f} {len(data) / 2**20 / elapsed:.1f}")
+    return 0
+
+
+def capture_section(frame_count: int, repeat: int, rss_mib: int) -> None:
+    data = output_capture(frame_count, random.Random(SEED))
+    cls = ilahrs.PAYLOADS[OUTPUT_TABLE]
+    print(f"\ncapture: {frame_count} {OUTPUT_TABLE} frames with noise, {len(data)} bytes, end to end")
+    kaitai_work = [(ks.kaitai_type(OUTPUT_TABLE), ilahrs.Frame(1, bytes(cls.SIZE)).build())] * frame_count
+    kaitai = rate(decode_kaitai, kaitai_work, repeat)
+    print(f"kaitai (frames already split): {kaitai:.0f} frames/s")
+    paths = [
+        ("stdlib loop (reference)", stdlib_loop),
+        ("StreamDecoder.feed_iter + parse", stream_and_parse),
+        ("ilahrs.decode_output", decode_output),
+        ("ilahrs.columns (numpy)", columns_numpy),
+        ("ilahrs.columns (array)", columns_array),
+    ]
+    rates = {}
+    for name, decode in paths:
+        rates[name] = capture_rate(decode, data, frame_count, repeat)
+        print(f"{name}: {rates[name]:.0f} frames/s, {rates[name] / kaitai:.1f}x kaitai")
+    loop = rates["stdlib loop (reference)"]
+    for name in ("StreamDecoder.feed_iter + parse", "ilahrs.decode_output"):
+        print(f"ratio {name} / stdlib loop: {rates[name] / loop:.2f}")
+    ratio = rates["ilahrs.decode_output"] / loop
+    verdict = "met" if ratio >= TARGET_LOOP_RATIO else "NOT met"
+    print(f"decode_output / stdlib loop: {ratio:.2f} (target >= {TARGET_LOOP_RATIO}: {verdict})")
+    ratio = rates["ilahrs.columns (numpy)"] / kaitai
+    verdict = "met" if ratio >= TARGET_COLUMNS_RATIO else "NOT met"
+    print(f"columns (numpy) / kaitai: {ratio:.0f}x (target >= {TARGET_COLUMNS_RATIO:.0f}x: {verdict})")
+    if rss_mib > 0:
+        out = subprocess.run(
+            [sys.executable, __file__, "--rss-child", str(rss_mib)], check=True, capture_output=True, text=True
+        ).stdout.split()
+        growth = float(out[2])
+        verdict = "met" if growth < TARGET_RSS_MIB else "NOT met"
+        print(
+            f"StreamDecoder.feed_iter, {out[0]} MiB fed at once: {out[1]} messages, {out[3]} MiB/s, "
+            f"RSS growth {growth:.1f} MiB (target < {TARGET_RSS_MIB} MiB: {verdict})"
+        )
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--frames", type=int, default=20000, help="frames to decode (default 20000)")
     parser.add_argument("--repeat", type=int, default=3, help="runs per engine; the best counts (default 3)")
+    parser.add_argument("--rss-mib", type=int, default=256, help="capture size for the RSS figure (0: skip)")
+    parser.add_argument("--rss-child", type=int, default=0, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.rss_child:
+        return rss_child(args.rss_child)
 
     data = frames(args.frames)
     sizes = sorted({len(d) for _, d in data})
@@ -101,6 +229,7 @@ def main() -> int:
     verdict = "met" if ratio >= TARGET_RATIO else "NOT met"
     print(f"ratio ilahrs/kaitai: {ratio:.1f}x (target >= {TARGET_RATIO:.0f}x: {verdict})")
     print(f"ratio ilahrs/construct: {rates['ilahrs'] / rates['construct']:.1f}x")
+    capture_section(args.frames * 5, args.repeat, args.rss_mib)
     return 0
 
 

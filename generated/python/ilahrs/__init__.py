@@ -19,6 +19,8 @@ Standard library only.
 
 from __future__ import annotations
 
+from .bulk import decode_output
+from .columnar import columns
 from .commands import (
     CODES,
     COMMANDS,
@@ -123,10 +125,12 @@ __all__ = [
     "calibration_accuracy_deg",
     "calibration_succeeded",
     "checksum",
+    "columns",
     "command_names",
     "declination_is_computed",
     "decode_command",
     "decode_date",
+    "decode_output",
     "encode_date",
 ]
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import struct
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
@@ -28,6 +28,7 @@ __all__ = [
     "Payload",
     "PayloadBase",
     "field_kind",
+    "maker",
     "required_variant",
     "variant_of",
 ]
@@ -183,6 +184,43 @@ def _check_field(info: FieldInfo, value: object) -> None:
             _check_int(value, int(info.low), int(info.high), info.name, info.offset)
 
 
+_MAKERS: dict[type, Callable[..., Any]] = {}
+
+
+def maker(cls: type[_B]) -> Callable[..., _B]:
+    """A function building `cls(*values)` from a payload class's field values in wire order,
+    several times faster. A frozen dataclass sets each field through object.__setattr__; this sets
+    them on an unfrozen twin class with the same slots and then gives the object its class, so the
+    result is the same immutable object (equal, same type, same hash). No field is checked, as
+    in `cls(*values)`. A class the twin cannot stand in for (no matching slots, a __post_init__)
+    gets `cls` itself."""
+    found = _MAKERS.get(cls)
+    if found is None:
+        found = _MAKERS[cls] = _twin_maker(cls)
+    return found
+
+
+def _twin_maker(cls: type[_B]) -> Callable[..., _B]:
+    names = tuple(info.name for info in cls.FIELDS)
+    if cls.__dict__.get("__slots__") != names or hasattr(cls, "__post_init__"):
+        return cls
+    try:
+        twin = type(f"_{cls.__name__}Fields", cls.__bases__, {"__slots__": names, "FIELDS": cls.FIELDS})
+        params = ", ".join(f"v{index}" for index in range(len(names)))
+        lines = [f"def make({params}):", "    o = _new(_twin)"]
+        lines += [f"    o.{name} = v{index}" for index, name in enumerate(names)]
+        lines += ["    o.__class__ = _cls", "    return o"]
+        scope: dict[str, Any] = {"_new": object.__new__, "_twin": twin, "_cls": cls}
+        exec("\n".join(lines), scope)  # the source is built from field names only
+        make: Callable[..., _B] = scope["make"]
+        sample = cls._STRUCT.unpack(bytes(cls.SIZE))
+        if make(*sample) != cls(*sample):
+            return cls
+    except (TypeError, AttributeError):
+        return cls
+    return make
+
+
 class PayloadBase:
     """The code of every payload class: exact-inverse `parse` and `build`, `from_raw`, `check`
     and `raw`, all read from the class's FIELDS and _STRUCT."""
@@ -211,12 +249,13 @@ class PayloadBase:
         data = require_bytes(data, "data")
         if len(data) != cls.SIZE:
             raise _size_error(len(data), cls.SIZE)
+        make: Callable[..., _B] = _MAKERS.get(cls) or maker(cls)
         if not cls._TEXT:
-            return cls(*cls._STRUCT.unpack(data))
+            return make(*cls._STRUCT.unpack(data))
         values: list[Any] = list(cls._STRUCT.unpack(data))
         for index in cls._TEXT:
             values[index] = _text(values[index])
-        return cls(*values)
+        return make(*values)
 
     @classmethod
     def from_raw(cls: type[_B], values: Mapping[str, object]) -> _B:

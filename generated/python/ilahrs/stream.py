@@ -11,6 +11,7 @@ MAX_MESSAGE_SIZE bytes. See spec/README.md for the exact rules every binding fol
 
 from __future__ import annotations
 
+from collections.abc import Generator
 from dataclasses import dataclass
 from typing import Final
 
@@ -40,6 +41,8 @@ _SENTENCE_START: Final = PREFIX[0]
 _MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 _CR: Final = 0x0D
 _LF: Final = 0x0A
+_CHUNK: Final = 1 << 16
+"""feed_iter() adds its input in pieces of this size, so the decoder never holds much more."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,8 +79,25 @@ class StreamDecoder:
     def feed(self, data: bytes | bytearray | memoryview) -> list[StreamEvent]:
         """Add bytes; return the messages they complete, in order. IlahrsError(MALFORMED) for
         anything but a byte string (nothing is added)."""
-        self._buffer += require_bytes(data, "data")
-        return self._scan(final=False)
+        return list(self.feed_iter(data))
+
+    def feed_iter(self, data: bytes | bytearray | memoryview) -> Generator[StreamEvent, None, None]:
+        """`feed` as an iterator: the messages come as they are found, and memory stays flat for
+        an input of any size (a whole capture at once). IlahrsError(MALFORMED) at once for
+        anything but a byte string. Closed early, it keeps the bytes it has not scanned yet for
+        the next `feed` or `finish` (messages already found and not taken are dropped)."""
+        view = memoryview(require_bytes(data, "data"))
+        return self._events(view)
+
+    def _events(self, view: memoryview) -> Generator[StreamEvent, None, None]:
+        start = 0
+        try:
+            while start < len(view):
+                self._buffer += view[start : start + _CHUNK]
+                start += _CHUNK
+                yield from self._scan(final=False)
+        finally:
+            self._buffer += view[start:]
 
     def finish(self) -> list[StreamEvent]:
         """The input has ended: decide on every byte still held."""

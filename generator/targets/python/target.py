@@ -29,7 +29,7 @@ PACKAGE = "python/ilahrs"
 TABLES = ("spec", "encodings", "status", "payloads", "commands", "nmea")
 # Runtime modules: what Python 3.10 lacks (compat), the codec (errors, frame, value encodings,
 # payloads, sentences, commands) and the stream decoder.
-CODEC = ("compat", "errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream")
+CODEC = ("compat", "errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream", "bulk", "columnar")
 # The protocol's behaviour: the state-machine table and the roles of the commands (generated), the
 # device model and the host session (sans-I/O), then the edge: the virtual device on a pty or loopback
 # socket, the serial client, the command line.

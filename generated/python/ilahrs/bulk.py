@@ -1,0 +1,127 @@
+# Copied from generator/targets/python/runtime/bulk.py for spec/ilahrs.yaml,
+# spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+# Do not edit: change the runtime source and run `make generate`.
+"""A whole capture at once: every block of one payload table as payload objects, fast.
+
+`decode_output(capture, FullOutput)` gives what a host session started mid-stream in that output
+format gives as its `Output` blocks: the frames the stream decoder accepts ("leftmost valid
+message", input ended), those of message type DATA whose payload is the table's size, each parsed
+by the table's `parse`. It walks the capture's bytes in place (no copy of a bytes or bytearray
+capture, no per-message event objects; the blocks are made in batches with the garbage
+collector paused), so it suits long logs; `payload_offsets` gives where the
+payloads are, for a reader of its own (`ilahrs.columnar` reads them into columns).
+
+>>> from ilahrs.frame import Frame
+>>> from ilahrs.payloads import Quaternion
+>>> capture = b"\\x00" + Frame(1, Quaternion(heading=9000).build()).build() + b"\\xaa\\x55"
+>>> [block.heading_deg for block in decode_output(capture, Quaternion)]
+[90.0]
+"""
+
+from __future__ import annotations
+
+import gc
+from collections.abc import Iterator
+from functools import partial
+from itertools import islice, starmap
+from typing import Any, Final, TypeVar
+
+from .codec import PayloadBase, maker
+from .errors import ErrorKind, IlahrsError, brief
+from .frame import (
+    CHECKSUM_SIZE,
+    HEADER,
+    HEADER_SIZE,
+    LENGTH_BIAS,
+    MAX_MESSAGE_LENGTH,
+    MESSAGE_LENGTH_OFFSET,
+    MESSAGE_TYPE_OFFSET,
+    MIN_MESSAGE_LENGTH,
+    PAYLOAD_OFFSET,
+    MessageType,
+)
+
+__all__ = ["decode_output", "payload_offsets"]
+
+_P = TypeVar("_P")
+_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
+_DATA: Final = int(MessageType.DATA)
+_LENGTH_HIGH: Final = MESSAGE_LENGTH_OFFSET + 1
+_BATCH: Final = 4096
+"""decode_output makes the blocks in batches of this many."""
+
+Capture = bytes | bytearray | memoryview
+
+
+def _capture(data: object) -> bytes | bytearray:
+    if isinstance(data, (bytes, bytearray)):
+        return data
+    if isinstance(data, memoryview):
+        return data.tobytes()
+    detail = f"{brief(data)} is not a byte string (bytes, bytearray or memoryview)"
+    raise IlahrsError(ErrorKind.MALFORMED, None, "data", detail)
+
+
+def _payload_class(payload: object) -> type[Any]:
+    if isinstance(payload, type) and issubclass(payload, PayloadBase):
+        return payload
+    raise IlahrsError(ErrorKind.MALFORMED, None, "payload", f"{brief(payload)} is not a payload class")
+
+
+def payload_offsets(data: Capture, size: int) -> Iterator[int]:
+    """Where the payload of each accepted DATA frame with a `size`-byte payload starts in `data`,
+    in order. The frames are those `StreamDecoder` accepts when fed `data` and finished: a valid
+    $PAHR sentence never holds a frame header, so frames alone decide."""
+    return _offsets(_capture(data), size)
+
+
+def _offsets(data: bytes | bytearray, size: int) -> Iterator[int]:
+    find = data.find
+    total = len(data)
+    wanted = size + LENGTH_BIAS
+    pos = find(HEADER)
+    while pos >= 0:
+        if pos + PAYLOAD_OFFSET <= total and data[pos + MESSAGE_TYPE_OFFSET] in _MESSAGE_TYPES:
+            length = data[pos + MESSAGE_LENGTH_OFFSET] | data[pos + _LENGTH_HIGH] << 8
+            end = pos + HEADER_SIZE + length
+            if MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH and end <= total:
+                at = end - CHECKSUM_SIZE
+                if sum(data[pos + HEADER_SIZE : at]) & 0xFFFF == data[at] | data[at + 1] << 8:
+                    if length == wanted and data[pos + MESSAGE_TYPE_OFFSET] == _DATA:
+                        yield pos + PAYLOAD_OFFSET
+                    pos = find(HEADER, end)
+                    continue
+        pos = find(HEADER, pos + 1)
+
+
+def decode_output(data: Capture, payload: type[_P]) -> Iterator[_P]:
+    """Every block of table `payload` (a payload class) in the capture `data`, as payload objects
+    equal to `payload.parse` of each (see the module's note for which frames count).
+    IlahrsError(MALFORMED) at once for a capture that is not a byte string or a `payload` that is
+    not a payload class."""
+    capture = _capture(data)
+    cls = _payload_class(payload)
+    return _decode(capture, cls)
+
+
+def _decode(data: bytes | bytearray, cls: type[Any]) -> Iterator[Any]:
+    size = cls.SIZE
+    if cls._TEXT:
+        parse = cls.parse
+        for offset in _offsets(data, size):
+            yield parse(data[offset : offset + size])
+        return
+    blocks = starmap(maker(cls), map(partial(cls._STRUCT.unpack_from, data), _offsets(data, size)))
+    while True:
+        # The collector, run every few hundred new objects, costs more than the decoding when the
+        # caller keeps the blocks: it is paused while a batch is made (never while the caller runs).
+        paused = gc.isenabled()
+        gc.disable()
+        try:
+            batch = list(islice(blocks, _BATCH))
+        finally:
+            if paused:
+                gc.enable()
+        if not batch:
+            return
+        yield from batch
