@@ -2519,6 +2519,122 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 
+#if FAST
+/* Compiled for speed, a decimal field has a path of its own, with the same answers as pahr_field():
+ * the whole digits, then the fraction digits after a point, each in a loop of its own; the missing
+ * fraction digits scale the magnitude in one multiplication (10^decimals < 2^11, checked by the
+ * generator), and the sign and the range in 64 bits. */
+static const uint16_t pahr_scale[4] = { 1u, 10u, 100u, 1000u };
+
+/* The XOR of the characters in [q, end), 8 at a time: the field paths below leave it to this. */
+static unsigned pahr_xor(const uint8_t *q, const uint8_t *end)
+{
+    uint64_t x = 0;
+    uint64_t w;
+    size_t n = (size_t)(end - q);
+    if (n < 8u) {
+        for (; q < end; q++) {
+            x ^= *q;
+        }
+        return (unsigned)x;
+    }
+    for (; n > 8u; n -= 8u, q += 8) {
+        memcpy(&w, q, 8);
+        x ^= w;
+    }
+    {
+        /* The last 8 characters, of which the first 8 - n are counted already. */
+        const uint16_t one = 1;
+        uint8_t little; /* the host's byte order: 1 if little-endian */
+        unsigned drop = 8u * (8u - (unsigned)n);
+        memcpy(&little, &one, 1);
+        memcpy(&w, end - 8, 8);
+        x ^= little ? w >> drop : w << drop;
+    }
+    x ^= x >> 32;
+    x ^= x >> 16;
+    x ^= x >> 8;
+    return (unsigned)x & 0xFFu;
+}
+
+static ilahrs_error_kind_t pahr_decimal(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
+                                        ilahrs_pahr_t *out, unsigned *sum)
+{
+    const uint8_t *q = *at;
+    const uint8_t *digits;
+    unsigned negative = *q == '-';
+    unsigned scale = f->decimals;
+    uint32_t v = 0;
+    unsigned d;
+    bool bad;
+    int64_t value;
+    q += negative;
+    digits = q;
+    for (; (d = (unsigned)*q - '0') <= 9u; q++) {
+        v = v * 10u + d;
+    }
+    if (q - digits > 6) {
+        return pahr_field(at, star, f, out, sum); /* v could wrap: the long way, which saturates */
+    }
+    bad = q == digits;
+    if (*q == '.') {
+        const uint8_t *point = q++;
+        unsigned i;
+        /* At most the field's fraction digits (a loop the same length every time); a digit after
+         * them is one too many. */
+        for (i = 0; i < scale && (d = (unsigned)*q - '0') <= 9u; i++, q++) {
+            v = v * 10u + d;
+        }
+        bad |= q == point + 1 || (unsigned)*q - '0' <= 9u;
+        scale -= i;
+    }
+    *at = q;
+    if (bad || (q != star && *q != PAHR_SEPARATOR)) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    value = (int64_t)((uint64_t)v * pahr_scale[scale]); /* below 10^6 * 10^3 */
+    value = negative ? -value : value;
+    if (value < f->min || value > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, (uint32_t)value, f->size);
+    return ILAHRS_OK;
+}
+
+/* And a hex field: 1 to 8 digits, no sign and no point (pahr_field() decides the rest). */
+static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, const pahr_field_t *f, ilahrs_pahr_t *out,
+                                    unsigned *sum)
+{
+    const uint8_t *q = *at;
+    uint32_t v = 0;
+    size_t whole;
+    for (;; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d - 10u > 5u) {
+                break;
+            }
+        }
+        v = v * 16u + d;
+    }
+    whole = (size_t)(q - *at);
+    if (*q == '.' || whole > 8u) {
+        return pahr_field(at, star, f, out, sum);
+    }
+    *at = q;
+    if (whole == 0 || whole > f->width || (q != star && *q != PAHR_SEPARATOR)) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    if ((int64_t)v < f->min || (int64_t)v > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, v, f->size);
+    return ILAHRS_OK;
+}
+#endif
+
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
  * CR LF search, in one pass over the fields. `end` is the sentence length, CR LF its last two
@@ -2550,7 +2666,29 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
-    for (k = 0;; k++) {
+    k = 0;
+#if FAST
+    /* Compiled for speed, the fields go by while they are good, each ending at a separator or at
+     * the star; the loop below takes over from the first bad one or from a field too many. */
+#if defined(__GNUC__)
+#pragma GCC unroll 64 /* each field's row then folds into its code */
+#endif
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        const pahr_field_t *f = &ilahrs_pahr_fields[k];
+        const uint8_t *start = q;
+        field_error = f->hex ? pahr_hex(&q, star, f, out, &sum) : pahr_decimal(&q, star, f, out, &sum);
+        if (field_error != ILAHRS_OK) {
+            error_at = (size_t)(start - p);
+            error_field = k;
+            break;
+        }
+        if (q >= star) {
+            goto counted;
+        }
+        q++; /* the separator */
+    }
+#endif
+    for (;; k++) {
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
             error_at = (size_t)(q - p);
             error_field = k;
@@ -2564,6 +2702,10 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         }
         sum ^= *q++; /* the separator */
     }
+#if FAST
+counted:
+    sum = pahr_xor(p + 1, star); /* the field paths leave it out */
+#endif
     if (sum != checksum) {
         return ILAHRS_ERR_BAD_CHECKSUM;
     }
