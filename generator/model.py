@@ -35,7 +35,7 @@ from .model_encodings import (
     StatusWord,
 )
 from .model_fields import FLOAT32_MAX, PRIMITIVES, Field, Payload, Primitive, Scale, Unit
-from .model_frame import Command, FormerName, Frame, MessageType
+from .model_frame import Command, FormerName, Frame, MessageType, Strict
 from .model_machine import (
     ANSWER_ACK,
     ANSWER_OUTPUT,
@@ -89,6 +89,7 @@ __all__ = [
     "StatusFlag",
     "StatusMode",
     "StatusWord",
+    "Strict",
     "Transition",
     "Unit",
     "Variant",

@@ -26,7 +26,7 @@ from .model_encodings import (
     StatusWord,
 )
 from .model_fields import PRIMITIVES, Field, Payload, Scale, Unit
-from .model_frame import Command, FormerName, Frame, MessageType
+from .model_frame import Command, FormerName, Frame, MessageType, Strict
 from .model_spec import Erratum, ErrorKind, Mode, SerialLine, Spec, Variant, VariantParameter
 from .naming import prose
 
@@ -163,7 +163,16 @@ def _frame(fr: dict[str, Any], units: dict[str, Unit]) -> Frame:
         min_length=fr["message_length"]["min"],
         max_length=fr["message_length"]["max"],
         path=("frame",),
+        strict=_strict(fr),
     )
+
+
+def _strict(fr: dict[str, Any]) -> Strict | None:
+    if "strict" not in fr:
+        return None
+    raw = fr["strict"]
+    value = next(t["value"] for t in fr["message_types"] if t["name"] == raw["message_type"])
+    return Strict(raw["message_type"], value, raw["reserved"], raw.get("erratum", ""))
 
 
 def _command(c: dict[str, Any], index: int) -> Command:
@@ -202,7 +211,7 @@ def _variant(v: dict[str, Any]) -> Variant:
 
 
 def _serial_line(raw: dict[str, Any]) -> SerialLine:
-    return SerialLine(raw["baud_rate"], raw["data_bits"], raw["parity"], raw["stop_bits"])
+    return SerialLine(raw["baud_rate"], raw["data_bits"], raw["parity"], raw["stop_bits"], raw.get("idle_byte_times"))
 
 
 # Enums and encodings.

@@ -50,6 +50,16 @@ class MessageType:
 
 
 @dataclass(frozen=True)
+class Strict:
+    """What the AHRS writes in a data frame's header (E42): a strict decoder refuses other values."""
+
+    message_type: str  # the message type name the rule covers
+    message_type_value: int
+    reserved: int
+    erratum: str
+
+
+@dataclass(frozen=True)
 class Frame:
     icd: str
     header: tuple[int, ...]
@@ -61,6 +71,7 @@ class Frame:
     min_length: int  # bounds of the message_length field a decoder accepts
     max_length: int
     path: PathKey
+    strict: Strict | None = None
     # Filled in by layout:
     payload_offset: int = -1
 

@@ -58,6 +58,25 @@ class SerialLine:
     data_bits: int
     parity: str
     stop_bits: int
+    idle_byte_times: int | None = None  # E41: None when the spec gives no idle threshold
+
+    @property
+    def bits_per_byte(self) -> int:
+        """Start bit, data bits, parity bit (if any), stop bits."""
+        return 1 + self.data_bits + (self.parity != "none") + self.stop_bits
+
+    @property
+    def idle_timeout_us(self) -> int | None:
+        """The idle threshold in whole microseconds (rounded up), or None."""
+        if self.idle_byte_times is None:
+            return None
+        return -(-self.idle_byte_times * self.bits_per_byte * 1_000_000 // self.baud_rate)
+
+    @property
+    def idle_timeout_s(self) -> float | None:
+        """The idle threshold in seconds, or None."""
+        us = self.idle_timeout_us
+        return None if us is None else us / 1_000_000
 
 
 @dataclass(frozen=True)

@@ -88,6 +88,9 @@ def check_frame(spec: LoadedSpec, frame: dict[str, Any], names: Names) -> None:
         raise spec.error(("frame", "message_length"), f"min {lengths['min']} is above max {lengths['max']}")
     if lengths["max"] > MESSAGE_LENGTH_MAX:
         raise spec.error(("frame", "message_length", "max"), "the message length is a u16")
+    strict = frame.get("strict")
+    if strict is not None and strict["message_type"] not in {t["name"] for t in frame["message_types"]}:
+        raise spec.error(("frame", "strict", "message_type"), f"unknown message type {strict['message_type']!r}")
 
 
 def check_payloads(spec: LoadedSpec, payloads: list[dict[str, Any]], names: Names) -> None:

@@ -23,6 +23,9 @@ MIN_PAYLOAD = MIN_LENGTH - 6
 MAX_PAYLOAD = MAX_LENGTH - 6
 COMMAND = 0
 DATA = 1
+DEVICE_RESERVED = 0  # E42: the reserved byte this AHRS writes in its data frames
+# E41: a message never spans an idle line; 1152 byte times at 115200 baud, 10 bits a byte (8N1).
+IDLE_US = 1152 * 10 * 1_000_000 // 115200
 
 
 class OracleError(Exception):
@@ -63,8 +66,9 @@ def frame(message_type: int, payload: bytes, reserved: int = 0) -> bytes:
     return HEADER + body + struct.pack("<H", checksum(body))
 
 
-def decode_frame(data: bytes) -> tuple[int, int, bytes]:
-    """One whole frame, checks in the order of spec/README.md; returns (type, reserved, payload)."""
+def decode_frame(data: bytes, strict: bool = False) -> tuple[int, int, bytes]:
+    """One whole frame, checks in the order of spec/README.md; returns (type, reserved, payload).
+    Strict (E42): after every other check, a data frame's reserved byte must be DEVICE_RESERVED."""
     if len(data) < 1:
         raise OracleError("truncated", 0)
     if data[0] != HEADER[0]:
@@ -86,6 +90,8 @@ def decode_frame(data: bytes) -> tuple[int, int, bytes]:
         raise OracleError("bad_checksum", length, "checksum")
     if len(data) > length + 2:
         raise OracleError("trailing_data", length + 2)
+    if strict and data[2] == DATA and data[3] != DEVICE_RESERVED:
+        raise OracleError("bad_reserved", 3, "reserved")
     return data[2], data[3], data[HEAD_SIZE:length]
 
 
@@ -570,17 +576,31 @@ def sentence_values(raw: dict[str, int]) -> dict[str, float | int]:
 # --- The stream decoder: leftmost valid message (spec/README.md) ---------------------------------
 
 
-def scan(data: bytes) -> tuple[list[tuple[str, bytes]], int]:
+def scan_segments(segments: list[bytes], strict: bool = False) -> tuple[list[tuple[str, bytes]], int]:
+    """`scan` of input cut by idle lines (E41): no message spans an idle gap, so each segment
+    between two gaps is scanned on its own, as if the input ended there."""
+    events: list[tuple[str, bytes]] = []
+    discarded = 0
+    for segment in segments:
+        more, count = scan(segment, strict)
+        events += more
+        discarded += count
+    return events, discarded
+
+
+def scan(data: bytes, strict: bool = False) -> tuple[list[tuple[str, bytes]], int]:
     """Events ("frame" | "nmea", bytes) and the discarded count, for the whole input at once.
 
     Chunking never changes the result, so the whole input is looked at in one piece; a candidate
     that would need bytes beyond the end is discarded one byte at a time, as `finish` does.
+    Strict: data frames whose reserved byte is not DEVICE_RESERVED are not messages (E42).
     """
     events: list[tuple[str, bytes]] = []
     discarded = 0
     pos = 0
     while pos < len(data):
-        size = _frame_at(data, pos) if data[pos] == HEADER[0] else _sentence_at(data, pos) if data[pos] == 0x24 else 0
+        first = data[pos]
+        size = _frame_at(data, pos, strict) if first == HEADER[0] else _sentence_at(data, pos) if first == 0x24 else 0
         if size:
             events.append(("frame" if data[pos] == HEADER[0] else "nmea", data[pos : pos + size]))
             pos += size
@@ -590,12 +610,12 @@ def scan(data: bytes) -> tuple[list[tuple[str, bytes]], int]:
     return events, discarded
 
 
-def _frame_at(data: bytes, pos: int) -> int:
+def _frame_at(data: bytes, pos: int, strict: bool) -> int:
     if len(data) - pos < HEAD_SIZE:
         return 0
     length: int = struct.unpack_from("<H", data, pos + 4)[0]
     try:
-        decode_frame(data[pos : pos + length + 2])
+        decode_frame(data[pos : pos + length + 2], strict)
     except OracleError:
         return 0
     return length + 2

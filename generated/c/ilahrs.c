@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+/* Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
  * Do not edit: change the spec or the generator and run `make generate`.
  *
  * The spec's tables, then the library's fixed code, which walks them (generator/targets/c/runtime/).
@@ -85,7 +85,7 @@ static void put_le(uint8_t *p, uint32_t value, size_t size);
 
 /* Error kind names, the text defaults of char fields and the variants' part numbers: in every
  * build. */
-static const char ilahrs_error_names[159] =
+static const char ilahrs_error_names[172] =
     "truncated\000"
     "bad_header\000"
     "bad_message_type\000"
@@ -97,7 +97,8 @@ static const char ilahrs_error_names[159] =
     "malformed\000"
     "buffer_too_small\000"
     "unexpected_message\000"
-    "timeout";
+    "timeout\000"
+    "bad_reserved";
 
 static const char ilahrs_text_names[1] = "";
 
@@ -120,6 +121,7 @@ static const uint8_t ilahrs_error_offsets[] = {
     [ILAHRS_ERR_BUFFER_TOO_SMALL - 1] = 115,
     [ILAHRS_ERR_UNEXPECTED_MESSAGE - 1] = 132,
     [ILAHRS_ERR_TIMEOUT - 1] = 151,
+    [ILAHRS_ERR_BAD_RESERVED - 1] = 159,
 };
 
 static const uint8_t ilahrs_part_offsets[ILAHRS_VARIANT_COUNT] = {

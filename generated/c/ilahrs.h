@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+/* Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /**
@@ -7,7 +7,7 @@
  * tables, the Unit Status Word, $PAHR sentences and a stream decoder, in C99.
  *
  * Spec ilahrs 1.0.0; every protocol fact below comes from spec/ilahrs.yaml
- * (errata E1-E40 there explain each choice where the ICD is unclear).
+ * (errata E1-E42 there explain each choice where the ICD is unclear).
  */
 /**
  * Copy ilahrs.h and ilahrs.c into your project; there is nothing to configure. The library
@@ -85,7 +85,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8"
+#define ILAHRS_SPEC_HASH "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
 
@@ -129,10 +129,13 @@ typedef enum ilahrs_error_kind {
     ILAHRS_ERR_UNEXPECTED_MESSAGE = 11,
     /** An answer the protocol requires did not arrive in time (host session). */
     ILAHRS_ERR_TIMEOUT = 12,
+    /** Strict decoding only - a data frame's reserved byte is not the value the AHRS sends
+     *  (E42). */
+    ILAHRS_ERR_BAD_RESERVED = 13,
 } ilahrs_error_kind_t;
 
 /** Number of error kinds, ILAHRS_OK included. */
-#define ILAHRS_ERROR_KIND_COUNT 13
+#define ILAHRS_ERROR_KIND_COUNT 14
 
 /* ======================================================================================== */
 /* Frame (Table 6.2, Table 6.3)                                                             */
@@ -180,7 +183,8 @@ typedef struct ilahrs_frame {
     /** 0 for commands, 1 for data. Every AHRS output is data (Table 6.2). */
     uint8_t message_type;
     /** Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless
-     *  told otherwise (E6). */
+     *  told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the
+     *  AHRS sends (`strict`, E42). */
     uint8_t reserved;
     /** The payload. After ilahrs_frame_parse() it points into the parsed bytes. */
     const uint8_t *payload;

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+# Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 # Do not edit: change the spec or the generator and run `make generate`.
 #
 # Kaitai Struct description of the Inertial Labs AHRS Interface Control Document, revision 1.7
@@ -52,7 +52,8 @@ seq:
     type: u1
     doc: |
       Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless
-      told otherwise (E6).
+      told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the
+      AHRS sends (`strict`, E42).
   - id: message_length
     -orig-id: Message length
     type: u2

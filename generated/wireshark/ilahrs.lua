@@ -1,4 +1,4 @@
--- Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+-- Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 -- Do not edit: change the spec or the generator and run `make generate`.
 --
 -- Wireshark dissector for the Inertial Labs AHRS Interface Control Document, revision 1.7
@@ -12,7 +12,7 @@
 local SPEC = {
   name = "ilahrs",
   version = "1.0.0",
-  sha256 = "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8",
+  sha256 = "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887",
   icd = "Inertial Labs AHRS Interface Control Document, revision 1.7",
   byte_order = "little",
   max_message_size = 82,
@@ -39,7 +39,7 @@ SPEC.frame = {
   header = { 0xAA, 0x55 },
   fields = {
     { name = "message_type", icd_name = "Message type", type = "u8", offset = 2, size = 1, doc = "0 for commands, 1 for data. Every AHRS output is data (Table 6.2)." },
-    { name = "reserved", icd_name = "Reserved", type = "u8", offset = 3, size = 1, doc = "Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6)." },
+    { name = "reserved", icd_name = "Reserved", type = "u8", offset = 3, size = 1, doc = "Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the AHRS sends (`strict`, E42)." },
     { name = "message_length", icd_name = "Message length", type = "u16", offset = 4, size = 2, doc = "Number of bytes after the 2-byte header, message type through checksum (Table 6.2)." },
   },
   message_type_offset = 2,

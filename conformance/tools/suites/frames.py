@@ -1,4 +1,4 @@
-"""frames: whole frames decoded (each check of spec/README.md in order) and built."""
+"""frames: whole frames decoded (each check of spec/README.md in order, and strictly: E42) and built."""
 
 from __future__ import annotations
 
@@ -12,9 +12,9 @@ from .messages import Messages
 SUITE = "frames"
 
 
-def _decoded(data: bytes) -> Any:
+def _decoded(data: bytes, strict: bool) -> Any:
     def run() -> dict[str, Any]:
-        mtype, reserved, payload = o.decode_frame(data)
+        mtype, reserved, payload = o.decode_frame(data, strict)
         return {"message_type": mtype, "reserved": reserved, "payload": hx(payload)}
 
     return attempt(run)
@@ -37,9 +37,12 @@ def vectors() -> list[Vector]:
     out: list[Vector] = []
     for case in data["decode"]:
         frame = messages.build(case["bytes"])
-        out.append(
-            vec(f"frame_decode/{case['name']}", "frame_decode", hx(frame), _decoded(frame), expand(case["note"], names))
-        )
+        strict = case.get("strict", False)
+        note = expand(case["note"], names)
+        vector = vec(f"frame_decode/{case['name']}", "frame_decode", hx(frame), _decoded(frame, strict), note)
+        if strict:
+            vector["options"] = {"strict": True}
+        out.append(vector)
     for case in data["encode"]:
         input_ = {**case["input"], "payload": hx(messages.build(case["input"]["payload"]))}
         text = f"{expand(case['note'], names)}; spec/README.md, frame encode"

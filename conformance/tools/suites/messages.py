@@ -121,6 +121,15 @@ class Messages:
         data[spec["byte"]] ^= 1 << spec["bit"]
         return bytes(data)
 
+    def _shift(self, spec: Mapping[str, Any]) -> bytes:
+        """One byte moved by a signed amount (never wrapped): with an opposite shift elsewhere in
+        the summed bytes, the 16-bit checksum stays the same (E42)."""
+        data = bytearray(self.build(spec["shift"]))
+        value = data[spec["byte"]] + spec["by"]
+        assert 0 <= value <= 0xFF, spec
+        data[spec["byte"]] = value
+        return bytes(data)
+
     def _nmea(self, spec: Mapping[str, Any]) -> bytes:
         return o.sentence(spec["nmea"], spec.get("checksum")).encode("latin-1")
 
@@ -139,4 +148,5 @@ class Messages:
         "nmea": _nmea,
         "replace": _replace,
         "flip": _flip,
+        "shift": _shift,
     }

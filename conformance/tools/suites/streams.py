@@ -4,8 +4,9 @@ against it.
 
 cases/streams.json: "messages" names frames and sentences (suites/messages.py); a sweep feeds one
 input in every chunk size; a case gives its chunks, the events it means to produce and the number
-of bytes discarded; a soak is a seeded random mix of thousands of messages. Every note ends with
-the rule ("phrases").
+of bytes discarded, and may say that the line is idle after a chunk for a number of microseconds
+("idle", E41) or that the decoder is strict ("strict", E42); a soak is a seeded random mix of
+thousands of messages. Every note ends with the rule ("phrases").
 """
 
 from __future__ import annotations
@@ -23,16 +24,42 @@ SUITE = "streams"
 Event = tuple[str, bytes]
 
 
+def _segments(chunks: list[bytes], idle: list[dict[str, int]]) -> list[bytes]:
+    """The input cut where the line is idle for at least the E41 threshold after a chunk."""
+    cuts = {gap["after"] for gap in idle if gap["us"] >= o.IDLE_US}
+    segments = [b""]
+    for index, chunk in enumerate(chunks):
+        segments[-1] += chunk
+        if index in cuts:
+            segments.append(b"")
+    return segments
+
+
 def _stream_vec(
-    id_: str, chunks: list[bytes], note: str, intended: list[Event], discarded: int, *, compact: bool = False
+    id_: str,
+    chunks: list[bytes],
+    note: str,
+    intended: list[Event],
+    discarded: int,
+    *,
+    compact: bool = False,
+    idle: list[dict[str, int]] | None = None,
+    strict: bool = False,
 ) -> Vector:
-    """A stream vector: the oracle's scan of the whole input must give the intended events and count."""
-    events, scanned = o.scan(b"".join(chunks))
+    """A stream vector: the oracle's scan of the whole input (cut at idle gaps) must give the
+    intended events and count."""
+    events, scanned = o.scan_segments(_segments(chunks, idle or []), strict)
     assert events == intended, (id_, events, intended)  # the intended answer, cross-checked against the oracle
     assert scanned == discarded, (id_, scanned, discarded)
     show = (lambda b: b.hex().upper()) if compact else hx
     expect = [{"frame": show(data)} if kind == "frame" else {"nmea": data.decode("latin-1")} for kind, data in events]
-    return vec(id_, "stream", {"chunks": [show(c) for c in chunks]}, {"events": expect, "discarded": discarded}, note)
+    input_: dict[str, Any] = {"chunks": [show(c) for c in chunks]}
+    if idle:
+        input_["idle"] = idle
+    out = vec(id_, "stream", input_, {"events": expect, "discarded": discarded}, note)
+    if strict:
+        out["options"] = {"strict": True}
+    return out
 
 
 def _split(data: bytes, size: int) -> list[bytes]:
@@ -62,8 +89,10 @@ def _cases(data: dict[str, Any], messages: Messages, names: dict[str, str]) -> l
         if "chunk_size" in case:
             chunks = _split(b"".join(chunks), case["chunk_size"])
         text = f"{expand(case['note'], names)}; {names['rule']}"
+        intended = _events(messages, case["events"])
+        idle, strict = case.get("idle"), case.get("strict", False)
         out.append(
-            _stream_vec(f"stream/{case['name']}", chunks, text, _events(messages, case["events"]), case["discarded"])
+            _stream_vec(f"stream/{case['name']}", chunks, text, intended, case["discarded"], idle=idle, strict=strict)
         )
     return out
 

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+# Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -13,7 +13,7 @@ from typing import Final
 from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8"
+SPEC_SHA256: Final = "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887"
 ICD_DATE: Final = (2014, 3, 11)
 """The date of Inertial Labs AHRS Interface Control Document, rev 1.7: (year, month, day)."""
 
@@ -47,6 +47,8 @@ class ErrorKind(StrEnum):
     """The peer sent a message that the protocol state does not allow (host session and device model)."""
     TIMEOUT = "timeout"
     """An answer the protocol requires did not arrive in time (host session)."""
+    BAD_RESERVED = "bad_reserved"
+    """Strict decoding only - a data frame's reserved byte is not the value the AHRS sends (E42)."""
 
 
 class MessageType(IntEnum):

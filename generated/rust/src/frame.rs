@@ -1,5 +1,5 @@
 // Copied from generator/targets/rust/runtime/crate/frame.rs for spec/ilahrs.yaml,
-// spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+// spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 // Do not edit: change the runtime source and run `make generate`.
 //! The binary frame: header, message type, reserved byte, message length, payload and checksum
 //! (the spec's `frame`; positions and sizes in [`field`] and the constants below).

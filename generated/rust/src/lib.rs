@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+// Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 #![doc = include_str!("../README.md")]
@@ -39,7 +39,7 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8";
+pub const SPEC_HASH: &str = "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
 /// True when numbers are sent most significant byte first (the spec's `byte_order`).

@@ -36,8 +36,11 @@ CLANG_FORMAT_CONFIG = Path(__file__).resolve().parent / ".clang-format"
 
 def format(files: dict[str, str]) -> dict[str, str]:
     """The generated C and headers through clang-format, with the committed configuration."""
-    return run_formatter(files, (".c", ".h"), lambda paths: [
-        tool("clang-format"), f"--style=file:{CLANG_FORMAT_CONFIG}", "-i", *map(str, paths)])
+    return run_formatter(
+        files,
+        (".c", ".h"),
+        lambda paths: [tool("clang-format"), f"--style=file:{CLANG_FORMAT_CONFIG}", "-i", *map(str, paths)],
+    )
 
 
 # The $PAHR field reader saturates magnitudes here (ilahrs.c, SATURATED): every range must lie below.
@@ -142,7 +145,7 @@ ARRAY_KINDS = ("char", "reserved")
 
 
 def field_packing(t: tables.Tables) -> FieldPacking:
-    if t.kinds[-len(ARRAY_KINDS):] != ARRAY_KINDS:
+    if t.kinds[-len(ARRAY_KINDS) :] != ARRAY_KINDS:
         raise ValueError("the C field table needs the array kinds (char, reserved) last")
     kind_bits = bits_for(len(t.kinds))
     encoding_bits = bits_for(len(t.encodings))
@@ -172,24 +175,33 @@ C_WIDTHS = {"int8_t": 1, "uint8_t": 1, "int16_t": 2, "uint16_t": 2, "int32_t": 4
 def row_members(columns: dict[str, list[int] | str]) -> list[tuple[str, str]]:
     """The members of a table row, (C type, name): a column of integers gets the smallest type that
     holds them (a string is a fixed type); widest first, so that the row has no padding inside."""
-    members = [(kind if isinstance(kind, str) else filters.c_int_type(min(kind, default=0), max(kind, default=0)), name)
-               for name, kind in columns.items()]
+    members = [
+        (kind if isinstance(kind, str) else filters.c_int_type(min(kind, default=0), max(kind, default=0)), name)
+        for name, kind in columns.items()
+    ]
     return sorted(members, key=lambda m: -C_WIDTHS[m[0]])
 
 
 def scale_members(t: tables.Tables) -> list[tuple[str, str]]:
-    return row_members({"multiplier": [s.multiplier for s in t.scales], "divisor": [s.divisor for s in t.scales],
-                        "parameter": [s.parameter for s in t.scales]})
+    return row_members(
+        {
+            "multiplier": [s.multiplier for s in t.scales],
+            "divisor": [s.divisor for s in t.scales],
+            "parameter": [s.parameter for s in t.scales],
+        }
+    )
 
 
 def default_members(t: tables.Tables) -> list[tuple[str, str]]:
     """ilahrs_defaults: the field's row, the text pool offset of a char default (0 for a number), the
     bits of a numeric field's member."""
-    return row_members({
-        "field": [r.field for r in t.defaults],
-        "text": [max(r.text, 0) for r in t.defaults],
-        "bits": "uint32_t",
-    })
+    return row_members(
+        {
+            "field": [r.field for r in t.defaults],
+            "text": [max(r.text, 0) for r in t.defaults],
+            "bits": "uint32_t",
+        }
+    )
 
 
 def longest_sentence(nmea: Nmea) -> int:
@@ -245,8 +257,10 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
         pahr_longest = longest_sentence(spec.nmea)
         filters.pahr_max_divisor(spec.nmea)  # refuses a divisor the exact rounding does not cover
         if pahr_longest > spec.nmea.max_length:
-            raise ValueError(f"an in-range $PAHR sentence can be {pahr_longest} characters, above the maximum "
-                             f"{spec.nmea.max_length}: the C builder writes without length checks")
+            raise ValueError(
+                f"an in-range $PAHR sentence can be {pahr_longest} characters, above the maximum "
+                f"{spec.nmea.max_length}: the C builder writes without length checks"
+            )
     usw_flags = 0
     if spec.status_word is not None:
         for flag in spec.status_word.flags:

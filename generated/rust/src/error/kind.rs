@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+// Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! The spec's one list of error kinds (`errors`), shared with every other binding.
@@ -37,11 +37,14 @@ pub enum ErrorKind {
     UnexpectedMessage,
     /// An answer the protocol requires did not arrive in time (host session).
     Timeout,
+    /// Strict decoding only - a data frame's reserved byte is not the value the AHRS sends
+    /// (E42).
+    BadReserved,
 }
 
 impl ErrorKind {
     /// Every kind, in the spec's order.
-    pub const ALL: [ErrorKind; 12] = [
+    pub const ALL: [ErrorKind; 13] = [
         ErrorKind::Truncated,
         ErrorKind::BadHeader,
         ErrorKind::BadMessageType,
@@ -54,6 +57,7 @@ impl ErrorKind {
         ErrorKind::BufferTooSmall,
         ErrorKind::UnexpectedMessage,
         ErrorKind::Timeout,
+        ErrorKind::BadReserved,
     ];
 
     /// The kind's name in the spec (`bad_checksum`), the same in every binding.
@@ -71,6 +75,7 @@ impl ErrorKind {
             ErrorKind::BufferTooSmall => "buffer_too_small",
             ErrorKind::UnexpectedMessage => "unexpected_message",
             ErrorKind::Timeout => "timeout",
+            ErrorKind::BadReserved => "bad_reserved",
         }
     }
 
@@ -89,6 +94,7 @@ ErrorKind::Malformed => "Text that does not follow the sentence grammar (missing
 ErrorKind::BufferTooSmall => "The caller's output buffer cannot hold the message being built.",
 ErrorKind::UnexpectedMessage => "The peer sent a message that the protocol state does not allow (host session and device model).",
 ErrorKind::Timeout => "An answer the protocol requires did not arrive in time (host session).",
+ErrorKind::BadReserved => "Strict decoding only - a data frame's reserved byte is not the value the AHRS sends (E42).",
 }
     }
 }

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 38d8054fc9091a0f2db18707b13da0eb865efacbd31314c577a8365c9c4e97c8.
+// Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! The frame as the spec lays it out (Table 6.2, Table 6.3): sizes, field positions, message types.
@@ -35,7 +35,7 @@ pub mod field {
     pub const HEADER: Field = 0..2;
     /// Message type (u8): 0 for commands, 1 for data. Every AHRS output is data (Table 6.2).
     pub const MESSAGE_TYPE: Field = 2..3;
-    /// Reserved (u8): Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6).
+    /// Reserved (u8): Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the AHRS sends (`strict`, E42).
     pub const RESERVED: Field = 3..4;
     /// Message length (u16): Number of bytes after the 2-byte header, message type through checksum (Table 6.2).
     pub const MESSAGE_LENGTH: Field = 4..6;
