@@ -39,6 +39,6 @@ test-conformance-example: setup
 	@command -v node >/dev/null || { echo "test-conformance-example: needs Node.js 20 (node)" >&2; exit 1; }
 	mkdir -p $(BUILD)
 	$(PY) conformance/harness.py --command "node conformance/examples/javascript/runner.mjs" \
-		--name javascript --kinds $(EXAMPLE_KINDS) --junit $(BUILD)/conformance-example.xml
+		--name javascript --kinds $(EXAMPLE_KINDS) --options - --junit $(BUILD)/conformance-example.xml
 
 TEST_TARGETS += test-conformance-example

@@ -268,6 +268,56 @@ def test_unreadable_suites_exit_two(tmp_path: Path) -> None:
     assert run("--vectors", str(tmp_path / "u"), "--command", "true")[0] == 2
 
 
+OPTIONED: list[dict[str, Any]] = [
+    {"id": "f/strict", "kind": "frame_decode", "input": "AA 55 01 3C 07 00 01 45 00", "options": {"strict": True},
+     "expect": {"error": "bad_reserved", "offset": 3, "field": "reserved"}},
+    {"id": "f/lenient", "kind": "frame_decode", "input": "AA 55 01 3C 07 00 01 45 00", "options": {"strict": False},
+     "expect": {"reserved": 60}},
+    {"id": "s/idle", "kind": "stream", "input": {"chunks": ["AA 55", "00"], "idle": [{"after": 0, "us": 100000}]},
+     "options": {"strict": True}, "expect": {"discarded": 3}},
+]
+
+
+def test_options_and_idle_gaps_are_request_tokens() -> None:
+    v = H.Vector("t", "a", "stream", {"chunks": ["aa", "55"], "idle": [{"after": 1, "us": 7}, {"after": 0, "us": 9}]},
+                 {}, None, {"strict": True})
+    assert H.request(v) == "stream AA,55 idle=1:7,0:9 strict"
+    assert H.request(H.Vector("t", "a", "frame_decode", "aa", {}, None, {"strict": False})) == "frame_decode AA"
+    with pytest.raises(H.SuiteError):  # an idle gap after a chunk that does not exist
+        H.request(vector("a", "stream", {"chunks": ["aa"], "idle": [{"after": 1, "us": 7}]}, {}))
+    with pytest.raises(H.SuiteError):
+        H.request(H.Vector("t", "a", "frame_decode", "aa", {}, None, {"strict": 1}))
+
+
+def test_a_vector_with_an_unknown_option_fails_and_is_not_sent(tmp_path: Path) -> None:
+    unknown: list[dict[str, Any]] = [{"id": "f/x", "kind": "frame_decode", "input": "AA", "options": {"paranoid": True},
+                "expect": {"error": "truncated"}},
+               {"id": "c/x", "kind": "checksum", "input": "", "options": {"strict": True}, "expect": 0}]
+    vectors = write_suite(tmp_path / "v", unknown)
+    bindings = register(tmp_path / "b", {"frame_decode AA": "error truncated 1 -", "checksum -": "ok 0"},
+                        ["frame_decode", "checksum"])
+    code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
+    assert code == 1 and "2 FAILED" in text
+    assert "option paranoid unknown to this harness" in text and "option strict unknown to this harness" in text
+
+
+def test_options_a_binding_does_not_list_are_not_supported(tmp_path: Path) -> None:
+    vectors = write_suite(tmp_path / "v", OPTIONED)
+    table = {"frame_decode AA55013C0700014500 strict": "error bad_reserved 3 reserved",
+             "frame_decode AA55013C0700014500": "ok message_type=1 reserved=60 payload=01",
+             "stream AA55,00 idle=0:100000 strict": "ok discarded=3 events=-"}
+    bindings = register(tmp_path / "b", table, ["frame_decode", "stream"])
+    code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
+    assert code == 0 and "3 passed" in text
+    code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings), "--options", "-")
+    assert code == 0 and "1 passed, 2 n/s" in text
+    registration = json.loads((bindings / "fake.json").read_text())
+    (bindings / "fake.json").write_text(json.dumps({**registration, "options": []}))
+    code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
+    assert code == 0 and "1 passed, 2 n/s" in text
+    assert run("--vectors", str(vectors), "--bindings-dir", str(bindings), "--options", "paranoid")[0] == 2
+
+
 # --- the Python runner's own protocol handling ------------------------------------------------------
 
 
@@ -277,6 +327,13 @@ def test_python_runner_answers_in_protocol_forms() -> None:
     assert RUNNER.answer("teleport x") == "unsupported"
     assert RUNNER.answer("payload_encode acknowledgement - checksum=65536") == "error out_of_range 0 checksum"
     assert RUNNER.answer("stream -") == "ok discarded=0 events=-"
+    stale = "AA5501000F00FFFFFFFFFFF6,AA5500000700808700"  # 12 bytes of a frame, then AHRScont1
+    assert RUNNER.answer(f"stream {stale} idle=0:99999") == "ok discarded=4 events=F:AA5501000F00FFFFFFFFFFF6AA55000007"
+    assert RUNNER.answer(f"stream {stale} idle=0:100000") == "ok discarded=12 events=F:AA5500000700808700"
+    assert RUNNER.answer("frame_decode AA55013C0700014500 strict") == "error bad_reserved 3 reserved"
+    assert RUNNER.answer("frame_decode AA55013C0700014500") == "ok message_type=1 reserved=60 payload=01"
+    assert RUNNER.answer("frame_decode AA55013C0700014500 paranoid").startswith("crash unknown")
+    assert RUNNER.answer("stream - idle=0:1 lenient").startswith("crash unknown")
 
 
 def test_python_runner_walks_the_state_machine() -> None:

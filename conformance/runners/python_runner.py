@@ -81,8 +81,24 @@ def checksum(args: list[str]) -> str:
     return f"ok {ilahrs.checksum(read_hex(args[0]))}"
 
 
+class UnknownOptionError(Exception):
+    """A request token this runner does not know: the vector fails, it is never ignored."""
+
+
+def options(tokens: list[str], known: tuple[str, ...]) -> dict[str, str]:
+    """Option tokens after a request's operands: `NAME` (a flag) or `NAME=VALUE`."""
+    found = {}
+    for token in tokens:
+        name, _, value = token.partition("=")
+        if name not in known:
+            raise UnknownOptionError(token)
+        found[name] = value
+    return found
+
+
 def frame_decode(args: list[str]) -> str:
-    frame = ilahrs.Frame.parse(read_hex(args[0]))
+    strict = "strict" in options(args[1:], ("strict",))
+    frame = ilahrs.Frame.parse(read_hex(args[0]), strict=strict)
     return f"ok message_type={int(frame.message_type)} reserved={frame.reserved} payload={write_hex(frame.payload)}"
 
 
@@ -134,10 +150,17 @@ def nmea_encode(args: list[str]) -> str:
 
 
 def stream(args: list[str]) -> str:
-    decoder = ilahrs.StreamDecoder()
+    given = options(args[1:], ("strict", "idle"))
+    gaps: dict[int, list[int]] = {}
+    for gap in given["idle"].split(",") if "idle" in given else []:
+        after, quiet = gap.split(":")
+        gaps.setdefault(int(after), []).append(int(quiet))
+    decoder = ilahrs.StreamDecoder(strict="strict" in given)
     events: list[ilahrs.StreamEvent] = []
-    for chunk in args[0].split(",") if args else []:
+    for n, chunk in enumerate(args[0].split(",") if args else []):
         events += decoder.feed(read_hex(chunk))
+        for us in gaps.get(n, []):
+            events += decoder.idle(us / 1_000_000)
     events += decoder.finish()
     tokens = [f"F:{write_hex(e.raw)}" if e.frame is not None else f"N:{write_text(e.raw)}" for e in events]
     return f"ok discarded={decoder.discarded} events={','.join(tokens) or '-'}"
@@ -186,6 +209,8 @@ def answer(line: str) -> str:
         return "unsupported"
     try:
         return handler(args)
+    except UnknownOptionError as unknown:
+        return f"crash unknown%20option%20{write_text(str(unknown).encode())}"
     except ilahrs.IlahrsError as err:
         offset = "-" if err.offset is None else str(err.offset)
         return f"error {err.kind.value} {offset} {err.field or '-'}"

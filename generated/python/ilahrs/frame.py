@@ -15,7 +15,7 @@ import struct
 from dataclasses import dataclass
 from typing import Final
 
-from .errors import ErrorKind, IlahrsError, brief, require_bytes
+from .errors import ErrorKind, IlahrsError, brief, require_bytes, require_flag
 from .spec import (
     CHECKSUM_SIZE,
     FRAME_FIELDS,
@@ -34,6 +34,7 @@ from .spec import (
     MIN_PAYLOAD_SIZE,
     PAYLOAD_OFFSET,
     RESERVED_OFFSET,
+    STRICT_RESERVED,
     MessageType,
 )
 
@@ -53,6 +54,7 @@ __all__ = [
     "MIN_PAYLOAD_SIZE",
     "PAYLOAD_OFFSET",
     "RESERVED_OFFSET",
+    "STRICT_RESERVED",
     "Frame",
     "MessageType",
     "checksum",
@@ -71,7 +73,8 @@ def checksum(data: bytes | bytearray | memoryview) -> int:
 
 @dataclass(frozen=True, slots=True)
 class Frame:
-    """One frame: message type, payload and the reserved byte (E6: any value is accepted).
+    """One frame: message type, payload and the reserved byte (E6: any value is accepted, unless
+    decoding is strict, E42).
 
     `build()` fills the length and the checksum; `Frame.parse()` checks them.
     """
@@ -81,10 +84,21 @@ class Frame:
     reserved: int = 0
 
     @classmethod
-    def parse(cls, data: bytes | bytearray | memoryview) -> Frame:
+    def parse(cls, data: bytes | bytearray | memoryview, strict: bool = False) -> Frame:
         """Decode exactly one frame; raise IlahrsError (see spec/README.md for the order of checks).
-        `data` must be a byte string (MALFORMED otherwise: hex text is not decoded for you)."""
+        `data` must be a byte string (MALFORMED otherwise: hex text is not decoded for you).
+        `strict`: after every other check, refuse a frame whose reserved byte is not the one the
+        AHRS writes in frames of its message type (BAD_RESERVED at RESERVED_OFFSET; STRICT_RESERVED).
+
+        >>> Frame.parse(bytes.fromhex("AA 55 01 3C 09 00 01 02 03 4C 00")).reserved
+        60
+        >>> Frame.parse(bytes.fromhex("AA 55 01 3C 09 00 01 02 03 4C 00"), strict=True)
+        Traceback (most recent call last):
+        ...
+        ilahrs.errors.IlahrsError: bad_reserved in reserved at offset 3: reserved byte 0x3c, the AHRS sends 0x00
+        """
         data = require_bytes(data, "data")
+        require_flag(strict, "strict")
         size = len(data)
         for index, expected in enumerate(HEADER):
             if size <= index:
@@ -116,7 +130,11 @@ class Frame:
             raise IlahrsError(ErrorKind.BAD_CHECKSUM, at, "checksum", f"sent {sent:#06x}, computed {computed:#06x}")
         if size > end:
             raise IlahrsError(ErrorKind.TRAILING_DATA, end, None, f"{size - end} bytes after the frame")
-        return cls(message_type, data[PAYLOAD_OFFSET:at], data[RESERVED_OFFSET])
+        reserved = data[RESERVED_OFFSET]
+        if strict and STRICT_RESERVED.get(message_type, reserved) != reserved:
+            detail = f"reserved byte {reserved:#04x}, the AHRS sends {STRICT_RESERVED[message_type]:#04x}"
+            raise IlahrsError(ErrorKind.BAD_RESERVED, RESERVED_OFFSET, "reserved", detail)
+        return cls(message_type, data[PAYLOAD_OFFSET:at], reserved)
 
     def build(self) -> bytes:
         """Encode the frame, filling in message length and checksum."""

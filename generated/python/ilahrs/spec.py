@@ -92,7 +92,17 @@ MAX_FRAME_SIZE: Final = 60
 MAX_MESSAGE_SIZE: Final = 82
 """The longest frame or sentence: the most bytes a stream decoder ever holds."""
 
+STRICT_RESERVED: Final[Mapping[int, int]] = MappingProxyType({1: 0})
+"""Strict decoding (E42): message type -> the reserved byte the AHRS
+writes in such frames. A decoder asked to be strict refuses a frame of such a type with another reserved
+byte (BAD_RESERVED); without the option any value is accepted."""
+
 SERIAL_LINE: Final[Mapping[str, int | str]] = MappingProxyType(
     {"baud_rate": 115200, "data_bits": 8, "parity": "none", "stop_bits": 1}
 )
 """The AHRS serial line."""
+IDLE_BYTE_TIMES: Final = 1152
+"""How long the line may be quiet inside a message, in byte times of 10 bits at 115200 baud."""
+IDLE_TIMEOUT: Final = 0.1
+"""IDLE_BYTE_TIMES in seconds: a stream decoder told that the line has been quiet this long gives up
+the message it waits for (StreamDecoder.idle)."""

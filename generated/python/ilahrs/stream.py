@@ -7,6 +7,11 @@ At each position a valid frame or a valid sentence is accepted and consumed; oth
 is discarded and scanning resumes at the next byte. So a false header, an absurd length or a
 corrupted frame never costs a following good message, and the decoder never holds more than
 MAX_MESSAGE_SIZE bytes. See spec/README.md for the exact rules every binding follows.
+
+A message never spans an idle line (E41): `idle(quiet)` tells the decoder how long the line has
+been quiet, and from IDLE_TIMEOUT on it decides on every byte it holds, as `finish` does, so the
+start of a frame whose rest never came costs only its own bytes. `StreamDecoder(strict=True)`
+refuses data frames whose reserved byte is not the AHRS's (E42).
 """
 
 from __future__ import annotations
@@ -15,7 +20,7 @@ from collections.abc import Generator
 from dataclasses import dataclass
 from typing import Final
 
-from .errors import IlahrsError, require_bytes
+from .errors import ErrorKind, IlahrsError, brief, require_bytes, require_flag
 from .frame import (
     CHECKSUM_SIZE,
     HEADER,
@@ -26,13 +31,14 @@ from .frame import (
     MIN_MESSAGE_LENGTH,
     PAYLOAD_OFFSET,
     RESERVED_OFFSET,
+    STRICT_RESERVED,
     Frame,
     MessageType,
 )
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
-from .spec import MAX_MESSAGE_SIZE
+from .spec import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE
 
-__all__ = ["MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+__all__ = ["IDLE_BYTE_TIMES", "IDLE_TIMEOUT", "MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
 
 _NEED_MORE: Final = -1
 _INVALID: Final = 0
@@ -62,12 +68,23 @@ class StreamDecoder:
     [b'\\x80']
     >>> decoder.discarded
     1
+
+    The start of a frame whose rest never comes holds what follows, until the line is idle:
+
+    >>> stale = bytes.fromhex("AA 55 01 00 3A 00")
+    >>> decoder.feed(stale + bytes.fromhex("AA 55 00 00 07 00 41 48 00")), decoder.pending
+    ([], 15)
+    >>> [e.raw.hex(" ") for e in decoder.idle(IDLE_TIMEOUT)], decoder.discarded
+    (['aa 55 00 00 07 00 41 48 00'], 7)
+
+    `strict`: refuse data frames whose reserved byte is not the AHRS's (STRICT_RESERVED, E42).
     """
 
-    __slots__ = ("_buffer", "discarded")
+    __slots__ = ("_buffer", "_strict", "discarded")
 
-    def __init__(self) -> None:
+    def __init__(self, strict: bool = False) -> None:
         self._buffer = bytearray()
+        self._strict: dict[int, int] = dict(STRICT_RESERVED) if require_flag(strict, "strict") else {}
         self.discarded = 0
         """Input bytes that belong to no accepted message."""
 
@@ -103,6 +120,20 @@ class StreamDecoder:
         """The input has ended: decide on every byte still held."""
         return self._scan(final=True)
 
+    def idle(self, quiet: float | None = None) -> list[StreamEvent]:
+        """The line has been quiet for `quiet` seconds since the last byte fed (None: it is idle).
+        From IDLE_TIMEOUT on, decide on every byte held as `finish` does (a message never spans
+        an idle line, E41) and return the messages found behind the ones given up; the decoder
+        then goes on with the next bytes fed. A shorter quiet time changes nothing. NaN, a
+        negative time or anything but a number: IlahrsError(OUT_OF_RANGE), nothing changes."""
+        if quiet is not None:
+            if isinstance(quiet, bool) or not isinstance(quiet, (int, float)) or not quiet >= 0:
+                detail = f"{brief(quiet)} is not a quiet time in seconds (0 or more)"
+                raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "quiet", detail)
+            if quiet < IDLE_TIMEOUT:
+                return []
+        return self._scan(final=True)
+
     def _scan(self, final: bool) -> list[StreamEvent]:
         buffer = self._buffer
         events: list[StreamEvent] = []
@@ -111,7 +142,7 @@ class StreamDecoder:
         while pos < size:
             first = buffer[pos]
             if first == _FRAME_START:
-                used, event = _frame_at(buffer, pos, size)
+                used, event = _frame_at(buffer, pos, size, self._strict)
             elif first == _SENTENCE_START:
                 used, event = _sentence_at(buffer, pos, size)
             else:
@@ -139,7 +170,7 @@ def _next_start(buffer: bytearray, pos: int, size: int) -> int:
     return min(candidates) if candidates else size
 
 
-def _frame_at(buffer: bytearray, pos: int, size: int) -> tuple[int, StreamEvent | None]:
+def _frame_at(buffer: bytearray, pos: int, size: int, strict: dict[int, int]) -> tuple[int, StreamEvent | None]:
     available = size - pos
     for index in range(1, HEADER_SIZE):
         if available <= index:
@@ -159,6 +190,10 @@ def _frame_at(buffer: bytearray, pos: int, size: int) -> tuple[int, StreamEvent 
     at = pos + total - CHECKSUM_SIZE
     if sum(buffer[pos + HEADER_SIZE : at]) & 0xFFFF != buffer[at] | buffer[at + 1] << 8:
         return _INVALID, None
+    if strict:
+        reserved = buffer[pos + RESERVED_OFFSET]
+        if strict.get(buffer[pos + MESSAGE_TYPE_OFFSET], reserved) != reserved:
+            return _INVALID, None
     raw = bytes(buffer[pos : pos + total])
     frame = Frame(raw[MESSAGE_TYPE_OFFSET], raw[PAYLOAD_OFFSET : total - CHECKSUM_SIZE], raw[RESERVED_OFFSET])
     return total, StreamEvent(raw, frame=frame)

@@ -36,6 +36,7 @@ from xml.etree import ElementTree
 
 __all__ = [
     "KINDS",
+    "OPTIONS",
     "VECTORS_DIR",
     "Answer",
     "Binding",
@@ -73,6 +74,9 @@ KINDS = (
     "session",
 )
 LATER_KINDS: tuple[str, ...] = ()  # kinds of the format this harness does not translate yet
+OPTIONS: dict[str, tuple[str, ...]] = {"strict": ("frame_decode", "stream")}
+"""The vector options this harness sends (`"options"` of a vector), and the kinds each applies to.
+A vector with an option not listed here fails: it is never sent without it."""
 _VERSION_RE = re.compile(r"[0-9]+(?:\.[0-9]+)*")
 SPECIAL_FLOATS = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
 REL_TOL = 1e-9  # engineering values and NMEA numbers
@@ -184,10 +188,16 @@ class Vector:
     input: Any
     expect: Any
     note: str | None
+    options: dict[str, Any] = field(default_factory=dict)
 
     @property
     def where(self) -> str:
         return f"{self.suite}:{self.id}"
+
+    @property
+    def unknown_options(self) -> list[str]:
+        """Options this harness cannot send (not in OPTIONS, or not for this kind)."""
+        return [k for k in self.options if self.kind not in OPTIONS.get(k, ())]
 
 
 def _object(i: object, w: str) -> dict[str, Any]:
@@ -238,10 +248,29 @@ def _nmea_encode(i: object, w: str) -> str:
 
 
 def _stream(i: object, w: str) -> str:
-    chunks = _object(i, w).get("chunks")
+    i = _object(i, w)
+    chunks = i.get("chunks")
     if not isinstance(chunks, list) or not chunks:
         raise SuiteError(f"{w}: chunks must be a non-empty list of hex strings")
-    return "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    line = "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    if "idle" in i:
+        line += " " + _idle_token(i["idle"], len(chunks), w)
+    return line
+
+
+def _idle_token(gaps: object, chunks: int, w: str) -> str:
+    """`idle=AFTER:US,...`: after chunk AFTER (from 0) the line is quiet for US microseconds (E41)."""
+    if not isinstance(gaps, list) or not gaps:
+        raise SuiteError(f'{w}: idle must be a non-empty list of {{"after": i, "us": n}}')
+    parts = []
+    for gap in gaps:
+        if not isinstance(gap, dict) or set(gap) != {"after", "us"}:
+            raise SuiteError(f'{w}: an idle gap is {{"after": i, "us": n}}')
+        after, us = int_value(gap["after"], w), int_value(gap["us"], w)
+        if not 0 <= after < chunks or us < 0:
+            raise SuiteError(f"{w}: idle after chunk {after} of {chunks}, {us} us")
+        parts.append(f"{after}:{us}")
+    return "idle=" + ",".join(parts)
 
 
 def _session_event(event: object, w: str) -> str:
@@ -288,11 +317,18 @@ _REQUESTS: dict[str, Callable[[object, str], str]] = {
 
 
 def request(v: Vector) -> str:
-    """The request line for a vector (the runner protocol, requests)."""
+    """The request line for a vector (the runner protocol, requests), its options last. Options
+    this harness does not know are left out: such a vector must fail (`Vector.unknown_options`)."""
     translate = _REQUESTS.get(v.kind)
     if translate is None:
         raise SuiteError(f"{v.where}: unknown kind {v.kind!r}")
-    return translate(v.input, v.where)
+    line = translate(v.input, v.where)
+    for name, value in v.options.items():
+        if not isinstance(value, bool):
+            raise SuiteError(f"{v.where}: option {name} must be true or false")
+        if value and name not in v.unknown_options:
+            line += f" {name}"
+    return line
 
 
 # --- answers against expectations -----------------------------------------------------------------
@@ -595,8 +631,12 @@ def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
             raise SuiteError(f"{path}: vector {n}: id missing or repeated: {raw['id']!r}")
         if raw["kind"] not in KINDS + LATER_KINDS:
             raise SuiteError(f"{path}: {raw['id']}: unknown kind {raw['kind']!r}")
+        options = raw.get("options", {})
+        if not isinstance(options, dict):
+            raise SuiteError(f"{path}: {raw['id']}: options must be an object")
         seen.add(raw["id"])
-        vectors.append(Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note")))
+        vector = Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note"), options)
+        vectors.append(vector)
     return vectors
 
 
@@ -629,6 +669,7 @@ class Binding:
     command: list[str]
     kinds: list[str] | None  # None: an ad-hoc runner, its own `unsupported` answers decide
     build: str | None
+    options: list[str] | None = None  # the vector options it knows; None: every one (OPTIONS)
 
 
 def _binding(path: Path) -> Binding:
@@ -649,7 +690,10 @@ def _binding(path: Path) -> Binding:
     unknown = [k for k in doc["kinds"] if k not in KINDS + LATER_KINDS]
     if unknown:
         raise BindingError(f"{path}: unknown kinds {unknown}")
-    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"))
+    options = doc.get("options")
+    if options is not None and (not isinstance(options, list) or any(o not in OPTIONS for o in options)):
+        raise BindingError(f"{path}: options must be a list of {', '.join(OPTIONS)}")
+    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options)
 
 
 def load_bindings(directory: Path, only: list[str] | None) -> list[Binding]:
@@ -839,6 +883,15 @@ class _BindingRun:
             self.skip(cell, v, f"{binding.name} does not list the kind {v.kind}")
             return
         line = request(v)
+        if v.unknown_options:
+            unknown = ", ".join(v.unknown_options)
+            self.fail(cell, v, f"option {unknown} unknown to this harness for {v.kind}", line=line)
+            return
+        known = OPTIONS if binding.options is None else binding.options
+        missing = [o for o, value in v.options.items() if value and o not in known]
+        if missing:
+            self.skip(cell, v, f"{binding.name} does not list the option {', '.join(missing)}")
+            return
         if self.crashes >= MAX_CONSECUTIVE_CRASHES:
             self.fail(cell, v, "not run: the runner keeps failing", line=line)
             return
@@ -940,7 +993,7 @@ def report(result: Result, bindings: list[Binding], suites: list[Suite], max_fai
         out.write("  ".join(c.ljust(widths[i]) for i, c in enumerate(row)).rstrip() + "\n")
         if line_no in (0, len(rows) - 2):
             out.write("  ".join("-" * w for w in widths) + "\n")
-    out.write("(n/s: a kind the binding does not list as supported)\n")
+    out.write("(n/s: a kind or vector option the binding does not list as supported)\n")
     for problem in result.problems:
         out.write(f"\nFAILED {problem}\n")
     for shown, failure in enumerate(result.failures):
@@ -1058,6 +1111,11 @@ def add_arguments(
         help="comma-separated kinds to send; others count as not supported (n/s). With --command the runner "
         "is held to these kinds (an `unsupported` answer fails); without, its `unsupported` answers count n/s",
     )
+    parser.add_argument(
+        "--options",
+        help=f"comma-separated vector options the runner knows ({', '.join(OPTIONS)}; default all, `-` for none); "
+        "vectors with another option count as not supported (n/s)",
+    )
     parser.add_argument("-k", dest="pattern", help="only vectors (or live flows) whose id contains this text")
     parser.add_argument("--timeout", type=float, default=20.0, help="seconds to wait for one answer (default 20)")
     parser.add_argument("--max-failures", type=int, default=40, help="failures to print (default 40)")
@@ -1097,16 +1155,22 @@ def _bindings(args: argparse.Namespace) -> list[Binding]:
     unknown = [k for k in kinds or [] if k not in KINDS]
     if unknown:
         raise BindingError(f"unknown kinds {', '.join(unknown)} (kinds: {', '.join(KINDS)})")
+    options = None if args.options is None else [o for o in _names(args.options) if o != "-"]
+    wrong = [o for o in options or [] if o not in OPTIONS]
+    if wrong:
+        raise BindingError(f"unknown options {', '.join(wrong)} (options: {', '.join(OPTIONS)})")
     if args.runner_command:
-        return [Binding(args.name, shlex.split(args.runner_command), kinds, None)]
+        return [Binding(args.name, shlex.split(args.runner_command), kinds, None, options)]
     if args.bindings_dir is None:
         raise BindingError("give the runner with --command (or registrations with --bindings-dir)")
     bindings = load_bindings(args.bindings_dir, _names(args.bindings) if args.bindings else None)
     if not bindings:
         raise BindingError(f"no bindings registered in {args.bindings_dir}")
-    if kinds is not None:
-        for binding in bindings:
+    for binding in bindings:
+        if kinds is not None:
             binding.kinds = [k for k in binding.kinds or KINDS if k in kinds]
+        if options is not None:
+            binding.options = [o for o in binding.options or OPTIONS if o in options]
     return bindings
 
 

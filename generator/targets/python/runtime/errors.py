@@ -15,6 +15,7 @@ __all__ = [
     "IlahrsError",
     "brief",
     "require_bytes",
+    "require_flag",
     "require_int",
     "require_seconds",
     "suggest",
@@ -79,6 +80,13 @@ def require_bytes(data: object, field: str | None = None) -> bytes:
         return bytes(data)
     detail = f"{brief(data)} is not a byte string (bytes, bytearray or memoryview)"
     raise IlahrsError(ErrorKind.MALFORMED, None, field, detail)
+
+
+def require_flag(value: object, field: str) -> bool:
+    """`value` if it is a bool; IlahrsError(MALFORMED) otherwise (an option is True or False)."""
+    if not isinstance(value, bool):
+        raise IlahrsError(ErrorKind.MALFORMED, None, field, f"{brief(value)} is not True or False")
+    return value
 
 
 def require_int(value: object, field: str, low: int, high: int) -> int:
