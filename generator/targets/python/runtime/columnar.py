@@ -87,7 +87,7 @@ SENTENCE: Final = len(KINDS) - 1
 """The kind code of a $PAHR sentence."""
 COMMAND: Final = len(KINDS)
 """The code `Scanner` gives a command frame (no column set)."""
-UNDETERMINED: Final = len(KINDS) + 1
+UNEXPLAINED: Final = len(KINDS) + 1
 """The code `Scanner` gives a frame no table explains (no column set)."""
 
 WINDOW: Final = 1 << 21
@@ -210,7 +210,7 @@ class Recording:
 class Window:
     """The messages the stream decoder accepts that start in one window of the capture, in order:
     `starts` (offsets in the capture), `lengths` (bytes), `types` (a frame's message type, -1 for a
-    sentence), `kinds` (codes into KINDS, or COMMAND, UNDETERMINED); `sentences` by start. numpy
+    sentence), `kinds` (codes into KINDS, or COMMAND, UNEXPLAINED); `sentences` by start. numpy
     arrays, or lists without numpy."""
 
     numpy: ModuleType | None
@@ -264,7 +264,7 @@ class Scanner:
         for code, name in enumerate(KINDS[:SENTENCE]):
             if PAYLOADS[name].DIRECTION == "device_to_host":
                 sizes.setdefault(HEADER_SIZE + PAYLOADS[name].SIZE + LENGTH_BIAS, []).append(code)
-        by_length = [UNDETERMINED] * (max(HEADER_SIZE + MAX_MESSAGE_LENGTH, MAX_MESSAGE_SIZE) + 1)
+        by_length = [UNEXPLAINED] * (max(HEADER_SIZE + MAX_MESSAGE_LENGTH, MAX_MESSAGE_SIZE) + 1)
         for length, codes in sizes.items():
             if len(codes) == 1:
                 by_length[length] = codes[0]
