@@ -135,6 +135,7 @@ def test_columns_by_kind_of_a_raw_dump_are_the_messages(
     name: str, make: Any, output: str | None, backend: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(columnar, "WINDOW", 997)  # many windows, messages across their edges
+    monkeypatch.setattr(columnar, "ROWS", 101)  # columns filled in many batches
     data = make(1500, random.Random(SEED))
     messages = reference(data, output)
     assert len({kind for kind, _, _ in messages}) >= (1 if name == "bench" else 6)

@@ -125,8 +125,8 @@ def columns(
     wanted = HEADER_SIZE + cls.SIZE + LENGTH_BIAS
     sets = _Sets(numpy, {kind: cls}, found)
     for window in scanner.scan(recording.data, final=True):
-        sets.add(window, recording, kind, window.select(_DATA, wanted))
-    return sets.result()[cls.NAME]
+        sets.add(window, kind, window.select(_DATA, wanted))
+    return sets.result(recording)[cls.NAME]
 
 
 def columns_by_kind(
@@ -149,8 +149,8 @@ def columns_by_kind(
     for window in scanner.scan(recording.data, final=True):
         for kind, rows in window.groups().items():
             if kind <= SENTENCE:
-                sets.add(window, recording, kind, rows)
-    return sets.result()
+                sets.add(window, kind, rows)
+    return sets.result(recording)
 
 
 def numpy_for(backend: str) -> ModuleType | None:
@@ -488,65 +488,75 @@ def scales(cls: type[Any], variant: Variant | None) -> list[Scale]:
 
 
 class _Sets:
-    """Column sets built a window at a time: the parts of each column, joined at the end."""
+    """Column sets: the starts of each kind's messages gathered a window at a time, then every
+    column made at its full length and filled ROWS rows at a time (no parts to join)."""
 
     def __init__(self, numpy: ModuleType | None, classes: dict[int, type[Any]], variant: Variant | None) -> None:
         self.numpy = numpy
         self.classes = classes
-        self.variant = variant
-        self.parts: dict[int, dict[str, list[Any]]] = {}
         self.scales = {kind: scales(cls, variant) for kind, cls in classes.items()}
+        self.picks: dict[int, list[Any]] = {}
+        self.sentences: dict[int, tuple[int, PahrSentence]] = {}
+        """A sentence's end and value by its start."""
 
-    def add(self, window: Window, recording: Recording, kind: int, rows: Any) -> None:
-        numpy = self.numpy
-        parts = self.parts.setdefault(kind, {})
-        if numpy is not None:
-            starts, ends = window.starts[rows], window.starts[rows] + window.lengths[rows]
-            block = {"time": recording.times(numpy, ends - 1), "kind": numpy.full(len(starts), kind, dtype=numpy.int16)}
-        else:
-            starts = [window.starts[i] for i in rows]
-            ends = [window.starts[i] + window.lengths[i] for i in rows]
-            block = {"time": recording.times(None, [at - 1 for at in ends]), "kind": array("h", [kind]) * len(starts)}
-        block["offset"] = starts if numpy is not None else array("q", starts)
+    def add(self, window: Window, kind: int, rows: Any) -> None:
+        starts = window.starts[rows] if self.numpy is not None else [window.starts[i] for i in rows]
+        self.picks.setdefault(kind, []).append(starts)
         if kind == SENTENCE:
-            block.update(sentence_columns(numpy, [window.sentences[at] for at in (block["offset"].tolist())]))
-        else:
-            local = block["offset"] - window.base if numpy is not None else [at - window.base for at in starts]
-            block.update(table_columns(numpy, window.data, local, self.classes[kind], self.scales[kind]))
-        for name, column in block.items():
-            parts.setdefault(name, []).append(column)
+            for i in rows:
+                at = int(window.starts[i])
+                self.sentences[at] = (at + int(window.lengths[i]), window.sentences[at])
 
-    def result(self) -> dict[str, dict[str, Any]]:
-        """Every kind's columns (an empty set for the classes asked for and not found)."""
+    def result(self, recording: Recording) -> dict[str, dict[str, Any]]:
+        """Every kind's columns (an empty set for the one class asked for and not found)."""
         numpy = self.numpy
         result: dict[str, dict[str, Any]] = {}
-        for kind in sorted(set(self.parts) | (set(self.classes) if len(self.classes) == 1 else set())):
-            parts = self.parts.get(kind)
-            if parts is None:
-                result[KINDS[kind]] = _empty(numpy, self.classes[kind], self.variant)
-                continue
-            joined: dict[str, Any] = {}
-            for name in list(parts):
-                pieces = parts.pop(name)
-                joined[name] = numpy.concatenate(pieces) if numpy is not None else _join(pieces)
-            result[KINDS[kind]] = joined
+        for kind in sorted(set(self.picks) | (set(self.classes) if len(self.classes) == 1 else set())):
+            pieces = self.picks.pop(kind, [])
+            if numpy is not None:
+                starts = numpy.concatenate(pieces) if pieces else numpy.zeros(0, dtype=numpy.int64)
+            else:
+                starts = array("q", [at for piece in pieces for at in piece])
+            if kind == SENTENCE:
+                found = [self.sentences[at] for at in starts]
+                ends = [end for end, _ in found]
+                last = numpy.array(ends, dtype=numpy.int64) - 1 if numpy is not None else [at - 1 for at in ends]
+            else:
+                size = HEADER_SIZE + self.classes[kind].SIZE + LENGTH_BIAS
+                last = starts + (size - 1) if numpy is not None else [at + size - 1 for at in starts]
+            columns: dict[str, Any] = {"time": recording.times(numpy, last)}
+            if numpy is not None:
+                columns["kind"] = numpy.full(len(starts), kind, dtype=numpy.int16)
+            else:
+                columns["kind"] = array("h", [kind]) * len(starts)
+            columns["offset"] = starts
+            if kind == SENTENCE:
+                columns.update(sentence_columns(numpy, [value for _, value in found]))
+            else:
+                columns.update(_filled(numpy, recording.data, starts, self.classes[kind], self.scales[kind]))
+            result[KINDS[kind]] = columns
         return result
 
 
-def _join(pieces: list[Any]) -> Any:
-    first = pieces[0]
-    for piece in pieces[1:]:
-        first.extend(piece)
-    return first
+ROWS: Final = 1 << 16
+"""Rows decoded at a time into the full-length numpy columns."""
 
 
-def _empty(numpy: ModuleType | None, cls: type[Any], variant: Variant | None) -> dict[str, Any]:
-    if numpy is not None:
-        empty = numpy.zeros(0, dtype=numpy.int64)
-        base = {"time": numpy.zeros(0), "kind": numpy.zeros(0, dtype=numpy.int16), "offset": empty}
-    else:
-        base = {"time": array("d"), "kind": array("h"), "offset": array("q")}
-    return base | table_columns(numpy, b"", base["offset"], cls, scales(cls, variant))
+def _filled(
+    numpy: ModuleType | None, data: bytes | bytearray, starts: Any, cls: type[Any], fields: list[Scale]
+) -> dict[str, Any]:
+    """table_columns of every frame at `starts`, with numpy ROWS rows at a time into columns made
+    at their full length (the peak is the columns and one batch, not the columns twice)."""
+    if numpy is None or len(starts) <= ROWS:
+        return table_columns(numpy, data, starts, cls, fields)
+    result: dict[str, Any] = {}
+    for low in range(0, len(starts), ROWS):
+        part = table_columns(numpy, data, starts[low : low + ROWS], cls, fields)
+        for name, column in part.items():
+            if name not in result:
+                result[name] = numpy.empty(len(starts), dtype=column.dtype)
+            result[name][low : low + len(column)] = column
+    return result
 
 
 def _engineering(raw: Sequence[Any], multiplier: int, divisor: int | float) -> list[float]:
