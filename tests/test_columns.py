@@ -116,7 +116,8 @@ def test_columns_hold_the_objects_values(cls: type[ilahrs.Payload], kind: str, m
     capture = make(cls, 300, random.Random(SEED))
     table = ilahrs.columns(capture, cls, variant=VARIANT, backend=backend)
     expected = expected_columns(objects(capture, cls), cls)
-    assert set(table) == {"offset", *expected}
+    assert list(table)[:3] == ["time", "kind", "offset"]
+    assert set(table) == {"time", "kind", "offset", *expected}
     assert table["offset"].tolist() == offsets(capture, cls)
     for name, values in expected.items():
         column = table[name]

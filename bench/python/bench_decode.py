@@ -16,7 +16,8 @@ bytes of noise), decoded end to end from its bytes: a minimal standard-library l
 length, sum, struct.unpack_from: the reference), what a user writes with the stream decoder
 (`feed_iter`, then the payload class's `parse`), `ilahrs.decode_output` (payload objects), and
 `ilahrs.columns` (one array per field) with numpy and with the array fallback; and the memory a
-256 MiB capture fed at once to `StreamDecoder.feed_iter` adds (ru_maxrss, in a subprocess).
+256 MiB capture fed at once to `StreamDecoder.feed_iter` adds (ru_maxrss, in a subprocess), and
+what `ilahrs.columns` (numpy) adds for the same capture beyond the columns it returns.
 
     .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R] [--rss-mib M]
 """
@@ -161,6 +162,20 @@ def rss_child(mib: int) -> int:
     return 0
 
 
+def rss_columns_child(mib: int) -> int:
+    """`ilahrs.columns` (numpy) of a `mib` MiB capture; print the peak RSS growth and the columns' size."""
+    block = output_capture(10000, random.Random(SEED))
+    data = block * (mib * 2**20 // len(block))
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    start = time.perf_counter()
+    table = ilahrs.columns(data, ilahrs.PAYLOADS[OUTPUT_TABLE], backend="numpy")
+    elapsed = time.perf_counter() - start
+    growth = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before) / 1024
+    size = sum(column.nbytes for column in table.values()) / 2**20
+    print(f"{len(data) / 2**20:.0f} {len(table['offset'])} {growth:.1f} {size:.1f} {len(data) / 2**20 / elapsed:.1f}")
+    return 0
+
+
 def capture_section(frame_count: int, repeat: int, rss_mib: int) -> None:
     data = output_capture(frame_count, random.Random(SEED))
     cls = ilahrs.PAYLOADS[OUTPUT_TABLE]
@@ -198,6 +213,16 @@ def capture_section(frame_count: int, repeat: int, rss_mib: int) -> None:
             f"StreamDecoder.feed_iter, {out[0]} MiB fed at once: {out[1]} messages, {out[3]} MiB/s, "
             f"RSS growth {growth:.1f} MiB (target < {TARGET_RSS_MIB} MiB: {verdict})"
         )
+        out = subprocess.run(
+            [sys.executable, __file__, "--rss-columns-child", str(rss_mib)], check=True, capture_output=True, text=True
+        ).stdout.split()
+        growth, size = float(out[2]), float(out[3])
+        besides = growth - size
+        print(
+            f"ilahrs.columns (numpy), {out[0]} MiB at once: {out[1]} rows, {out[4]} MiB/s, "
+            f"RSS growth {growth:.0f} MiB: the columns {size:.0f} MiB and {besides:.0f} MiB besides "
+            f"({besides / float(out[0]):.2f}x the capture)"
+        )
 
 
 def main() -> int:
@@ -206,9 +231,12 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=3, help="runs per engine; the best counts (default 3)")
     parser.add_argument("--rss-mib", type=int, default=256, help="capture size for the RSS figure (0: skip)")
     parser.add_argument("--rss-child", type=int, default=0, help=argparse.SUPPRESS)
+    parser.add_argument("--rss-columns-child", type=int, default=0, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.rss_child:
         return rss_child(args.rss_child)
+    if args.rss_columns_child:
+        return rss_columns_child(args.rss_columns_child)
 
     data = frames(args.frames)
     sizes = sorted({len(d) for _, d in data})

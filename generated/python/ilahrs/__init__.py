@@ -20,7 +20,7 @@ Standard library only.
 from __future__ import annotations
 
 from .bulk import decode_output
-from .columnar import columns
+from .columnar import columns, columns_by_kind
 from .commands import (
     CODES,
     COMMANDS,
@@ -126,6 +126,7 @@ __all__ = [
     "calibration_succeeded",
     "checksum",
     "columns",
+    "columns_by_kind",
     "command_names",
     "declination_is_computed",
     "decode_command",

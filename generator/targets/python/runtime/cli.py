@@ -12,9 +12,9 @@ import sys
 from collections.abc import Callable
 from typing import Final, NoReturn
 
-from .cli_capture import open_source
+from .cli_capture import Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
-from .cli_decode import FORMATS, CaptureDecoder, Progress, RowWriter, kinds, output_table, summary
+from .cli_decode import FORMATS, CaptureDecoder, ColumnarCsv, Progress, RowWriter, kinds, output_table, summary
 from .commands import COMMANDS
 from .encodings import VARIANTS
 from .errors import IlahrsError
@@ -108,9 +108,17 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
 def _decode(args: argparse.Namespace) -> int:
     valid = kinds()
     selected = [lookup("message kind", k.strip(), valid) for k in args.types.split(",")] if args.types else valid
-    variant = variant_named(args.variant)
+    variant_named(args.variant)  # a wrong name is refused before the capture is opened
     table = output_table(args.output_format) if args.output_format else None
     source = open_source(args.file)
+    if args.to == "csv" and source.kind == "raw" and not args.follow:
+        return _decode_columns(args, source, selected, table)
+    return _decode_messages(args, source, selected, table)
+
+
+def _decode_messages(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` message by message, following the commands in a pcapng capture."""
+    variant = variant_named(args.variant)
     decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=args.output_format is not None)
     writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
@@ -142,6 +150,29 @@ def _decode(args: argparse.Namespace) -> int:
         print(line, file=sys.stderr)
     if failure is not None:
         raise failure
+    return 0
+
+
+def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar."""
+    decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
+    progress = Progress(source)
+    try:
+        try:
+            for chunk in source.chunks():
+                decoder.feed(chunk.data)
+                progress.update()
+        except KeyboardInterrupt:
+            pass
+        decoder.finish()
+        sys.stdout.flush()
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    finally:
+        progress.done()
+        source.close()
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
     return 0
 
 

@@ -17,7 +17,7 @@ from .encodings import VARIANTS, Variant, calibration_accuracy_deg, calibration_
 from .nmea import PahrSentence
 from .payloads import PAYLOADS
 from .spec import SERIAL_LINE
-from .status import UnitStatusWord
+from .status import USW_FAILURE_FLAGS, USW_WARNING_FLAGS, UnitStatusWord, UswFlag
 
 if TYPE_CHECKING:
     from .serial import AhrsClient
@@ -40,6 +40,9 @@ BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
 SENTENCE_KIND: Final = PahrSentence.IDENTIFIER
 """The message kind of a $PAHR sentence in decoded rows."""
 _USW_SEPARATOR: Final = "|"
+_USW_FLAGS: Final = USW_FAILURE_FLAGS.value | USW_WARNING_FLAGS.value
+_USW_NAMES: Final = [(flag.value, flag.name or "") for flag in UswFlag]
+"""Each flag's value and name, in the order of `UswFlag` (that of the names in usw_text)."""
 
 
 class CliError(Exception):
@@ -104,7 +107,8 @@ def usw_text(raw: int) -> str:
     """A Unit Status Word as the names of its flags (and its mode when not readiness), joined by
     '|'; empty when no flag is set in readiness mode."""
     word = UnitStatusWord(raw)
-    names = [flag.name or "" for flag in type(word.flags) if flag in word.flags]
+    flags = raw & _USW_FLAGS
+    names = [name for value, name in _USW_NAMES if flags & value == value]
     if word.mode.value != "readiness":
         names.append(str(word.mode.value).upper())
     return _USW_SEPARATOR.join(names)

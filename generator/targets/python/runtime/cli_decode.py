@@ -6,6 +6,10 @@ Messages are told apart by context, as the host session does. With both directio
 bytes only (a raw dump), `--output-format` names the command that started the output; other
 frames are decoded when their size fits one table only, and are of kind "frame" otherwise.
 
+A raw dump written as CSV goes the columnar way (`ColumnarCsv`, `ilahrs.columnar`): a window of
+the capture at a time, its frames found and decoded into columns (numpy when installed, else the
+standard library's array), then written row by row, the same rows as message by message.
+
 Rows: `time` (seconds since the first chunk of the capture; empty in a raw dump), `direction`
 (in: device to host, out: host to device), `kind` (a payload table's name, a command's name,
 PAHR for a $PAHR sentence, frame for a frame whose table cannot be told), `offset` (of the
@@ -20,17 +24,28 @@ import json
 import sys
 import time
 from collections import Counter
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Final, TextIO
 
 from .cli_capture import Chunk, Source
-from .cli_common import SENTENCE_KIND, field_columns, fields_of, lookup
-from .codec import Payload
+from .cli_common import SENTENCE_KIND, field_columns, fields_of, lookup, usw_text
+from .codec import Payload, field_kind
+from .columnar import (
+    COMMAND,
+    KINDS,
+    SENTENCE,
+    UNEXPLAINED,
+    Scanner,
+    Window,
+    numpy_for,
+    scales,
+    table_columns,
+)
 from .commands import COMMAND_SET, COMMANDS, decode_command
-from .encodings import Variant
+from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded
 from .errors import IlahrsError
-from .frame import MessageType
+from .frame import PAYLOAD_OFFSET, MessageType
 from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import PahrSentence
 from .payloads import PAYLOADS
@@ -38,7 +53,7 @@ from .pcapng import Direction
 from .statemachine import INITIAL, OUTPUT_FORMATS, command_event
 from .stream import StreamDecoder, StreamEvent
 
-__all__ = ["FORMATS", "UNDETERMINED", "CaptureDecoder", "Message", "RowWriter", "kinds", "output_table"]
+__all__ = ["FORMATS", "UNDETERMINED", "CaptureDecoder", "ColumnarCsv", "Message", "RowWriter", "kinds", "output_table"]
 
 UNDETERMINED: Final = "frame"
 """The kind of a frame whose table the context does not tell."""
@@ -331,6 +346,154 @@ def _text(value: object) -> str:
     return str(value)
 
 
+class ColumnarCsv:
+    """The CSV rows of a raw dump (device-to-host bytes, no context) as RowWriter writes those of
+    CaptureDecoder(context=False), and its summary (`counts`, `runs()`, `discarded`, `errors`),
+    decoded a window at a time into columns. `feed` bytes, then `finish`."""
+
+    def __init__(
+        self, out: TextIO, selected: Iterable[str], variant: Variant, *, raw: bool, output: str | None = None
+    ) -> None:
+        self._numpy = numpy_for("auto")
+        self._scanner = Scanner(self._numpy, output=output)
+        self._variant = variant
+        self._raw = raw
+        self._wanted = set(selected)
+        self._columns = [*BASE_COLUMNS, *field_columns(self._wanted)]
+        self._csv = csv.writer(out, lineterminator="\n")
+        self._csv.writerow(self._columns)
+        self._blank = ("",) * (len(self._columns) - len(BASE_COLUMNS))
+        self._pending: bytes = b""
+        self._end = 0
+        self._runs: list[tuple[int, int]] = []
+        self.discarded = 0
+        self.counts: Counter[str] = Counter()
+        self.errors: list[str] = []
+        self._usw: dict[Any, object] = {}
+        self._calibration: dict[Any, object] = {}
+
+    def feed(self, data: bytes) -> None:
+        buffer = self._pending + data if self._pending else data
+        for window in self._scanner.scan(buffer, final=False):
+            self._window(window)
+        self._pending = buffer[self._scanner.decided :]
+
+    def finish(self) -> None:
+        for window in self._scanner.scan(self._pending, final=True):
+            self._window(window)
+        total = self._scanner.base
+        self._pending = b""
+        if total > self._end:
+            self._gap(self._end, total - self._end)
+            self._end = total
+
+    def runs(self) -> list[tuple[str, int, int]]:
+        """Discarded runs: (direction, offset, length)."""
+        return [("in", *run) for run in self._runs]
+
+    def _gap(self, offset: int, length: int) -> None:
+        self.discarded += length
+        self._runs.append((offset, length))
+
+    def _window(self, window: Window) -> None:
+        starts = window.starts.tolist() if self._numpy is not None else window.starts
+        lengths = window.lengths.tolist() if self._numpy is not None else window.lengths
+        end = self._end
+        for start, length in zip(starts, lengths, strict=True):
+            if start > end:
+                self._gap(end, start - end)
+            end = start + length
+        self._end = end
+        parts: list[tuple[list[int], Iterable[Sequence[Any]]]] = []
+        seen: dict[str, list[int]] = {}
+        errors: list[tuple[int, str]] = []
+        for code, positions in window.groups().items():
+            places = positions.tolist() if self._numpy is not None else positions
+            if code in (COMMAND, UNEXPLAINED):
+                names = [self._frame_kind(window, starts[i], lengths[i], code) for i in places]
+                chosen: list[tuple[int, str]] = []
+                for i, name in zip(places, names, strict=True):
+                    seen.setdefault(name, [i, 0])[1] += 1
+                    if name == UNDETERMINED:
+                        errors.append(
+                            (i, f"in offset {starts[i]}: a {lengths[i]}-byte frame no table in context explains")
+                        )
+                    if name in self._wanted:
+                        chosen.append((i, name))
+                if chosen:
+                    parts.append(
+                        ([i for i, _ in chosen], [("", "in", name, starts[i], *self._blank) for i, name in chosen])
+                    )
+                continue
+            name = KINDS[code]
+            seen[name] = [places[0], len(places)]
+            if name in self._wanted:
+                parts.append((places, self._rows(window, code, name, [starts[i] for i in places])))
+        for name, (_first, count) in sorted(seen.items(), key=lambda item: item[1][0]):
+            self.counts[name] += count
+        self.errors += [text for _, text in sorted(errors)]
+        if len(parts) == 1:
+            self._csv.writerows(parts[0][1])
+        elif parts:
+            ordered = sorted((i, row) for places, rows in parts for i, row in zip(places, rows, strict=True))
+            self._csv.writerows(row for _, row in ordered)
+
+    @staticmethod
+    def _frame_kind(window: Window, start: int, length: int, code: int) -> str:
+        if code == UNEXPLAINED:
+            return UNDETERMINED
+        at = start - window.base
+        return _command_name(bytes(window.data[at : at + length]), INITIAL)
+
+    def _rows(self, window: Window, code: int, name: str, starts: list[int]) -> Iterable[Sequence[Any]]:
+        """The CSV rows of the messages of kind `code` starting at `starts`."""
+        count = len(starts)
+        if code == SENTENCE:
+            made = [fields_of(window.sentences[at], self._variant, raw=self._raw) for at in starts]
+            names = made[0] if made else {}
+            values = {column: [row[column] for row in made] for column in names}
+        else:
+            values = self._table_values(window, PAYLOADS[name], starts)
+        base = [[""] * count, ["in"] * count, [name] * count, starts]
+        blank = [""] * count
+        return zip(*base, *(values.get(c, blank) for c in self._columns[len(BASE_COLUMNS) :]), strict=True)
+
+    def _table_values(self, window: Window, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
+        """Each field's CSV values, as fields_of gives them."""
+        simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
+        if not simple or any(info.encoding not in (None, "usw", "calibration_success") for info in cls.FIELDS):
+            here = [at - window.base + PAYLOAD_OFFSET for at in starts]
+            blocks = [cls.parse(window.data[at : at + cls.SIZE]) for at in here]
+            made = [fields_of(block, self._variant, raw=self._raw) for block in blocks]
+            return {info.name: [row[info.name] for row in made] for info in cls.FIELDS if info.type != "reserved"}
+        fields = scales(cls, None if self._raw else self._variant)
+        if self._raw:
+            fields = [(info, 1, None) for info, _, _ in fields]
+        local = [at - window.base for at in starts]
+        offsets = self._numpy.array(local, dtype=self._numpy.int64) if self._numpy is not None else local
+        columns = table_columns(self._numpy, window.data, offsets, cls, fields)
+        values: dict[str, list[Any]] = {}
+        for info, _, _ in fields:
+            column = columns[info.name].tolist()
+            if not self._raw and info.encoding == "usw":
+                column = _mapped(column, usw_text, self._usw)
+            elif not self._raw and info.encoding == "calibration_success":
+                column = _mapped(column, _calibration, self._calibration)
+            values[info.name] = column
+        return values
+
+
+def _mapped(column: list[Any], function: Callable[[Any], object], known: dict[Any, object]) -> list[Any]:
+    """`function` of each value, each distinct value computed once (`known` keeps them)."""
+    known.update((value, function(value)) for value in set(column).difference(known))
+    return list(map(known.__getitem__, column))
+
+
+def _calibration(raw: int) -> object:
+    accuracy = calibration_accuracy_deg(raw)
+    return accuracy if calibration_succeeded(raw) and accuracy is not None else raw
+
+
 class Progress:
     """A progress line on stderr for a large file, when stderr is a terminal."""
 
@@ -357,7 +520,7 @@ class Progress:
             self._stream.flush()
 
 
-def summary(decoder: CaptureDecoder, prog: str) -> list[str]:
+def summary(decoder: CaptureDecoder | ColumnarCsv, prog: str) -> list[str]:
     """The lines of the summary: messages per kind, discarded bytes with their offsets, errors."""
     total = sum(decoder.counts.values())
     per_kind = ", ".join(f"{kind} {count}" for kind, count in decoder.counts.most_common())
