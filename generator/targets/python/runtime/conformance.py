@@ -184,6 +184,7 @@ class Vector:
     input: Any
     expect: Any
     note: str | None
+    options: dict[str, Any] = field(default_factory=dict)
 
     @property
     def where(self) -> str:
@@ -238,10 +239,17 @@ def _nmea_encode(i: object, w: str) -> str:
 
 
 def _stream(i: object, w: str) -> str:
-    chunks = _object(i, w).get("chunks")
+    i = _object(i, w)
+    chunks = i.get("chunks")
     if not isinstance(chunks, list) or not chunks:
         raise SuiteError(f"{w}: chunks must be a non-empty list of hex strings")
-    return "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    line = "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    idle = i.get("idle", [])
+    if not isinstance(idle, list):
+        raise SuiteError(f"{w}: idle must be a list of {{after, us}} objects")
+    gaps = [_object(g, w) for g in idle]
+    gaps_text = ",".join(f"{int_value(g.get('after'), w)}:{int_value(g.get('us'), w)}" for g in gaps)
+    return line + (f" idle={gaps_text}" if gaps else "")
 
 
 def _session_event(event: object, w: str) -> str:
@@ -292,7 +300,14 @@ def request(v: Vector) -> str:
     translate = _REQUESTS.get(v.kind)
     if translate is None:
         raise SuiteError(f"{v.where}: unknown kind {v.kind!r}")
-    return translate(v.input, v.where)
+    options = "".join(f" {name_token(k, v.where)}={_option_token(x, v.where)}" for k, x in sorted(v.options.items()))
+    return translate(v.input, v.where) + options
+
+
+def _option_token(value: object, w: str) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    raise SuiteError(f"{w}: an option's value must be true or false")
 
 
 # --- answers against expectations -----------------------------------------------------------------
@@ -596,7 +611,10 @@ def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
         if raw["kind"] not in KINDS + LATER_KINDS:
             raise SuiteError(f"{path}: {raw['id']}: unknown kind {raw['kind']!r}")
         seen.add(raw["id"])
-        vectors.append(Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note")))
+        options = raw.get("options", {})
+        if not isinstance(options, dict):
+            raise SuiteError(f"{path}: {raw['id']}: options must be an object")
+        vectors.append(Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note"), options))
     return vectors
 
 
