@@ -186,12 +186,13 @@ impl<T: AsRef<[u8]>> Frame<T> {
     /// check ([`check_strict`], E42): the errors of [`Frame::new_checked`], then `bad_reserved`.
     ///
     /// ```
-    /// use ilahrs::frame::{Frame, FrameRepr, MessageType};
+    /// use ilahrs::frame::{Frame, FrameRepr, STRICT};
     /// use ilahrs::ErrorKind;
     ///
+    /// let Some(rule) = STRICT else { return Ok(()) }; // the spec's rule
     /// let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
-    /// let mut repr = FrameRepr::new(MessageType::Data, &[1, 2, 3]);
-    /// repr.reserved = 0x3C;
+    /// let mut repr = FrameRepr::new(rule.message_type, &[1, 2, 3]);
+    /// repr.reserved = rule.reserved ^ 0x3C; // not what the AHRS writes
     /// let n = repr.build(&mut buf)?;
     /// assert!(Frame::new_checked(&buf[..n]).is_ok());
     /// let error = Frame::new_checked_strict(&buf[..n]).unwrap_err();

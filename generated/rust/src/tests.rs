@@ -467,7 +467,7 @@ fn idle_below_the_timeout_changes_nothing_and_from_it_gives_up() {
         (Duration::ZERO, false),
         (just_below, false),
         (IDLE_TIMEOUT, true),
-        (IDLE_TIMEOUT + Duration::from_nanos(1), true),
+        (IDLE_TIMEOUT.saturating_add(Duration::from_nanos(1)), true),
         (Duration::MAX, true),
     ] {
         let mut decoder = StreamDecoder::new();

@@ -294,12 +294,13 @@ impl StreamDecoder {
     /// reserved byte is not what the AHRS writes, E42) is no message.
     ///
     /// ```
-    /// use ilahrs::frame::{FrameRepr, MessageType};
+    /// use ilahrs::frame::{FrameRepr, STRICT};
     /// use ilahrs::StreamDecoder;
     ///
+    /// let Some(rule) = STRICT else { return Ok(()) }; // the spec's rule
     /// let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
-    /// let mut repr = FrameRepr::new(MessageType::Data, &[1, 2, 3]);
-    /// repr.reserved = 0x3C;
+    /// let mut repr = FrameRepr::new(rule.message_type, &[1, 2, 3]);
+    /// repr.reserved = rule.reserved ^ 0x3C; // not what the AHRS writes
     /// let n = repr.build(&mut buf)?;
     /// let (mut lenient, mut strict) = (0, 0);
     /// StreamDecoder::new().feed(&buf[..n], |_| lenient += 1);
