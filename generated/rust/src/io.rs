@@ -13,6 +13,7 @@
 //! assert_eq!(messages.decoder().discarded(), 3);
 //! ```
 
+use core::time::Duration;
 use std::boxed::Box;
 use std::io::{self, Read};
 
@@ -26,6 +27,10 @@ const READ_SIZE: usize = 8192;
 /// Reads in blocks of 8 KiB; at the end of the input it decides on the bytes still held, as
 /// [`StreamDecoder::finish`] does. Read errors are returned once, then the iteration goes on
 /// (an `Interrupted` read is retried).
+///
+/// A reader with a timeout (a serial port's `TimedOut` or `WouldBlock`) tells how long the line
+/// has been quiet: pass that on with [`Messages::idle_next`] (E41). A strict decoder comes in
+/// through [`Messages::with_decoder`].
 #[derive(Debug)]
 pub struct Messages<R: Read> {
     reader: R,
@@ -39,9 +44,14 @@ pub struct Messages<R: Read> {
 impl<R: Read> Messages<R> {
     /// Messages of `reader`, decoded by a new [`StreamDecoder`].
     pub fn new(reader: R) -> Messages<R> {
+        Messages::with_decoder(reader, StreamDecoder::new())
+    }
+
+    /// Messages of `reader`, decoded by `decoder` (for one made by [`StreamDecoder::strict`]).
+    pub fn with_decoder(reader: R, decoder: StreamDecoder) -> Messages<R> {
         Messages {
             reader,
-            decoder: StreamDecoder::new(),
+            decoder,
             buffer: Box::new([0; READ_SIZE]),
             start: 0,
             end: 0,
@@ -59,6 +69,35 @@ impl<R: Read> Messages<R> {
         self.reader
     }
 
+    /// The line has been quiet for `quiet` since the last byte read (E41). From
+    /// [`crate::IDLE_TIMEOUT`] on, the bytes already read are decoded, then the decoder gives up
+    /// what it waits for ([`StreamDecoder::idle_next`]); returns the next message this gives
+    /// (call until it returns `None`, then go on reading). A shorter quiet time changes nothing.
+    pub fn idle_next(&mut self, quiet: Duration) -> Option<OwnedEvent> {
+        if quiet < crate::IDLE_TIMEOUT {
+            return None;
+        }
+        if let Some(event) = self.decode_read() {
+            return Some(event);
+        }
+        let event = self.decoder.idle_next(quiet);
+        event.map(|event| event.to_owned_event())
+    }
+
+    /// Decodes the bytes read and not decoded yet, up to the next message.
+    fn decode_read(&mut self) -> Option<OwnedEvent> {
+        while self.start < self.end {
+            let input = self.buffer.get(self.start..self.end).unwrap_or(&[]);
+            let (used, event) = self.decoder.decode(input);
+            let event = event.map(|event| event.to_owned_event());
+            self.start += used;
+            if event.is_some() {
+                return event;
+            }
+        }
+        None
+    }
+
     /// The next message, `Ok(None)` at the end of the input, or a read error.
     pub fn next_message(&mut self) -> io::Result<Option<OwnedEvent>> {
         loop {
@@ -66,15 +105,8 @@ impl<R: Read> Messages<R> {
                 let event = self.decoder.finish_next();
                 return Ok(event.map(|event| event.to_owned_event()));
             }
-            if self.start < self.end {
-                let input = self.buffer.get(self.start..self.end).unwrap_or(&[]);
-                let (used, event) = self.decoder.decode(input);
-                let event = event.map(|event| event.to_owned_event());
-                self.start += used;
-                if event.is_some() {
-                    return Ok(event);
-                }
-                continue;
+            if let Some(event) = self.decode_read() {
+                return Ok(Some(event));
             }
             match self.reader.read(self.buffer.as_mut_slice()) {
                 Ok(0) => self.finished = true,

@@ -42,5 +42,11 @@ pub const SPEC_VERSION: &str = "1.0.0";
 pub const SPEC_HASH: &str = "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
+/// How long the line may be quiet inside a message, in byte times at 115200 baud and
+/// 10 bits a byte (the spec's `serial_line.idle_byte_times`, E41).
+pub const IDLE_BYTE_TIMES: u32 = 1152;
+/// [`IDLE_BYTE_TIMES`] as a time (100000 µs): a stream decoder told that the line has
+/// been quiet this long gives up the message it waits for ([`StreamDecoder::idle`]).
+pub const IDLE_TIMEOUT: core::time::Duration = core::time::Duration::from_micros(100000);
 /// True when numbers are sent most significant byte first (the spec's `byte_order`).
 const BIG_ENDIAN: bool = false;

@@ -11,10 +11,13 @@ use std::string::ToString;
 
 use crate::command::{decode_command, Command};
 use crate::error::{Detail, ErrorKind, Float, Name};
-use crate::frame::{self, checksum, Frame, FrameRepr, MessageType};
+use core::time::Duration;
+
+use crate::frame::{self, checksum, Frame, FrameRepr, MessageType, Strict};
 use crate::nmea::{PahrSentence, MAX_LENGTH, PREFIX};
 use crate::payload::{AnyPayload, FieldKind, PayloadKind, Value};
-use crate::stream::{find_any, StreamDecoder};
+use crate::stream::{find_any, Event, StreamDecoder};
+use crate::IDLE_TIMEOUT;
 
 /// Builds a frame of `payload` into an array.
 fn frame_of(message_type: MessageType, payload: &[u8]) -> ([u8; frame::MAX_FRAME_SIZE], usize) {
@@ -438,5 +441,248 @@ fn word_scan_finds_the_first_byte_at_every_position() {
                 assert_eq!(find_any(&data[..len], [byte, other]), either);
             }
         }
+    }
+}
+
+/// The start of a data frame whose length field is plausible and whose rest never came (a host
+/// cut off mid-write): header through length, the longest message length.
+fn stale_start() -> [u8; frame::field::PAYLOAD_START] {
+    let mut start = [0u8; frame::field::PAYLOAD_START];
+    let mut view = Frame::new_unchecked(&mut start[..]);
+    view.set_header();
+    view.set_message_type(MessageType::Data.raw());
+    view.set_message_length(frame::MAX_MESSAGE_LENGTH);
+    start
+}
+
+/// Every event's bytes.
+type Events = std::vec::Vec<std::vec::Vec<u8>>;
+
+#[test]
+fn idle_below_the_timeout_changes_nothing_and_from_it_gives_up() {
+    let stale = stale_start();
+    let (command, n) = frame_of(MessageType::Command, &[Command::ALL[0].code()]);
+    let just_below = IDLE_TIMEOUT - Duration::from_nanos(1);
+    for (quiet, gives_up) in [
+        (Duration::ZERO, false),
+        (just_below, false),
+        (IDLE_TIMEOUT, true),
+        (IDLE_TIMEOUT.saturating_add(Duration::from_nanos(1)), true),
+        (Duration::MAX, true),
+    ] {
+        let mut decoder = StreamDecoder::new();
+        decoder.feed(&stale, |_| panic!("no message yet"));
+        let mut events = 0;
+        decoder.idle(quiet, |_| events += 1);
+        assert_eq!(events, 0);
+        let expected = if gives_up { (0, 6) } else { (6, 0) };
+        assert_eq!(
+            (decoder.pending(), decoder.discarded()),
+            expected,
+            "{quiet:?}"
+        );
+        assert!(decoder.idle_next(just_below).is_none());
+        let mut frames = Events::new();
+        decoder.feed(&command[..n], |event| frames.push(event.as_bytes().into()));
+        if gives_up {
+            assert_eq!(frames, [&command[..n]], "{quiet:?}");
+        } else {
+            // The command is read as the rest of the stale frame.
+            assert!(frames.is_empty(), "{quiet:?}");
+            assert_eq!(decoder.pending(), stale.len() + n);
+        }
+    }
+}
+
+#[test]
+fn idle_after_bytewise_feeding_gives_the_messages_behind_the_stale_bytes() {
+    let stale = stale_start();
+    let (command, n) = frame_of(MessageType::Command, &[Command::ALL[0].code()]);
+    let input = [&stale[..], &command[..n]].concat();
+    for bytewise in [false, true] {
+        let mut decoder = StreamDecoder::new();
+        let mut early = 0;
+        if bytewise {
+            for byte in &input {
+                decoder.feed(core::slice::from_ref(byte), |_| early += 1);
+            }
+        } else {
+            decoder.feed(&input, |_| early += 1);
+        }
+        assert_eq!((early, decoder.pending()), (0, input.len()));
+        let first = decoder
+            .idle_next(IDLE_TIMEOUT)
+            .map(|event| event.as_bytes().to_vec());
+        assert_eq!(first.as_deref(), Some(&command[..n]));
+        assert!(decoder.idle_next(IDLE_TIMEOUT).is_none());
+        assert_eq!(
+            (decoder.pending(), decoder.discarded()),
+            (0, stale.len() as u64)
+        );
+        // The decoder goes on with the next bytes fed.
+        let mut after = Events::new();
+        for byte in &command[..n] {
+            decoder.feed(core::slice::from_ref(byte), |event| {
+                after.push(event.as_bytes().into())
+            });
+        }
+        assert_eq!(after, [&command[..n]]);
+    }
+}
+
+#[test]
+fn idle_with_nothing_held_does_nothing() {
+    let (command, n) = frame_of(MessageType::Command, &[Command::ALL[0].code()]);
+    let mut decoder = StreamDecoder::new();
+    assert!(decoder.idle_next(Duration::MAX).is_none());
+    let mut events = 0;
+    decoder.feed(&[0x00, 0x01], |_| events += 1);
+    decoder.feed(&command[..n], |_| events += 1);
+    decoder.idle(Duration::MAX, |_| events += 1);
+    assert!(decoder.idle_next(IDLE_TIMEOUT).is_none());
+    assert_eq!((events, decoder.pending(), decoder.discarded()), (1, 0, 2));
+}
+
+/// A frame of the strict rule's message type whose reserved byte is another than the rule's.
+fn off_rule_frame(rule: Strict) -> ([u8; frame::MAX_FRAME_SIZE], usize) {
+    let mut buf = [0u8; frame::MAX_FRAME_SIZE];
+    let repr = FrameRepr {
+        message_type: rule.message_type,
+        reserved: rule.reserved ^ 0x3C,
+        payload: &[1, 2, 3],
+    };
+    let n = repr.build(&mut buf).unwrap();
+    (buf, n)
+}
+
+#[test]
+fn strict_frame_parse_refuses_a_reserved_byte_the_device_never_sends() {
+    let Some(rule) = frame::STRICT else { return };
+    let (bad, n) = off_rule_frame(rule);
+    assert!(FrameRepr::parse(&bad[..n]).is_ok());
+    let error = FrameRepr::parse_strict(&bad[..n]).unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::BadReserved);
+    assert_eq!(error.offset(), Some(frame::field::RESERVED.start));
+    assert_eq!(error.field(), Some("reserved"));
+    let found = rule.reserved ^ 0x3C;
+    let expected = rule.reserved;
+    assert_eq!(error.detail(), Some(Detail::Byte { found, expected }));
+    assert!(Frame::new_checked_strict(&bad[..n]).is_err());
+    // Every other check comes first.
+    let mut worse = bad;
+    worse[n - 1] ^= 1;
+    let kind = |data: &[u8]| FrameRepr::parse_strict(data).unwrap_err().kind();
+    assert_eq!(kind(&worse[..n]), ErrorKind::BadChecksum);
+    assert_eq!(kind(&bad[..n + 1]), ErrorKind::TrailingData);
+    assert_eq!(kind(&bad[..n - 1]), ErrorKind::Truncated);
+    // The rule's reserved byte, and other message types with any reserved byte, pass.
+    let good = FrameRepr {
+        reserved: rule.reserved,
+        ..FrameRepr::parse(&bad[..n]).unwrap()
+    };
+    let mut buf = [0u8; frame::MAX_FRAME_SIZE];
+    let m = good.build(&mut buf).unwrap();
+    assert_eq!(FrameRepr::parse_strict(&buf[..m]), Ok(good));
+    for raw in 0..=u8::MAX {
+        let Some(other) = MessageType::from_raw(raw).filter(|t| *t != rule.message_type) else {
+            continue;
+        };
+        let repr = FrameRepr {
+            message_type: other,
+            ..FrameRepr::parse(&bad[..n]).unwrap()
+        };
+        let m = repr.build(&mut buf).unwrap();
+        assert_eq!(FrameRepr::parse_strict(&buf[..m]), Ok(repr));
+    }
+}
+
+#[test]
+fn strict_stream_refuses_what_the_lenient_one_accepts() {
+    const STRICT_DECODER: StreamDecoder = StreamDecoder::strict();
+    let Some(rule) = frame::STRICT else { return };
+    let (bad, n) = off_rule_frame(rule);
+    let (command, m) = frame_of(MessageType::Command, &[Command::ALL[0].code()]);
+    let input = [&bad[..n], &command[..m]].concat();
+    assert!(!StreamDecoder::new().is_strict() && !StreamDecoder::default().is_strict());
+    assert!(STRICT_DECODER.is_strict());
+    for (decoder, accepted) in [
+        (StreamDecoder::new(), 2),
+        (StreamDecoder::strict().with_strict(false), 2),
+        (STRICT_DECODER, 1),
+        (StreamDecoder::new().with_strict(true), 1),
+    ] {
+        for bytewise in [false, true] {
+            let mut decoder = decoder.clone();
+            let mut events = Events::new();
+            let mut record = |event: Event<'_>| events.push(event.as_bytes().into());
+            if bytewise {
+                for byte in &input {
+                    decoder.feed(core::slice::from_ref(byte), &mut record);
+                }
+            } else {
+                decoder.feed(&input, &mut record);
+            }
+            decoder.finish(&mut record);
+            assert_eq!(events.len(), accepted);
+            assert_eq!(events.last().map(|e| &e[..]), Some(&command[..m]));
+            let discarded = if accepted == 1 { n as u64 } else { 0 };
+            assert_eq!(decoder.discarded(), discarded);
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+#[test]
+fn the_reader_adapter_passes_strict_and_idle_on() {
+    use std::io::{self, Read};
+
+    /// Reads its chunks in turn; an empty chunk, and every read after the last, is a read that
+    /// timed out (the line never ends).
+    struct Line(std::vec::Vec<std::vec::Vec<u8>>);
+
+    impl Read for Line {
+        fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+            let chunk = if self.0.is_empty() {
+                std::vec![]
+            } else {
+                self.0.remove(0)
+            };
+            if chunk.is_empty() {
+                return Err(io::ErrorKind::TimedOut.into());
+            }
+            buf[..chunk.len()].copy_from_slice(&chunk);
+            Ok(chunk.len())
+        }
+    }
+
+    let Some(rule) = frame::STRICT else { return };
+    let (bad, n) = off_rule_frame(rule);
+    let (command, m) = frame_of(MessageType::Command, &[Command::ALL[0].code()]);
+    let first = [&bad[..n], &command[..m], &stale_start()[..]].concat();
+    for idle in [false, true] {
+        let line = Line(std::vec![first.clone(), std::vec![], command[..m].to_vec()]);
+        let mut messages = crate::io::Messages::with_decoder(line, StreamDecoder::strict());
+        let mut read = Events::new();
+        for _ in 0..8 {
+            match messages.next() {
+                Some(Ok(event)) => read.push(event.as_bytes().into()),
+                Some(Err(error)) if error.kind() == io::ErrorKind::TimedOut => {
+                    assert!(messages.idle_next(IDLE_TIMEOUT / 2).is_none());
+                    let quiet = if idle { IDLE_TIMEOUT } else { Duration::ZERO };
+                    while let Some(event) = messages.idle_next(quiet) {
+                        read.push(event.as_bytes().into());
+                    }
+                }
+                Some(Err(error)) => panic!("{error}"),
+                None => panic!("the line never ends"),
+            }
+        }
+        // Without the idle call, the command after the gap is read as the stale frame's rest.
+        let expected: &[&[u8]] = if idle {
+            &[&command[..m], &command[..m]]
+        } else {
+            &[&command[..m]]
+        };
+        assert_eq!(read, expected);
     }
 }

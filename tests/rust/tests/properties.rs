@@ -1,8 +1,11 @@
 //! Properties of the generated crate, over seeded random inputs: payload round trips, and a
-//! stream decoder that loses no message to garbage or to the way the input is cut.
+//! stream decoder that loses no message to garbage or to the way the input is cut, reads input
+//! cut by idle lines as separate streams, and in strict mode refuses only what breaks the rule.
+
+use std::time::Duration;
 
 use ilahrs::payload::{AnyPayload, PayloadKind, Value};
-use ilahrs::StreamDecoder;
+use ilahrs::{FrameRepr, StreamDecoder, IDLE_TIMEOUT};
 use ilahrs_properties::{message, valid_payload, Rng};
 
 const ROUNDS: usize = 2000;
@@ -101,7 +104,11 @@ fn garbage(rng: &mut Rng) -> Vec<u8> {
 
 /// Every event of a decoder fed `chunks`, then finished, and its discarded count.
 fn decode(chunks: &[&[u8]]) -> (Vec<Vec<u8>>, u64) {
-    let mut decoder = StreamDecoder::new();
+    decode_with(StreamDecoder::new(), chunks)
+}
+
+/// [`decode`] with `decoder`.
+fn decode_with(mut decoder: StreamDecoder, chunks: &[&[u8]]) -> (Vec<Vec<u8>>, u64) {
     let mut events = Vec::new();
     for chunk in chunks {
         decoder.feed(chunk, |event| events.push(event.as_bytes().to_vec()));
@@ -178,4 +185,104 @@ fn the_reader_adapter_gives_the_same_messages() {
     }
     assert_eq!(read, events);
     assert_eq!(messages.decoder().discarded(), discarded);
+}
+
+#[test]
+fn an_idle_line_cuts_the_input_into_streams_of_their_own() {
+    let mut rng = Rng::new(0x1D1E);
+    let below = IDLE_TIMEOUT - Duration::from_micros(1);
+    for _ in 0..ROUNDS / 4 {
+        let mut segments: Vec<Vec<u8>> = Vec::new();
+        for _ in 0..1 + rng.below(4) {
+            let mut segment = Vec::new();
+            for _ in 0..rng.below(4) {
+                segment.extend(garbage(&mut rng));
+                segment.extend(message(&mut rng));
+            }
+            segment.extend(garbage(&mut rng));
+            segments.push(segment);
+        }
+        // Each segment decoded alone, as if the input ended there.
+        let mut expected = (Vec::new(), 0);
+        for segment in &segments {
+            let (events, discarded) = decode(&[segment]);
+            expected.0.extend(events);
+            expected.1 += discarded;
+        }
+        // One decoder, fed in random chunks, told of each gap; shorter quiet times in between
+        // change nothing.
+        let mut decoder = StreamDecoder::new();
+        let mut events = Vec::new();
+        for segment in &segments {
+            let mut rest = &segment[..];
+            while !rest.is_empty() {
+                let size = 1 + rng.below(rest.len().min(40) as u64) as usize;
+                decoder.feed(&rest[..size], |event| {
+                    events.push(event.as_bytes().to_vec())
+                });
+                decoder.idle(below, |_| panic!("a quiet time below the timeout"));
+                rest = &rest[size..];
+            }
+            let quiet = [IDLE_TIMEOUT, Duration::MAX][rng.below(2) as usize];
+            while let Some(event) = decoder.idle_next(quiet) {
+                events.push(event.as_bytes().to_vec());
+            }
+            assert_eq!(decoder.pending(), 0);
+        }
+        decoder.finish(|_| panic!("nothing is held after an idle line"));
+        assert_eq!((events, decoder.discarded()), expected);
+    }
+}
+
+/// True if `message` is a frame (not a sentence).
+fn is_frame(message: &[u8]) -> bool {
+    message.first() == Some(&ilahrs::frame::HEADER[0])
+}
+
+#[test]
+fn strict_decoding_refuses_only_frames_that_break_the_rule() {
+    let Some(rule) = ilahrs::frame::STRICT else {
+        return;
+    };
+    let mut rng = Rng::new(0x57_1C7);
+    for _ in 0..ROUNDS / 4 {
+        let mut sent = Vec::new();
+        let mut input = Vec::new();
+        for _ in 0..rng.below(8) {
+            input.extend(garbage(&mut rng));
+            let good = message(&mut rng);
+            input.extend(&good);
+            if !is_frame(&good) || FrameRepr::parse_strict(&good).is_ok() {
+                sent.extend(good);
+            }
+        }
+        let strict = decode_with(StreamDecoder::strict(), &[&input]);
+        for event in &strict.0 {
+            if is_frame(event) {
+                assert!(FrameRepr::parse_strict(event).is_ok());
+            }
+        }
+        // What the AHRS sends (frames that keep the rule, sentences) is decoded alike.
+        let lenient = decode(&[&sent]);
+        assert_eq!(decode_with(StreamDecoder::strict(), &[&sent]), lenient);
+        // A frame that breaks the rule is refused; the message behind it is not lost.
+        let mut frame = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+        let size = 1 + rng.below(20) as usize;
+        let payload = rng.bytes(size);
+        let repr = FrameRepr {
+            message_type: rule.message_type,
+            reserved: rule.reserved.wrapping_add(1 + rng.byte() % 255),
+            payload: &payload,
+        };
+        let n = repr.build(&mut frame).unwrap();
+        let next = loop {
+            let next = message(&mut rng);
+            if !is_frame(&next) || FrameRepr::parse_strict(&next).is_ok() {
+                break next;
+            }
+        };
+        let both = [&frame[..n], &next[..]].concat();
+        let (events, discarded) = decode_with(StreamDecoder::strict(), &[&both]);
+        assert_eq!((events, discarded), (vec![next], n as u64));
+    }
 }

@@ -26,6 +26,12 @@ pub const MIN_FRAME_SIZE: usize = 9;
 /// The largest frame (bytes). A command and the parameter block that follows it need
 /// [`crate::command::MAX_COMMAND_WITH_BLOCK_SIZE`].
 pub const MAX_FRAME_SIZE: usize = 60;
+/// What the AHRS writes in a data frame's reserved byte (E42): a strict decoder
+/// refuses a data frame with another value (error `bad_reserved`).
+pub const STRICT: Option<super::Strict> = Some(super::Strict {
+    message_type: MessageType::Data,
+    reserved: 0,
+});
 
 /// Where the fields of a frame sit (byte offsets).
 pub mod field {

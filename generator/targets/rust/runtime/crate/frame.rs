@@ -5,6 +5,10 @@
 //! [`FrameRepr`] is the same frame as a value, with [`FrameRepr::parse`] and
 //! [`FrameRepr::build`]. The builder fills the length and the checksum.
 //!
+//! The 16-bit sum lets some damage through: two bytes moved by opposite amounts leave it
+//! unchanged. [`Frame::new_checked_strict`] and [`FrameRepr::parse_strict`] also refuse a frame
+//! whose reserved byte is not what the AHRS writes there ([`STRICT`], E42), the commonest case.
+//!
 //! ```
 //! use ilahrs::frame::{FrameRepr, MessageType};
 //!
@@ -23,7 +27,19 @@ mod layout;
 pub use layout::{
     field, MessageType, CHECKSUM_SIZE, HEADER, HEADER_SIZE, LENGTH_BIAS, MAX_FRAME_SIZE,
     MAX_MESSAGE_LENGTH, MAX_PAYLOAD, MIN_FRAME_SIZE, MIN_MESSAGE_LENGTH, MIN_PAYLOAD, OVERHEAD,
+    STRICT,
 };
+
+/// What the AHRS itself writes in a frame's header: frames of `message_type` carry `reserved`
+/// (see [`STRICT`]). Decoders accept any reserved byte by default (E6); asked to be strict,
+/// they refuse frames of that type with another one (error `bad_reserved`, E42).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Strict {
+    /// The message type the rule covers.
+    pub message_type: MessageType,
+    /// The reserved byte such frames carry.
+    pub reserved: u8,
+}
 
 impl TryFrom<u8> for MessageType {
     type Error = Error;
@@ -105,6 +121,38 @@ pub fn check_frame(data: &[u8]) -> Result<usize> {
     Ok(sum.end)
 }
 
+/// Checks the reserved byte of the frame at the start of `data` against [`STRICT`] (the strict
+/// option's check, made after every other one): `bad_reserved` at the reserved byte's offset,
+/// with the byte found and the one expected, when the frame's message type is the rule's and
+/// its reserved byte is another. Always `Ok` when the spec has no strict rule.
+pub fn check_strict(data: &[u8]) -> Result<()> {
+    match STRICT {
+        Some(rule) if !passes(rule, data) => {
+            let found = wire::get::<u8>(data, field::RESERVED);
+            let error = Error::at(ErrorKind::BadReserved, field::RESERVED.start);
+            let expected = rule.reserved;
+            Err(error
+                .with_field("reserved")
+                .with_detail(Detail::Byte { found, expected }))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// True unless the frame at the start of `data` breaks [`STRICT`].
+pub(crate) fn strict_passes(data: &[u8]) -> bool {
+    match STRICT {
+        Some(rule) => passes(rule, data),
+        None => true,
+    }
+}
+
+/// True unless the frame at the start of `data` breaks `rule`.
+fn passes(rule: Strict, data: &[u8]) -> bool {
+    wire::get::<u8>(data, field::MESSAGE_TYPE) != rule.message_type.raw()
+        || wire::get::<u8>(data, field::RESERVED) == rule.reserved
+}
+
 /// A zero-copy view of one frame over a buffer.
 ///
 /// Made by [`Frame::new_checked`], which validates the whole frame once; the accessors never
@@ -128,6 +176,30 @@ impl<T: AsRef<[u8]>> Frame<T> {
     pub fn new_checked(buffer: T) -> Result<Frame<T>> {
         let frame = Frame::new_unchecked(buffer);
         frame.check_len()?;
+        Ok(frame)
+    }
+
+    /// A view over `buffer`, which must hold exactly one valid frame that also passes the strict
+    /// check ([`check_strict`], E42): the errors of [`Frame::new_checked`], then `bad_reserved`.
+    ///
+    /// ```
+    /// use ilahrs::frame::{Frame, FrameRepr, STRICT};
+    /// use ilahrs::ErrorKind;
+    ///
+    /// let Some(rule) = STRICT else { return Ok(()) }; // the spec's rule
+    /// let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+    /// let mut repr = FrameRepr::new(rule.message_type, &[1, 2, 3]);
+    /// repr.reserved = rule.reserved ^ 0x3C; // not what the AHRS writes
+    /// let n = repr.build(&mut buf)?;
+    /// assert!(Frame::new_checked(&buf[..n]).is_ok());
+    /// let error = Frame::new_checked_strict(&buf[..n]).unwrap_err();
+    /// assert_eq!(error.kind(), ErrorKind::BadReserved);
+    /// assert_eq!(error.offset(), Some(3));
+    /// # Ok::<(), ilahrs::Error>(())
+    /// ```
+    pub fn new_checked_strict(buffer: T) -> Result<Frame<T>> {
+        let frame = Frame::new_checked(buffer)?;
+        check_strict(frame.buffer.as_ref())?;
         Ok(frame)
     }
 
@@ -262,6 +334,12 @@ impl<'a> FrameRepr<'a> {
     /// Decodes exactly one frame (see [`Frame::new_checked`] for the errors).
     pub fn parse(data: &'a [u8]) -> Result<FrameRepr<'a>> {
         let frame = Frame::new_checked(data)?;
+        Ok(FrameRepr::from_view(&frame))
+    }
+
+    /// Decodes exactly one frame with the strict check (see [`Frame::new_checked_strict`]).
+    pub fn parse_strict(data: &'a [u8]) -> Result<FrameRepr<'a>> {
+        let frame = Frame::new_checked_strict(data)?;
         Ok(FrameRepr::from_view(&frame))
     }
 

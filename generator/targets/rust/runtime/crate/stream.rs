@@ -8,6 +8,13 @@
 //! [`StreamDecoder::decode`] (one event at a time), and call [`StreamDecoder::finish`] when the
 //! input ends.
 //!
+//! A message never spans an idle line (E41): tell the decoder how long the line has been quiet
+//! with [`StreamDecoder::idle`] (or [`StreamDecoder::idle_next`]); from [`crate::IDLE_TIMEOUT`]
+//! on it gives up what it waits for, as at the end of the input, so the start of a message whose
+//! rest never came costs only its own bytes. [`StreamDecoder::strict`] makes a decoder that also
+//! refuses data frames whose reserved byte is not what the AHRS writes
+//! ([`crate::frame::STRICT`], E42).
+//!
 //! ```
 //! use ilahrs::frame::HEADER;
 //! use ilahrs::stream::{Event, StreamDecoder};
@@ -27,7 +34,9 @@
 //! assert_eq!(decoder.discarded(), bytes.len() as u64);
 //! ```
 
-use crate::frame::{check_frame, field, Frame, HEADER, HEADER_SIZE};
+use core::time::Duration;
+
+use crate::frame::{check_frame, field, strict_passes, Frame, HEADER, HEADER_SIZE};
 #[cfg(not(feature = "small"))]
 use crate::nmea::canonical;
 use crate::nmea::{parse_body, PahrSentence, MAX_LENGTH as MAX_SENTENCE_LENGTH, PREFIX};
@@ -134,18 +143,20 @@ enum Decision<'a> {
 }
 
 /// Decides on the candidate message at the start of `data` (which starts with a frame or
-/// sentence start byte). `data` holds every byte available.
-fn decide(data: &[u8]) -> Decision<'_> {
+/// sentence start byte). `data` holds every byte available; `strict` adds the strict check.
+fn decide(data: &[u8], strict: bool) -> Decision<'_> {
     match data.first() {
-        Some(&FRAME_START) => decide_frame(data),
+        Some(&FRAME_START) => decide_frame(data, strict),
         Some(&SENTENCE_START) => decide_sentence(data),
         _ => Decision::Reject,
     }
 }
 
-/// Decides on a frame candidate: the checks of a frame decode.
-fn decide_frame(data: &[u8]) -> Decision<'_> {
+/// Decides on a frame candidate: the checks of a frame decode (with `strict`, the strict one
+/// too).
+fn decide_frame(data: &[u8], strict: bool) -> Decision<'_> {
     match check_frame(data) {
+        Ok(_) if strict && !strict_passes(data) => Decision::Reject,
         Ok(size) => match data.get(..size) {
             Some(bytes) => Decision::Accept(size, Event::Frame(Frame::new_unchecked(bytes))),
             None => Decision::Reject,
@@ -246,6 +257,10 @@ fn next_start(data: &[u8]) -> usize {
 /// It holds at most [`MAX_MESSAGE_SIZE`] bytes: the start of a message whose end has not
 /// arrived. Bytes that belong to no accepted message are counted by
 /// [`StreamDecoder::discarded`].
+///
+/// Lenient by default: any reserved byte is accepted (E6). [`StreamDecoder::strict`] (or
+/// [`StreamDecoder::with_strict`]) refuses data frames whose reserved byte is not what the AHRS
+/// writes (E42): such a candidate is no message, one byte is discarded and scanning goes on.
 #[derive(Debug, Clone)]
 pub struct StreamDecoder {
     buffer: [u8; MAX_MESSAGE_SIZE],
@@ -253,6 +268,7 @@ pub struct StreamDecoder {
     end: usize,
     discarded: u64,
     waiting: Waiting,
+    strict: bool,
 }
 
 impl Default for StreamDecoder {
@@ -262,7 +278,7 @@ impl Default for StreamDecoder {
 }
 
 impl StreamDecoder {
-    /// An empty decoder.
+    /// An empty decoder, lenient (any reserved byte is accepted, E6).
     pub const fn new() -> StreamDecoder {
         StreamDecoder {
             buffer: [0; MAX_MESSAGE_SIZE],
@@ -270,7 +286,42 @@ impl StreamDecoder {
             end: 0,
             discarded: 0,
             waiting: Waiting::Any,
+            strict: false,
         }
+    }
+
+    /// An empty strict decoder: a frame that breaks [`crate::frame::STRICT`] (a data frame whose
+    /// reserved byte is not what the AHRS writes, E42) is no message.
+    ///
+    /// ```
+    /// use ilahrs::frame::{FrameRepr, STRICT};
+    /// use ilahrs::StreamDecoder;
+    ///
+    /// let Some(rule) = STRICT else { return Ok(()) }; // the spec's rule
+    /// let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+    /// let mut repr = FrameRepr::new(rule.message_type, &[1, 2, 3]);
+    /// repr.reserved = rule.reserved ^ 0x3C; // not what the AHRS writes
+    /// let n = repr.build(&mut buf)?;
+    /// let (mut lenient, mut strict) = (0, 0);
+    /// StreamDecoder::new().feed(&buf[..n], |_| lenient += 1);
+    /// StreamDecoder::strict().feed(&buf[..n], |_| strict += 1);
+    /// assert_eq!((lenient, strict), (1, 0));
+    /// # Ok::<(), ilahrs::Error>(())
+    /// ```
+    pub const fn strict() -> StreamDecoder {
+        StreamDecoder::new().with_strict(true)
+    }
+
+    /// The same decoder, strict or lenient (see [`StreamDecoder::strict`]).
+    #[must_use]
+    pub const fn with_strict(mut self, strict: bool) -> StreamDecoder {
+        self.strict = strict;
+        self
+    }
+
+    /// True if the decoder is strict (see [`StreamDecoder::strict`]).
+    pub const fn is_strict(&self) -> bool {
+        self.strict
     }
 
     /// Input bytes that belong to no accepted message, so far (bytes).
@@ -320,7 +371,7 @@ impl StreamDecoder {
                             self.start = self.end;
                         }
                         let bytes = self.buffer.get(from..from + size).unwrap_or(&[]);
-                        return (used, accepted(bytes));
+                        return (used, accepted(bytes, self.strict));
                     }
                     Step::Empty => break,
                     Step::Waiting if used == input.len() => {
@@ -347,7 +398,7 @@ impl StreamDecoder {
             let Some(candidate) = input.get(position..).filter(|rest| !rest.is_empty()) else {
                 break;
             };
-            match decide(candidate) {
+            match decide(candidate, self.strict) {
                 Decision::Accept(size, event) => return (position + size, Some(event)),
                 Decision::Reject => {
                     self.discarded += 1;
@@ -385,9 +436,10 @@ impl StreamDecoder {
     pub fn finish_next(&mut self) -> Option<Event<'_>> {
         self.waiting = Waiting::Any;
         match self.step(true) {
-            Step::Accepted(from, size) => {
-                accepted(self.buffer.get(from..from + size).unwrap_or(&[]))
-            }
+            Step::Accepted(from, size) => accepted(
+                self.buffer.get(from..from + size).unwrap_or(&[]),
+                self.strict,
+            ),
             Step::Empty | Step::Waiting => None,
         }
     }
@@ -400,6 +452,51 @@ impl StreamDecoder {
         }
         self.start = 0;
         self.end = 0;
+    }
+
+    /// The line has been quiet for `quiet` since the last byte fed (E41). From
+    /// [`crate::IDLE_TIMEOUT`] on, decides on every byte held as [`StreamDecoder::finish_next`]
+    /// does: candidates that wait for more are discarded one byte at a time, and the next
+    /// message behind them is returned (call until it returns `None`; the decoder then holds
+    /// nothing and goes on with the next bytes fed). A shorter quiet time changes nothing and
+    /// returns `None`. `Duration::MAX` says that the line is idle, however long.
+    ///
+    /// ```
+    /// use core::time::Duration;
+    /// use ilahrs::frame::HEADER;
+    /// use ilahrs::{Command, StreamDecoder, IDLE_TIMEOUT};
+    ///
+    /// // The start of a frame from a host cut off mid-write: a plausible length, no more.
+    /// let mut decoder = StreamDecoder::new();
+    /// decoder.feed(&[HEADER[0], HEADER[1], 0x01, 0x00, 0x3A, 0x00], |_| {});
+    /// assert!(decoder.idle_next(IDLE_TIMEOUT - Duration::from_micros(1)).is_none());
+    /// assert_eq!(decoder.pending(), 6);
+    /// // Quiet long enough: the stale bytes are given up, and a command that follows is
+    /// // decoded at once instead of being read as the rest of them.
+    /// assert!(decoder.idle_next(IDLE_TIMEOUT).is_none());
+    /// assert_eq!((decoder.pending(), decoder.discarded()), (0, 6));
+    /// let mut command = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
+    /// let n = Command::ALL[0].build(&mut command)?;
+    /// let mut events = 0;
+    /// decoder.feed(&command[..n], |_| events += 1);
+    /// assert_eq!(events, 1);
+    /// # Ok::<(), ilahrs::Error>(())
+    /// ```
+    pub fn idle_next(&mut self, quiet: Duration) -> Option<Event<'_>> {
+        if quiet < crate::IDLE_TIMEOUT {
+            return None;
+        }
+        self.finish_next()
+    }
+
+    /// The line has been quiet for `quiet` (E41): from [`crate::IDLE_TIMEOUT`] on, calls
+    /// `on_event` for every message still held, in order, and leaves the decoder empty, as
+    /// [`StreamDecoder::finish`] does (see [`StreamDecoder::idle_next`]); a shorter quiet time
+    /// changes nothing.
+    pub fn idle<F: FnMut(Event<'_>)>(&mut self, quiet: Duration, on_event: F) {
+        if quiet >= crate::IDLE_TIMEOUT {
+            self.finish(on_event);
+        }
     }
 
     /// Moves the held bytes to the front of the buffer.
@@ -422,7 +519,7 @@ impl StreamDecoder {
                 self.start += skip;
                 continue;
             }
-            match decide(held) {
+            match decide(held, self.strict) {
                 Decision::Accept(size, _) => {
                     let from = self.start;
                     self.start += size;
@@ -497,8 +594,8 @@ enum Step {
 }
 
 /// The event of bytes already accepted.
-fn accepted(bytes: &[u8]) -> Option<Event<'_>> {
-    match decide(bytes) {
+fn accepted(bytes: &[u8], strict: bool) -> Option<Event<'_>> {
+    match decide(bytes, strict) {
         Decision::Accept(_, event) => Some(event),
         Decision::Reject | Decision::NeedMore => None,
     }

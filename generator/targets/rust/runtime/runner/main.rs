@@ -5,6 +5,7 @@
 #![forbid(unsafe_code)]
 
 use std::io::{self, BufRead, Write};
+use std::time::Duration;
 
 use ilahrs::payload::{AnyPayload, FieldKind, PayloadKind, Value};
 use ilahrs::{Error, ErrorKind, FrameRepr, MessageType, StreamDecoder, Variant};
@@ -60,7 +61,10 @@ fn answer(line: &str) -> Answer {
     let arg = |index: usize| args.get(index).copied().ok_or(Refusal::Unsupported);
     match kind {
         "checksum" => Ok(format!("ok {}", ilahrs::checksum(&read_hex(arg(0)?)?))),
-        "frame_decode" => frame_decode(&read_hex(arg(0)?)?),
+        "frame_decode" => {
+            let options = read_options(args.get(1..).unwrap_or(&[]), false)?;
+            frame_decode(&read_hex(arg(0)?)?, &options)
+        }
         "frame_encode" => frame_encode(arg(0)?, &read_hex(arg(1)?)?, args.get(2).copied()),
         "command_encode" => {
             let mut buf = [0u8; ilahrs::frame::MAX_FRAME_SIZE];
@@ -81,14 +85,54 @@ fn answer(line: &str) -> Answer {
         "payload_encode" => payload_encode(arg(0)?, args.get(2..).unwrap_or(&[])),
         "nmea_decode" => nmea::decode(&read_text(arg(0)?)?),
         "nmea_encode" => nmea::encode(&args),
-        "stream" => stream(args.first().copied().unwrap_or("")),
+        "stream" => {
+            let options = read_options(args.get(1..).unwrap_or(&[]), true)?;
+            stream(args.first().copied().unwrap_or(""), &options)
+        }
         "session" => session::run(arg(0)?, arg(1)?),
         _ => Err(Refusal::Unsupported),
     }
 }
 
-fn frame_decode(data: &[u8]) -> Answer {
-    let frame = FrameRepr::parse(data)?;
+/// What follows a request's arguments: the stream's idle gaps and the vector's options.
+#[derive(Default)]
+struct Options {
+    /// The strict option (E42).
+    strict: bool,
+    /// (chunk index, quiet microseconds): the idle call made after that chunk (E41).
+    idle: Vec<(usize, u64)>,
+}
+
+/// `idle=AFTER:US,...` (when `idle` is allowed) and the `strict` option; anything else, an
+/// option this runner does not know among them, is refused.
+fn read_options(tokens: &[&str], idle: bool) -> Result<Options, Refusal> {
+    let mut options = Options::default();
+    for token in tokens {
+        if *token == "strict" {
+            options.strict = true;
+            continue;
+        }
+        match token.split_once('=').ok_or(Refusal::Unsupported)? {
+            ("idle", gaps) if idle => {
+                for gap in gaps.split(',') {
+                    let (after, us) = gap.split_once(':').ok_or(Refusal::Unsupported)?;
+                    let after = after.parse().map_err(|_| Refusal::Unsupported)?;
+                    let us = us.parse().map_err(|_| Refusal::Unsupported)?;
+                    options.idle.push((after, us));
+                }
+            }
+            _ => return Err(Refusal::Unsupported),
+        }
+    }
+    Ok(options)
+}
+
+fn frame_decode(data: &[u8], options: &Options) -> Answer {
+    let frame = if options.strict {
+        FrameRepr::parse_strict(data)?
+    } else {
+        FrameRepr::parse(data)?
+    };
     Ok(format!(
         "ok message_type={} reserved={} payload={}",
         frame.message_type.raw(),
@@ -187,8 +231,8 @@ fn payload_encode(name: &str, pairs: &[&str]) -> Answer {
     Ok(format!("ok {}", write_hex(&buf[..n])))
 }
 
-fn stream(chunks: &str) -> Answer {
-    let mut decoder = StreamDecoder::new();
+fn stream(chunks: &str, options: &Options) -> Answer {
+    let mut decoder = StreamDecoder::new().with_strict(options.strict);
     let mut events: Vec<String> = Vec::new();
     let mut record = |event: ilahrs::Event<'_>| {
         let token = match event.sentence() {
@@ -197,9 +241,17 @@ fn stream(chunks: &str) -> Answer {
         };
         events.push(token);
     };
-    if !chunks.is_empty() {
-        for chunk in chunks.split(',') {
-            decoder.feed(&read_hex(chunk)?, &mut record);
+    let chunks: Vec<&str> = chunks
+        .split(',')
+        .filter(|chunk| !chunk.is_empty())
+        .collect();
+    if options.idle.iter().any(|(after, _)| *after >= chunks.len()) {
+        return Err(Refusal::Unsupported);
+    }
+    for (index, chunk) in chunks.iter().enumerate() {
+        decoder.feed(&read_hex(chunk)?, &mut record);
+        for (_, us) in options.idle.iter().filter(|(after, _)| *after == index) {
+            decoder.idle(Duration::from_micros(*us), &mut record);
         }
     }
     decoder.finish(&mut record);
