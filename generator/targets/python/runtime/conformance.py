@@ -184,6 +184,7 @@ class Vector:
     input: Any
     expect: Any
     note: str | None
+    options: dict[str, Any] | None = None  # how the decoder is set up ("strict")
 
     @property
     def where(self) -> str:
@@ -238,10 +239,17 @@ def _nmea_encode(i: object, w: str) -> str:
 
 
 def _stream(i: object, w: str) -> str:
-    chunks = _object(i, w).get("chunks")
+    i = _object(i, w)
+    chunks = i.get("chunks")
     if not isinstance(chunks, list) or not chunks:
         raise SuiteError(f"{w}: chunks must be a non-empty list of hex strings")
-    return "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    line = "stream " + ",".join(hex_token(parse_hex(c, w)) for c in chunks)
+    idle = i.get("idle")
+    if idle is None:
+        return line
+    if not isinstance(idle, list) or not idle or not all(isinstance(e, dict) for e in idle):
+        raise SuiteError(f'{w}: idle must be a non-empty list of {{"after": i, "us": n}}')
+    return line + " idle=" + ",".join(f"{int_value(e.get('after'), w)}:{int_value(e.get('us'), w)}" for e in idle)
 
 
 def _session_event(event: object, w: str) -> str:
@@ -292,7 +300,13 @@ def request(v: Vector) -> str:
     translate = _REQUESTS.get(v.kind)
     if translate is None:
         raise SuiteError(f"{v.where}: unknown kind {v.kind!r}")
-    return translate(v.input, v.where)
+    return translate(v.input, v.where) + "".join(_option(k, x, v.where) for k, x in (v.options or {}).items())
+
+
+def _option(name: str, value: object, w: str) -> str:
+    """A decoder option as a last token, NAME=1, NAME=0 or NAME=INT: a runner refuses one it does not know."""
+    number = int(value) if isinstance(value, bool) else int_value(value, w)
+    return f" {name_token(name, w)}={number}"
 
 
 # --- answers against expectations -----------------------------------------------------------------
@@ -596,7 +610,10 @@ def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
         if raw["kind"] not in KINDS + LATER_KINDS:
             raise SuiteError(f"{path}: {raw['id']}: unknown kind {raw['kind']!r}")
         seen.add(raw["id"])
-        vectors.append(Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note")))
+        options = raw.get("options")
+        if options is not None and not isinstance(options, dict):
+            raise SuiteError(f"{path}: {raw['id']}: options must be an object")
+        vectors.append(Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note"), options))
     return vectors
 
 
