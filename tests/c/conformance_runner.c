@@ -6,6 +6,8 @@
  * the runner knows only the request grammar. All test logic lives in conformance/harness.py.
  *
  * Implements every kind. `session` steps the library's state machine (ilahrs_transition_on()).
+ * `stream` makes the idle calls of `idle=AFTER:US,...` (ilahrs_stream_idle()); `strict=1` decodes
+ * strictly (ilahrs_frame_parse_strict(), ilahrs_stream_t.strict); any other option is refused.
  *
  * `--bytewise`: the stream kind feeds the decoder one byte at a time through
  * ilahrs_stream_push()/ilahrs_stream_poll() instead of ilahrs_stream_next() on whole chunks.
@@ -226,6 +228,22 @@ static void bad_request(text_t *t)
     out_str(t, "invalid request");
 }
 
+/* The decoder options a request ends with (`strict=1`); false for any other token, so that a vector
+ * with an option this runner does not know fails. */
+static int read_options(char **args, int first, int nargs, bool *strict)
+{
+    int a;
+    *strict = false;
+    for (a = first; a < nargs; a++) {
+        char *v = value_of(args[a], "strict");
+        if (v == NULL || (strcmp(v, "0") != 0 && strcmp(v, "1") != 0)) {
+            return 0;
+        }
+        *strict = v[0] == '1';
+    }
+    return 1;
+}
+
 static void do_checksum(text_t *t, char **args, int nargs)
 {
     bytes_t b;
@@ -239,12 +257,13 @@ static void do_checksum(text_t *t, char **args, int nargs)
 
 static void do_frame_decode(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     ilahrs_frame_t frame;
     ilahrs_error_t err;
-    if (nargs != 1 || !read_hex(args[0], &b)) {
+    bool strict;
+    if (nargs < 1 || !read_options(args, 1, nargs, &strict) || !read_hex(args[0], &b)) {
         bad_request(t);
-    } else if (!ilahrs_frame_parse(b.data, b.len, &frame, &err)) {
+    } else if (!(strict ? ilahrs_frame_parse_strict : ilahrs_frame_parse)(b.data, b.len, &frame, &err)) {
         out_error(t, &err);
     } else {
         out_fmt(t, "ok message_type=%lld", (long long)frame.message_type);
@@ -637,6 +656,40 @@ static void add_event(text_t *events, const ilahrs_message_t *msg, size_t *count
     }
 }
 
+/* The idle calls of a stream request, `idle=AFTER:US,...`: after chunk AFTER, US microseconds of
+ * quiet line. */
+typedef struct {
+    unsigned long long after;
+    unsigned long long us;
+} idle_t;
+
+static int read_idle(char *token, idle_t *idle, size_t cap, size_t *count)
+{
+    const char *p = value_of(token, "idle");
+    *count = 0;
+    while (p != NULL && *count < cap) {
+        char *end;
+        if (*p < '0' || *p > '9') {
+            return 0;
+        }
+        idle[*count].after = strtoull(p, &end, 10);
+        if (*end != ':' || end[1] < '0' || end[1] > '9') {
+            return 0;
+        }
+        errno = 0;
+        idle[*count].us = strtoull(end + 1, &end, 10);
+        if (errno != 0 || idle[*count].us > UINT32_MAX || (*end != ',' && *end != '\0')) {
+            return 0;
+        }
+        (*count)++;
+        if (*end == '\0') {
+            return 1;
+        }
+        p = end + 1;
+    }
+    return 0;
+}
+
 static void do_stream(text_t *t, char **args, int nargs)
 {
     ilahrs_stream_t decoder;
@@ -644,14 +697,22 @@ static void do_stream(text_t *t, char **args, int nargs)
     text_t events = { NULL, 0, 0 };
     size_t count = 0;
     char *chunk;
-    if (nargs != 1) {
+    idle_t idle[64];
+    size_t idles = 0;
+    size_t index;
+    bool strict;
+    int options = nargs >= 2 && strncmp(args[1], "idle=", 5) == 0 ? 2 : 1;
+    if (nargs < 1 || (options == 2 && !read_idle(args[1], idle, sizeof idle / sizeof idle[0], &idles))
+        || !read_options(args, options, nargs, &strict)) {
         bad_request(t);
         return;
     }
     ilahrs_stream_init(&decoder);
+    decoder.strict = strict;
     out_str(&events, "");
-    for (chunk = strtok(args[0], ","); chunk != NULL; chunk = strtok(NULL, ",")) {
+    for (chunk = strtok(args[0], ","), index = 0; chunk != NULL; chunk = strtok(NULL, ","), index++) {
         bytes_t b;
+        size_t k;
         if (!read_hex(chunk, &b)) {
             free(b.data);
             free(events.data);
@@ -675,9 +736,23 @@ static void do_stream(text_t *t, char **args, int nargs)
             }
         }
         free(b.data);
+        for (k = 0; k < idles; k++) {
+            if (idle[k].after == index) {
+                while (ilahrs_stream_idle(&decoder, (uint32_t)idle[k].us, &msg)) {
+                    add_event(&events, &msg, &count);
+                }
+            }
+        }
     }
     while (ilahrs_stream_finish(&decoder, &msg)) {
         add_event(&events, &msg, &count);
+    }
+    for (; idles > 0; idles--) {
+        if (idle[idles - 1].after >= index) { /* after no chunk */
+            free(events.data);
+            bad_request(t);
+            return;
+        }
     }
     out_fmt(t, "ok discarded=%lld events=", (long long)decoder.discarded);
     out_str(t, count > 0 ? events.data : "-");
