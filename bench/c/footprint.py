@@ -4,7 +4,7 @@ Compiles generated/c/ilahrs.c with arm-none-eabi-gcc, then links three closures 
 --gc-sections, keeping only what the named entry points reach (newlib-nano's memcpy/memchr and
 libgcc's soft-float helpers included, since a firmware image needs them too):
 
-- the stream decoder (ilahrs_stream_init/next/push/poll/finish), and how much of it is the
+- the stream decoder (ilahrs_stream_init/next/push/poll/finish/idle), and how much of it is the
   $PAHR validation it shares with ilahrs_pahr_parse (the sentence parser, also linked alone),
 - the frames-only stream decoder (the library compiled with ILAHRS_STREAM_SENTENCES=0, for a
   firmware that never turns on NMEA output),
@@ -35,7 +35,7 @@ import sys
 from pathlib import Path
 
 STREAM = ["ilahrs_stream_init", "ilahrs_stream_next", "ilahrs_stream_push", "ilahrs_stream_poll",
-          "ilahrs_stream_finish"]
+          "ilahrs_stream_finish", "ilahrs_stream_idle"]
 BUILDERS = ["ilahrs_frame_build", "ilahrs_command_build", "ilahrs_checksum", "ilahrs_ack_build"]
 BLOCKS = ["ilahrs_payload_build_frame"]
 FIRMWARE = [*STREAM, *BUILDERS, *BLOCKS, "ilahrs_payload_parse", "ilahrs_payload_build"]

@@ -1722,6 +1722,29 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
     return len == (size_t)size || fail(err, ILAHRS_ERR_TRAILING_DATA, (size_t)size, NULL);
 }
 
+/* Strict decoding (E42): the valid frame at p is one the AHRS cannot have sent, its reserved byte
+ * changed. */
+#ifdef ILAHRS_STRICT_RESERVED
+#define STRICT_REFUSES(p)                                                                                     \
+    (LE((p) + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE) == ILAHRS_STRICT_MESSAGE_TYPE \
+     && LE((p) + ILAHRS_FRAME_RESERVED_OFFSET, ILAHRS_FRAME_RESERVED_SIZE) != ILAHRS_STRICT_RESERVED)
+#else
+#define STRICT_REFUSES(p) false
+#endif
+
+bool ilahrs_frame_parse_strict(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
+{
+    if (!ilahrs_frame_parse(data, len, frame, err)) {
+        return false;
+    }
+#ifdef ILAHRS_STRICT_RESERVED
+    if (STRICT_REFUSES(data)) {
+        return fail(err, ILAHRS_ERR_BAD_RESERVED, ILAHRS_FRAME_RESERVED_OFFSET, NAME_FRAME_RESERVED);
+    }
+#endif
+    return true;
+}
+
 /* Write header, fields, length and checksum around a payload already at out + PAYLOAD_OFFSET. */
 static size_t frame_finish(uint8_t *out, const ilahrs_frame_t *frame, size_t payload_size)
 {
@@ -2985,11 +3008,12 @@ static bool may_start(uint8_t byte)
     return byte == ILAHRS_FRAME_HEADER_0;
 }
 
-/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE. */
-static int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE.
+ * Strict, a whole frame STRICT_REFUSES is invalid. */
+static int frame_candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
     int size = frame_check(p, n, &msg->frame);
-    if (size < 0) {
+    if (size < 0 || (s->strict && STRICT_REFUSES(p))) {
         return size == -ILAHRS_ERR_TRUNCATED ? NEED_MORE : INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_FRAME;
@@ -3055,10 +3079,10 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 #endif
 
 /* The message at p[0..n), of which p[0..seen) were examined before: as frame_candidate(). */
-static int candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
+static int candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
 {
     if (p[0] == ILAHRS_FRAME_HEADER_0) {
-        return frame_candidate(p, n, msg);
+        return frame_candidate(s, p, n, msg);
     }
 #if ILAHRS_STREAM_SENTENCES
     if (p[0] == PAHR_START) {
@@ -3082,7 +3106,7 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
     const uint8_t *p = *data;
     size_t n = *len;
     for (; n != 0; p++, n--, seen = 0) {
-        int r = may_start(*p) ? candidate(p, n, seen, msg) : INVALID;
+        int r = may_start(*p) ? candidate(s, p, n, seen, msg) : INVALID;
         if (r > 0) {
             *data = p + r;
             *len = n - (size_t)r;
@@ -3123,6 +3147,7 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
     stream->discarded = 0;
     stream->start = 0;
     stream->count = 0;
+    stream->strict = false;
 }
 
 /* A byte that may decide something: appended to the held bytes (the message handed out last
@@ -3211,6 +3236,17 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
     return scan_held(s, 0, true, msg);
 }
+
+#ifdef ILAHRS_IDLE_TIMEOUT_US
+/* An idle line ends the input as far as the held bytes go (finish()); the next byte starts afresh. */
+bool ilahrs_stream_idle(ilahrs_stream_t *s, uint32_t quiet_us, ilahrs_message_t *msg)
+{
+    if (quiet_us < ILAHRS_IDLE_TIMEOUT_US) {
+        return false;
+    }
+    return ilahrs_stream_finish(s, msg);
+}
+#endif
 
 /* ---- Device state machine -------------------------------------------------------------- */
 

@@ -38,12 +38,12 @@
  *   field as NULL (their kind and byte offset are unchanged, and the offset locates the field),
  *   and no name string is linked; ilahrs_error_kind_name() and ilahrs_variant_part_number() stay.
  *   Everything else answers exactly as in the default build. It saves about 790 bytes of flash in
- *   a firmware that decodes the stream and builds frames, commands and payloads (4,051 -> 3,264),
+ *   a firmware that decodes the stream and builds frames, commands and payloads (4,059 -> 3,272),
  *   and about 2,750 bytes in the whole library.
  * - ILAHRS_STREAM_SENTENCES 0 (for ilahrs.c): a stream decoder for a firmware that never turns
  *   on the device's NMEA output. It hands out the same frames, in the same order, and counts the
  *   bytes of $PAHR sentences as discarded; ilahrs_pahr_parse() and the other sentence functions
- *   stay. It saves about 750 bytes of the stream decoder's (1,340 -> 590).
+ *   stay. It saves about 830 bytes of the stream decoder's (1,348 -> 520).
  *
  * Decoding a byte stream (serial port, capture file):
  * @code
@@ -166,6 +166,12 @@ typedef enum ilahrs_error_kind {
 #define ILAHRS_FRAME_MAX_SIZE 60    /**< Size of the longest frame: a buffer of this size holds any frame. */
 #define ILAHRS_MAX_MESSAGE_SIZE 82  /**< The longest message on the wire, frame or sentence. */
 
+/** A message never spans an idle line: after this many byte times of quiet (10 bits a byte at
+ * 115200 baud), ilahrs_stream_idle() gives up what the stream decoder holds. */
+#define ILAHRS_IDLE_BYTE_TIMES 1152
+/** ILAHRS_IDLE_BYTE_TIMES in microseconds (rounded up): the quiet time ilahrs_stream_idle() acts on. */
+#define ILAHRS_IDLE_TIMEOUT_US 100000u
+
 /** The message type byte (Table 6.2, Table 6.3). */
 typedef enum ilahrs_message_type {
     /** A command from the host (one-byte payload holding the command code). */
@@ -173,6 +179,12 @@ typedef enum ilahrs_message_type {
     /** Data: every AHRS output, and the parameter blocks the host sends (E5). */
     ILAHRS_MESSAGE_TYPE_DATA = 1,
 } ilahrs_message_type_t;
+
+/** Strict decoding (E42): a frame of this message type whose reserved byte is not
+ * ILAHRS_STRICT_RESERVED is refused. */
+#define ILAHRS_STRICT_MESSAGE_TYPE ILAHRS_MESSAGE_TYPE_DATA
+/** The reserved byte the AHRS sends in a frame of type ILAHRS_STRICT_MESSAGE_TYPE. */
+#define ILAHRS_STRICT_RESERVED 0u
 
 /**
  * A frame: the fields between header and payload, and the payload. The message length and
@@ -799,6 +811,16 @@ const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind);
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err);
 
 /**
+ * ilahrs_frame_parse() with strict decoding (E42), one check after all of its others: a frame of
+ * message type ILAHRS_STRICT_MESSAGE_TYPE (data) whose reserved byte is not ILAHRS_STRICT_RESERVED
+ * (what the AHRS sends) is refused with `bad_reserved` at ILAHRS_FRAME_RESERVED_OFFSET (field
+ * "reserved"). The 16-bit sum misses two bytes changed by opposite amounts; when one of them is
+ * the reserved byte, this refuses the frame. Without a strict rule in the spec it is
+ * ilahrs_frame_parse().
+ */
+bool ilahrs_frame_parse_strict(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err);
+
+/**
  * Encode a frame into `out`, filling in the header, the message length and the checksum.
  *
  * Refuses a message type that is not in ilahrs_message_type_t (`bad_message_type`, field
@@ -1146,15 +1168,20 @@ typedef struct ilahrs_message {
  * corrupted frame never costs a following good message, whatever the chunk boundaries. Each
  * byte is examined a bounded number of times, however the input is cut (see "Build switches"
  * for a decoder without sentences).
+ *
+ * Strict decoding (E42): set `strict` (after ilahrs_stream_init(), before the first byte) and a
+ * frame that ilahrs_frame_parse_strict() refuses is no message (one byte discarded, as for any
+ * other invalid frame). `= {0}` is the lenient decoder.
  */
 typedef struct ilahrs_stream {
     uint64_t discarded;                    /**< Input bytes that belong to no accepted message. */
-    uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
+    bool strict;                           /**< Strict decoding (E42); false (zero) by default. */
     uint8_t start;                         /**< First held byte. */
     uint8_t count;                         /**< Number of held bytes. */
+    uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
 } ilahrs_stream_t;
 
-/** Empty the decoder (`discarded` back to 0). Same as zero-initialising it. */
+/** Empty the decoder (`discarded` back to 0, `strict` off). Same as zero-initialising it. */
 void ilahrs_stream_init(ilahrs_stream_t *stream);
 
 /**
@@ -1206,6 +1233,44 @@ bool ilahrs_stream_poll(ilahrs_stream_t *stream, ilahrs_message_t *msg);
  * false; the decoder is then empty (`discarded` keeps counting).
  */
 bool ilahrs_stream_finish(ilahrs_stream_t *stream, ilahrs_message_t *msg);
+
+#ifdef ILAHRS_IDLE_TIMEOUT_US
+/**
+ * The line has been quiet for `quiet_us` microseconds since the last byte. A message never spans
+ * an idle line (E41): from ILAHRS_IDLE_TIMEOUT_US (ILAHRS_IDLE_BYTE_TIMES byte times) on, the
+ * decoder decides on every byte it holds exactly as ilahrs_stream_finish() does (the start of a
+ * frame left by a sender cut off mid-write is discarded a byte at a time, any valid message behind
+ * it handed out), then goes on with the next byte as usual. Below that it changes nothing and
+ * returns false. Call it until it returns false. UINT32_MAX says "the line is idle" without a time.
+ *
+ * Call it from the code that feeds the decoder, never concurrently with it. A UART whose receive
+ * interrupt only queues bytes, drained by a periodic timer task:
+ * @code
+ *     void every_10_ms(void)
+ *     {
+ *         static uint32_t last_byte_us;
+ *         uint32_t now = micros();
+ *         uint8_t byte;
+ *         ilahrs_message_t msg;
+ *         while (rx_queue_get(&byte)) {
+ *             last_byte_us = now;
+ *             if (ilahrs_stream_push(&decoder, byte, &msg)) {
+ *                 do {
+ *                     handle(&msg);
+ *                 } while (ilahrs_stream_poll(&decoder, &msg));
+ *             }
+ *         }
+ *         while (ilahrs_stream_idle(&decoder, now - last_byte_us, &msg)) {
+ *             handle(&msg);
+ *         }
+ *     }
+ * @endcode
+ * (After 71 minutes without a byte `now - last_byte_us` wraps around, by then with nothing held.)
+ * An RTOS task that reads the UART with a timeout of ILAHRS_IDLE_TIMEOUT_US calls it with
+ * ILAHRS_IDLE_TIMEOUT_US whenever a read returns nothing.
+ */
+bool ilahrs_stream_idle(ilahrs_stream_t *stream, uint32_t quiet_us, ilahrs_message_t *msg);
+#endif
 
 /* ======================================================================================== */
 /* Device state machine                                                                     */

@@ -6,6 +6,8 @@
  * the runner knows only the request grammar. All test logic lives in conformance/harness.py.
  *
  * Implements every kind. `session` steps the library's state machine (ilahrs_transition_on()).
+ * `stream` makes the idle calls of `idle=AFTER:US,...` (ilahrs_stream_idle()); `strict` decodes
+ * strictly (ilahrs_frame_parse_strict(), ilahrs_stream_t.strict); any other option is refused.
  *
  * `--bytewise`: the stream kind feeds the decoder one byte at a time through
  * ilahrs_stream_push()/ilahrs_stream_poll() instead of ilahrs_stream_next() on whole chunks.
@@ -226,9 +228,24 @@ static void bad_request(text_t *t)
     out_str(t, "invalid request");
 }
 
+/* The decoder options a request ends with (`strict`); false for any other token, so that a vector
+ * with an option this runner does not know fails. */
+static int read_options(char **args, int first, int nargs, bool *strict)
+{
+    int a;
+    *strict = false;
+    for (a = first; a < nargs; a++) {
+        if (strcmp(args[a], "strict") != 0) {
+            return 0;
+        }
+        *strict = true;
+    }
+    return 1;
+}
+
 static void do_checksum(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     if (nargs != 1 || !read_hex(args[0], &b)) {
         bad_request(t);
     } else {
@@ -239,12 +256,13 @@ static void do_checksum(text_t *t, char **args, int nargs)
 
 static void do_frame_decode(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     ilahrs_frame_t frame;
     ilahrs_error_t err;
-    if (nargs != 1 || !read_hex(args[0], &b)) {
+    bool strict;
+    if (nargs < 1 || !read_options(args, 1, nargs, &strict) || !read_hex(args[0], &b)) {
         bad_request(t);
-    } else if (!ilahrs_frame_parse(b.data, b.len, &frame, &err)) {
+    } else if (!(strict ? ilahrs_frame_parse_strict : ilahrs_frame_parse)(b.data, b.len, &frame, &err)) {
         out_error(t, &err);
     } else {
         out_fmt(t, "ok message_type=%lld", (long long)frame.message_type);
@@ -256,7 +274,7 @@ static void do_frame_decode(text_t *t, char **args, int nargs)
 
 static void do_frame_encode(text_t *t, char **args, int nargs)
 {
-    bytes_t payload;
+    bytes_t payload = { NULL, 0 };
     long long type = 0;
     long long reserved = 0;
     ilahrs_frame_t frame;
@@ -324,7 +342,7 @@ static void do_command_encode(text_t *t, char **args, int nargs)
 
 static void do_command_decode(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     ilahrs_command_match_t match;
     ilahrs_error_t err;
     unsigned i;
@@ -346,7 +364,7 @@ static void do_command_decode(text_t *t, char **args, int nargs)
 
 static void do_ack(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     ilahrs_error_t err;
     uint8_t out[ILAHRS_FRAME_MAX_SIZE];
     size_t n;
@@ -371,7 +389,7 @@ static void do_payload_decode(text_t *t, char **args, int nargs)
     ilahrs_payload_t payload;
     ilahrs_variant_t variant = ILAHRS_VARIANT_NONE;
     ilahrs_error_t err;
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     void *value;
     size_t i;
     if (nargs < 2 || nargs > 3 || !find_payload(args[0], &payload) || !read_hex(args[1], &b)) {
@@ -514,7 +532,7 @@ static void do_payload_encode(text_t *t, char **args, int nargs)
         case ILAHRS_KIND_CHAR:
         case ILAHRS_KIND_RESERVED:
         default: {
-            bytes_t b;
+            bytes_t b = { NULL, 0 };
             int ok = ilahrs_field_kind(f) == ILAHRS_KIND_CHAR ? read_text(eq + 1, &b) : read_hex(eq + 1, &b);
             uint8_t *member = (uint8_t *)ilahrs_field_member(f, value);
             if (!ok) {
@@ -563,7 +581,7 @@ done:
 
 static void do_nmea_decode(text_t *t, char **args, int nargs)
 {
-    bytes_t b;
+    bytes_t b = { NULL, 0 };
     ilahrs_pahr_t s;
     ilahrs_error_t err;
     size_t k;
@@ -637,6 +655,40 @@ static void add_event(text_t *events, const ilahrs_message_t *msg, size_t *count
     }
 }
 
+/* The idle calls of a stream request, `idle=AFTER:US,...`: after chunk AFTER, US microseconds of
+ * quiet line. */
+typedef struct {
+    unsigned long long after;
+    unsigned long long us;
+} idle_t;
+
+static int read_idle(char *token, idle_t *idle, size_t cap, size_t *count)
+{
+    const char *p = value_of(token, "idle");
+    *count = 0;
+    while (p != NULL && *count < cap) {
+        char *end;
+        if (*p < '0' || *p > '9') {
+            return 0;
+        }
+        idle[*count].after = strtoull(p, &end, 10);
+        if (*end != ':' || end[1] < '0' || end[1] > '9') {
+            return 0;
+        }
+        errno = 0;
+        idle[*count].us = strtoull(end + 1, &end, 10);
+        if (errno != 0 || idle[*count].us > UINT32_MAX || (*end != ',' && *end != '\0')) {
+            return 0;
+        }
+        (*count)++;
+        if (*end == '\0') {
+            return 1;
+        }
+        p = end + 1;
+    }
+    return 0;
+}
+
 static void do_stream(text_t *t, char **args, int nargs)
 {
     ilahrs_stream_t decoder;
@@ -644,14 +696,22 @@ static void do_stream(text_t *t, char **args, int nargs)
     text_t events = { NULL, 0, 0 };
     size_t count = 0;
     char *chunk;
-    if (nargs != 1) {
+    idle_t idle[64];
+    size_t idles = 0;
+    size_t index;
+    bool strict;
+    int options = nargs >= 2 && strncmp(args[1], "idle=", 5) == 0 ? 2 : 1;
+    if (nargs < 1 || (options == 2 && !read_idle(args[1], idle, sizeof idle / sizeof idle[0], &idles))
+        || !read_options(args, options, nargs, &strict)) {
         bad_request(t);
         return;
     }
     ilahrs_stream_init(&decoder);
+    decoder.strict = strict;
     out_str(&events, "");
-    for (chunk = strtok(args[0], ","); chunk != NULL; chunk = strtok(NULL, ",")) {
-        bytes_t b;
+    for (chunk = strtok(args[0], ","), index = 0; chunk != NULL; chunk = strtok(NULL, ","), index++) {
+        bytes_t b = { NULL, 0 };
+        size_t k;
         if (!read_hex(chunk, &b)) {
             free(b.data);
             free(events.data);
@@ -675,9 +735,23 @@ static void do_stream(text_t *t, char **args, int nargs)
             }
         }
         free(b.data);
+        for (k = 0; k < idles; k++) {
+            if (idle[k].after == index) {
+                while (ilahrs_stream_idle(&decoder, (uint32_t)idle[k].us, &msg)) {
+                    add_event(&events, &msg, &count);
+                }
+            }
+        }
     }
     while (ilahrs_stream_finish(&decoder, &msg)) {
         add_event(&events, &msg, &count);
+    }
+    for (; idles > 0; idles--) {
+        if (idle[idles - 1].after >= index) { /* after no chunk */
+            free(events.data);
+            bad_request(t);
+            return;
+        }
     }
     out_fmt(t, "ok discarded=%lld events=", (long long)decoder.discarded);
     out_str(t, count > 0 ? events.data : "-");
@@ -690,7 +764,7 @@ static int session_event(const char *token, ilahrs_state_t state, ilahrs_event_t
 {
     long long number;
     if (strncmp(token, "C:", 2) == 0) {
-        bytes_t b;
+        bytes_t b = { NULL, 0 };
         int ok = read_hex(token + 2, &b) && b.len == 1;
         if (ok) {
             *event = ilahrs_event_for_code(state, b.data[0]);

@@ -630,13 +630,21 @@ typedef struct {
     uint64_t discarded;
 } events_t;
 
+/* Where the line was idle (ilahrs_stream_idle() at or above the timeout): after in[at[k] - 1]. */
+typedef struct {
+    size_t count;
+    size_t at[BIG];
+} cuts_t;
+
 /*
  * The semantics of spec/README.md, whole input at once, written plainly with the one-message
- * decoders: at each position a valid frame or sentence is taken, else one byte is dropped.
+ * decoders: at each position a valid frame or sentence is taken, else one byte is dropped. No
+ * message spans an idle point (E41); strict, frames are decoded with ilahrs_frame_parse_strict().
  */
-static void reference(const uint8_t *in, size_t n, events_t *ev)
+static void reference(const uint8_t *in, size_t n, bool strict, const cuts_t *cuts, events_t *ev)
 {
     size_t pos = 0;
+    size_t cut = 0;
     ev->count = 0;
     ev->discarded = 0;
     while (pos < n) {
@@ -644,16 +652,24 @@ static void reference(const uint8_t *in, size_t n, events_t *ev)
         int kind = 0;
         ilahrs_frame_t f;
         ilahrs_pahr_t s;
-        if (in[pos] == ILAHRS_FRAME_HEADER_0 && n - pos >= ILAHRS_FRAME_PAYLOAD_OFFSET) {
+        size_t end = n; /* the end of the input or the next idle point */
+        while (cut < cuts->count && cuts->at[cut] <= pos) {
+            cut++;
+        }
+        if (cut < cuts->count && cuts->at[cut] < n) {
+            end = cuts->at[cut];
+        }
+        if (in[pos] == ILAHRS_FRAME_HEADER_0 && end - pos >= ILAHRS_FRAME_PAYLOAD_OFFSET) {
             size_t total = ILAHRS_FRAME_HEADER_SIZE
                          + (size_t)(in[pos + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET] | in[pos + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET + 1] << 8);
-            if (total <= n - pos && ilahrs_frame_parse(in + pos, total, &f, NULL)) {
+            if (total <= end - pos
+                && (strict ? ilahrs_frame_parse_strict : ilahrs_frame_parse)(in + pos, total, &f, NULL)) {
                 size = total;
                 kind = ILAHRS_MESSAGE_FRAME;
             }
         } else if (in[pos] == '$') {
             size_t i;
-            for (i = pos; i < n && i < pos + ILAHRS_PAHR_MAX_LENGTH; i++) {
+            for (i = pos; i < end && i < pos + ILAHRS_PAHR_MAX_LENGTH; i++) {
                 if (in[i] == '\n') {
                     if (ilahrs_pahr_parse((const char *)in + pos, i + 1 - pos, &s, NULL)) {
                         size = i + 1 - pos;
@@ -685,11 +701,32 @@ static void record(events_t *ev, const ilahrs_message_t *msg)
     }
 }
 
-/* Feed `in` in random chunks (mode 0), byte by byte (1) or whole (2); compare with the reference. */
-static void run_stream(const uint8_t *in, size_t n, int mode)
+/* A quiet time for ilahrs_stream_idle(): below the timeout, just below, at it, above, or UINT32_MAX. */
+static uint32_t random_quiet(void)
+{
+    switch (below(5)) {
+    case 0:
+        return (uint32_t)below(ILAHRS_IDLE_TIMEOUT_US);
+    case 1:
+        return ILAHRS_IDLE_TIMEOUT_US - 1;
+    case 2:
+        return ILAHRS_IDLE_TIMEOUT_US;
+    case 3:
+        return ILAHRS_IDLE_TIMEOUT_US + (uint32_t)below(1000000);
+    default:
+        return UINT32_MAX;
+    }
+}
+
+/*
+ * Feed `in` in random chunks (mode 0), byte by byte (1) or whole (2); compare with the reference.
+ * `idle`: between chunks or bytes, now and then, the line is quiet for a random time (random_quiet()).
+ */
+static void run_stream(const uint8_t *in, size_t n, int mode, bool strict, bool idle)
 {
     static events_t want;
     static events_t got;
+    static cuts_t cuts;
     ilahrs_stream_t s;
     ilahrs_message_t msg;
     size_t fed = 0;
@@ -697,9 +734,10 @@ static void run_stream(const uint8_t *in, size_t n, int mode)
     size_t bytes_in_messages = 0;
     uint8_t copy[BIG];
     size_t copied = 0;
-    reference(in, n, &want);
     memset(&s, 0, sizeof s);
+    s.strict = strict;
     got.count = 0;
+    cuts.count = 0;
     while (fed < n) {
         size_t chunk = mode == 1 ? 1 : mode == 2 ? n : 1 + below(mode == 0 && rnd() % 3 == 0 ? 100 : 12);
         if (chunk > n - fed) {
@@ -729,13 +767,33 @@ static void run_stream(const uint8_t *in, size_t n, int mode)
             free(buf);
         }
         fed += chunk;
+        if (idle && rnd() % (mode == 1 ? 16 : 4) == 0) {
+            uint32_t quiet = random_quiet();
+            uint64_t discarded = s.discarded;
+            uint8_t count = s.count;
+            int handed = 0;
+            while (ilahrs_stream_idle(&s, quiet, &msg)) {
+                record(&got, &msg);
+                memcpy(copy + copied, msg.data, msg.size);
+                copied += msg.size;
+                handed = 1;
+            }
+            if (quiet >= ILAHRS_IDLE_TIMEOUT_US) {
+                CHECK(s.count == 0); /* every held byte decided */
+                cuts.at[cuts.count++] = fed;
+            } else {
+                CHECK(!handed && s.discarded == discarded && s.count == count); /* nothing changes */
+            }
+        }
     }
     while (ilahrs_stream_finish(&s, &msg)) {
         record(&got, &msg);
         memcpy(copy + copied, msg.data, msg.size);
         copied += msg.size;
     }
+    reference(in, n, strict, &cuts, &want);
     CHECK(s.count == 0);
+    CHECK(s.strict == strict);
     CHECK(got.count == want.count);
     CHECK(s.discarded == want.discarded);
     copied = 0;
@@ -814,9 +872,11 @@ static void test_stream(void)
     int round;
     for (round = 0; round < 20000; round++) {
         size_t n = random_capture(in, sizeof in);
-        run_stream(in, n, 0);
-        run_stream(in, n, 1);
-        run_stream(in, n, 2);
+        bool strict = (round & 1) != 0;
+        bool idle = (round & 2) != 0;
+        run_stream(in, n, 0, strict, idle);
+        run_stream(in, n, 1, strict, idle);
+        run_stream(in, n, 2, strict, false);
     }
     {
         /* ICD section 6.3.1: AHRScont1 is AA 55 00 00 07 00 80 87 00; one junk byte before it */
@@ -830,6 +890,187 @@ static void test_stream(void)
         CHECK(!ilahrs_stream_next(&s, &p, &n, &msg) && n == 0);
     }
     CHECK(sizeof(ilahrs_stream_t) <= 128);
+}
+
+/* ---- Idle line (E41) and strict decoding (E42) ----------------------------------------------- */
+
+/* ICD section 6.3.1: AHRScont1, AA 55 00 00 07 00 80 87 00. */
+static const uint8_t ahrs_cont1[] = { 0xAA, 0x55, 0x00, 0x00, 0x07, 0x00, 0x80, 0x87, 0x00 };
+
+/* Push `n` bytes one at a time; the messages handed out go to *got (at most `cap`), their count is returned. */
+static size_t push_all(ilahrs_stream_t *s, const uint8_t *p, size_t n, ilahrs_message_t *got, size_t cap)
+{
+    size_t count = 0;
+    size_t i;
+    ilahrs_message_t msg;
+    for (i = 0; i < n; i++) {
+        if (ilahrs_stream_push(s, p[i], &msg)) {
+            do {
+                if (count < cap) {
+                    got[count] = msg;
+                }
+                count++;
+            } while (ilahrs_stream_poll(s, &msg));
+        }
+    }
+    return count;
+}
+
+static void test_idle(void)
+{
+    /* The start of a frame whose length (0x3A: 58, the longest) says 60 bytes, as a host cut off
+     * mid-write leaves it, then AHRScont1. */
+    static const uint8_t stale[] = { 0xAA, 0x55, 0x01, 0x00, 0x3A, 0x00 };
+    ilahrs_stream_t s = { 0 };
+    ilahrs_stream_t before;
+    ilahrs_message_t msg;
+    ilahrs_message_t got[4];
+    uint8_t in[sizeof stale + sizeof ahrs_cont1];
+    const uint8_t *p = in;
+    size_t n = sizeof in;
+    memcpy(in, stale, sizeof stale);
+    memcpy(in + sizeof stale, ahrs_cont1, sizeof ahrs_cont1);
+    CHECK(ILAHRS_IDLE_TIMEOUT_US > 0 && ILAHRS_IDLE_BYTE_TIMES > 0);
+
+    /* Nothing held: idle at any time hands out nothing and changes nothing. */
+    CHECK(!ilahrs_stream_idle(&s, 0, &msg) && !ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US, &msg));
+    CHECK(!ilahrs_stream_idle(&s, UINT32_MAX, &msg) && s.discarded == 0 && s.count == 0 && !s.strict);
+
+    /* The stale header holds the line: AHRScont1 is taken as part of it. */
+    CHECK(!ilahrs_stream_next(&s, &p, &n, &msg) && n == 0 && s.count == sizeof in && s.discarded == 0);
+    /* Below the timeout nothing changes, however often it is said. */
+    before = s;
+    CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US - 1, &msg));
+    CHECK(!ilahrs_stream_idle(&s, 0, &msg));
+    CHECK(memcmp(&s, &before, sizeof s) == 0);
+    /* At the timeout the stale bytes are given up one at a time and AHRScont1 behind them is handed out. */
+    CHECK(ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US, &msg) && msg.kind == ILAHRS_MESSAGE_FRAME);
+    CHECK(msg.size == sizeof ahrs_cont1 && memcmp(msg.data, ahrs_cont1, sizeof ahrs_cont1) == 0);
+    CHECK(msg.frame.payload_size == 1 && msg.frame.payload[0] == 0x80 && s.discarded == sizeof stale);
+    CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US, &msg) && s.count == 0);
+
+    /* Byte at a time: the stale header, an idle line, then AHRScont1 pushed: handed out on its last
+     * byte. Without the idle call it would not be (the stale header waits for 60 bytes). */
+    ilahrs_stream_init(&s);
+    CHECK(push_all(&s, stale, sizeof stale, got, 4) == 0);
+    CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US - 1, &msg) && s.count == sizeof stale);
+    CHECK(push_all(&s, ahrs_cont1, 3, got, 4) == 0);
+    CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US + 1, &msg)); /* AA 55 00 is no message */
+    CHECK(s.count == 0 && s.discarded == sizeof stale + 3);
+    CHECK(push_all(&s, ahrs_cont1, sizeof ahrs_cont1, got, 4) == 1 && got[0].size == sizeof ahrs_cont1);
+    CHECK(memcmp(got[0].data, ahrs_cont1, sizeof ahrs_cont1) == 0 && s.count == 0);
+    ilahrs_stream_init(&s);
+    CHECK(push_all(&s, stale, sizeof stale, got, 4) == 0);
+    CHECK(push_all(&s, ahrs_cont1, sizeof ahrs_cont1, got, 4) == 0 && s.count == sizeof in);
+
+    /* Idle while a message waits behind one handed out: the start of a frame 28 bytes long holds
+     * two AHRScont1 and four zeros; its last byte decides it (bad checksum), and the first AHRScont1
+     * is handed out with the second waiting (push returned true, poll not called yet). */
+    {
+        static const uint8_t head[] = { 0xAA, 0x55, 0x01, 0x00, 0x1A, 0x00 };
+        uint8_t held[sizeof head + 2 * sizeof ahrs_cont1 + 4] = { 0 };
+        size_t i;
+        memcpy(held, head, sizeof head);
+        memcpy(held + sizeof head, ahrs_cont1, sizeof ahrs_cont1);
+        memcpy(held + sizeof head + sizeof ahrs_cont1, ahrs_cont1, sizeof ahrs_cont1);
+        ilahrs_stream_init(&s);
+        for (i = 0; i + 1 < sizeof held; i++) {
+            CHECK(!ilahrs_stream_push(&s, held[i], &msg));
+        }
+        CHECK(ilahrs_stream_push(&s, held[i], &msg) && msg.size == sizeof ahrs_cont1 && s.discarded == sizeof head);
+        before = s;
+        CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US - 1, &msg) && memcmp(&s, &before, sizeof s) == 0);
+        CHECK(ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US, &msg) && msg.size == sizeof ahrs_cont1);
+        CHECK(memcmp(msg.data, ahrs_cont1, sizeof ahrs_cont1) == 0);
+        CHECK(!ilahrs_stream_idle(&s, ILAHRS_IDLE_TIMEOUT_US, &msg) && s.count == 0 && s.discarded == sizeof head + 4);
+    }
+}
+
+static void test_strict(void)
+{
+    /* conformance/vectors/frames.json: a data frame with payload 01 02 03 and reserved 0, the same
+     * with reserved 3C, a command frame (AHRScont1) with reserved 3C. */
+    static const uint8_t data0[] = { 0xAA, 0x55, 0x01, 0x00, 0x09, 0x00, 0x01, 0x02, 0x03, 0x10, 0x00 };
+    static const uint8_t data3c[] = { 0xAA, 0x55, 0x01, 0x3C, 0x09, 0x00, 0x01, 0x02, 0x03, 0x4C, 0x00 };
+    static const uint8_t command3c[] = { 0xAA, 0x55, 0x00, 0x3C, 0x07, 0x00, 0x80, 0xC3, 0x00 };
+    uint8_t buf[64];
+    ilahrs_frame_t f;
+    ilahrs_error_t err;
+    ilahrs_stream_t s;
+    ilahrs_message_t got[4];
+    int strict;
+
+    CHECK(ilahrs_frame_parse_strict(data0, sizeof data0, &f, &err) && f.reserved == 0 && f.payload_size == 3);
+    CHECK(ilahrs_frame_parse(data3c, sizeof data3c, &f, &err) && f.reserved == 0x3C);
+    CHECK(!ilahrs_frame_parse_strict(data3c, sizeof data3c, &f, &err));
+    CHECK(is_error(&err, ILAHRS_ERR_BAD_RESERVED, ILAHRS_FRAME_RESERVED_OFFSET));
+    CHECK(err.field == NULL || strcmp(err.field, ILAHRS_FRAME_RESERVED_NAME) == 0);
+    CHECK(!ilahrs_frame_parse_strict(data3c, sizeof data3c, &f, NULL));
+    CHECK(ilahrs_frame_parse_strict(command3c, sizeof command3c, &f, &err) && f.reserved == 0x3C);
+    /* After every other check: trailing data, a bad checksum, a cut frame come first. */
+    memcpy(buf, data3c, sizeof data3c);
+    buf[sizeof data3c] = 0;
+    CHECK(!ilahrs_frame_parse_strict(buf, sizeof data3c + 1, &f, &err)
+          && is_error(&err, ILAHRS_ERR_TRAILING_DATA, sizeof data3c));
+    buf[sizeof data3c - 2] ^= 1;
+    CHECK(!ilahrs_frame_parse_strict(buf, sizeof data3c, &f, &err)
+          && is_error(&err, ILAHRS_ERR_BAD_CHECKSUM, sizeof data3c - 2));
+    CHECK(!ilahrs_frame_parse_strict(data3c, sizeof data3c - 1, &f, &err) && err.kind == ILAHRS_ERR_TRUNCATED);
+    /* Every reserved value of a data frame but 0 is refused; every value of a command frame accepted. */
+    {
+        int v;
+        int refused = 0;
+        for (v = 0; v <= 0xFF; v++) {
+            ilahrs_frame_t frame = { 0 };
+            size_t n;
+            uint8_t payload = 0x80;
+            frame.payload = &payload;
+            frame.payload_size = 1;
+            frame.reserved = (uint8_t)v;
+            frame.message_type = ILAHRS_MESSAGE_TYPE_DATA;
+            n = ilahrs_frame_build(&frame, buf, sizeof buf, NULL);
+            refused += !ilahrs_frame_parse_strict(buf, n, &f, &err) && err.kind == ILAHRS_ERR_BAD_RESERVED;
+            CHECK(ilahrs_frame_parse(buf, n, &f, &err));
+            frame.message_type = ILAHRS_MESSAGE_TYPE_COMMAND;
+            n = ilahrs_frame_build(&frame, buf, sizeof buf, NULL);
+            CHECK(ilahrs_frame_parse_strict(buf, n, &f, &err) && f.reserved == v);
+        }
+        CHECK(refused == 0xFF);
+    }
+
+    /* The stream decoder: data3c then AHRScont1. Lenient (`= {0}`, and after init), both are
+     * messages; strict, data3c is discarded byte by byte and AHRScont1 still found. */
+    memcpy(buf, data3c, sizeof data3c);
+    memcpy(buf + sizeof data3c, ahrs_cont1, sizeof ahrs_cont1);
+    for (strict = 0; strict < 2; strict++) {
+        const uint8_t *p = buf;
+        size_t n = sizeof data3c + sizeof ahrs_cont1;
+        ilahrs_message_t msg;
+        size_t count = 0;
+        memset(&s, 0xFF, sizeof s);
+        ilahrs_stream_init(&s);
+        CHECK(!s.strict);
+        s.strict = strict != 0;
+        while (ilahrs_stream_next(&s, &p, &n, &msg)) {
+            got[count++ & 3] = msg;
+        }
+        CHECK(count == (strict ? 1u : 2u) && s.discarded == (strict ? sizeof data3c : 0u));
+        CHECK(got[count - 1].size == sizeof ahrs_cont1 && memcmp(got[count - 1].data, ahrs_cont1, sizeof ahrs_cont1) == 0);
+        /* byte at a time, the same */
+        ilahrs_stream_init(&s);
+        s.strict = strict != 0;
+        CHECK(push_all(&s, buf, sizeof data3c + sizeof ahrs_cont1, got, 4) == (strict ? 1u : 2u));
+        CHECK(s.discarded == (strict ? sizeof data3c : 0u));
+        /* a data frame with reserved 0 and a command frame with reserved 3C pass strictly */
+        ilahrs_stream_init(&s);
+        s.strict = strict != 0;
+        CHECK(push_all(&s, data0, sizeof data0, got, 4) == 1 && push_all(&s, command3c, sizeof command3c, got, 4) == 1);
+        CHECK(s.discarded == 0);
+    }
+    {
+        ilahrs_stream_t zero = { 0 };
+        CHECK(!zero.strict);
+    }
 }
 
 /* ---- Device state machine --------------------------------------------------------------- */
@@ -1014,6 +1255,8 @@ int main(int argc, char **argv)
     test_date();
     test_pahr();
     test_stream();
+    test_idle();
+    test_strict();
     test_machine();
     printf("test_ilahrs: %lu checks, %lu failed\n", checks, failures);
     return failures == 0 ? 0 : 1;

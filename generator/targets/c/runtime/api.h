@@ -49,6 +49,16 @@ const char *ilahrs_error_kind_name(ilahrs_error_kind_t kind);
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err);
 
 /**
+ * ilahrs_frame_parse() with strict decoding (E42), one check after all of its others: a frame of
+ * message type ILAHRS_STRICT_MESSAGE_TYPE (data) whose reserved byte is not ILAHRS_STRICT_RESERVED
+ * (what the AHRS sends) is refused with `bad_reserved` at ILAHRS_FRAME_RESERVED_OFFSET (field
+ * "reserved"). The 16-bit sum misses two bytes changed by opposite amounts; when one of them is
+ * the reserved byte, this refuses the frame. Without a strict rule in the spec it is
+ * ilahrs_frame_parse().
+ */
+bool ilahrs_frame_parse_strict(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err);
+
+/**
  * Encode a frame into `out`, filling in the header, the message length and the checksum.
  *
  * Refuses a message type that is not in ilahrs_message_type_t (`bad_message_type`, field

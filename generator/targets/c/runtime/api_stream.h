@@ -34,15 +34,20 @@ typedef struct ilahrs_message {
  * corrupted frame never costs a following good message, whatever the chunk boundaries. Each
  * byte is examined a bounded number of times, however the input is cut (see "Build switches"
  * for a decoder without sentences).
+ *
+ * Strict decoding (E42): set `strict` (after ilahrs_stream_init(), before the first byte) and a
+ * frame that ilahrs_frame_parse_strict() refuses is no message (one byte discarded, as for any
+ * other invalid frame). `= {0}` is the lenient decoder.
  */
 typedef struct ilahrs_stream {
     uint64_t discarded;                    /**< Input bytes that belong to no accepted message. */
-    uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
+    bool strict;                           /**< Strict decoding (E42); false (zero) by default. */
     uint8_t start;                         /**< First held byte. */
     uint8_t count;                         /**< Number of held bytes. */
+    uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
 } ilahrs_stream_t;
 
-/** Empty the decoder (`discarded` back to 0). Same as zero-initialising it. */
+/** Empty the decoder (`discarded` back to 0, `strict` off). Same as zero-initialising it. */
 void ilahrs_stream_init(ilahrs_stream_t *stream);
 
 /**
@@ -94,3 +99,41 @@ bool ilahrs_stream_poll(ilahrs_stream_t *stream, ilahrs_message_t *msg);
  * false; the decoder is then empty (`discarded` keeps counting).
  */
 bool ilahrs_stream_finish(ilahrs_stream_t *stream, ilahrs_message_t *msg);
+
+#ifdef ILAHRS_IDLE_TIMEOUT_US
+/**
+ * The line has been quiet for `quiet_us` microseconds since the last byte. A message never spans
+ * an idle line (E41): from ILAHRS_IDLE_TIMEOUT_US (ILAHRS_IDLE_BYTE_TIMES byte times) on, the
+ * decoder decides on every byte it holds exactly as ilahrs_stream_finish() does (the start of a
+ * frame left by a sender cut off mid-write is discarded a byte at a time, any valid message behind
+ * it handed out), then goes on with the next byte as usual. Below that it changes nothing and
+ * returns false. Call it until it returns false. UINT32_MAX says "the line is idle" without a time.
+ *
+ * Call it from the code that feeds the decoder, never concurrently with it. A UART whose receive
+ * interrupt only queues bytes, drained by a periodic timer task:
+ * @code
+ *     void every_10_ms(void)
+ *     {
+ *         static uint32_t last_byte_us;
+ *         uint32_t now = micros();
+ *         uint8_t byte;
+ *         ilahrs_message_t msg;
+ *         while (rx_queue_get(&byte)) {
+ *             last_byte_us = now;
+ *             if (ilahrs_stream_push(&decoder, byte, &msg)) {
+ *                 do {
+ *                     handle(&msg);
+ *                 } while (ilahrs_stream_poll(&decoder, &msg));
+ *             }
+ *         }
+ *         while (ilahrs_stream_idle(&decoder, now - last_byte_us, &msg)) {
+ *             handle(&msg);
+ *         }
+ *     }
+ * @endcode
+ * (After 71 minutes without a byte `now - last_byte_us` wraps around, by then with nothing held.)
+ * An RTOS task that reads the UART with a timeout of ILAHRS_IDLE_TIMEOUT_US calls it with
+ * ILAHRS_IDLE_TIMEOUT_US whenever a read returns nothing.
+ */
+bool ilahrs_stream_idle(ilahrs_stream_t *stream, uint32_t quiet_us, ilahrs_message_t *msg);
+#endif

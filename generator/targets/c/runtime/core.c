@@ -309,6 +309,29 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
     return len == (size_t)size || fail(err, ILAHRS_ERR_TRAILING_DATA, (size_t)size, NULL);
 }
 
+/* Strict decoding (E42): the valid frame at p is one the AHRS cannot have sent, its reserved byte
+ * changed. */
+#ifdef ILAHRS_STRICT_RESERVED
+#define STRICT_REFUSES(p)                                                                                     \
+    (LE((p) + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE) == ILAHRS_STRICT_MESSAGE_TYPE \
+     && LE((p) + ILAHRS_FRAME_RESERVED_OFFSET, ILAHRS_FRAME_RESERVED_SIZE) != ILAHRS_STRICT_RESERVED)
+#else
+#define STRICT_REFUSES(p) false
+#endif
+
+bool ilahrs_frame_parse_strict(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
+{
+    if (!ilahrs_frame_parse(data, len, frame, err)) {
+        return false;
+    }
+#ifdef ILAHRS_STRICT_RESERVED
+    if (STRICT_REFUSES(data)) {
+        return fail(err, ILAHRS_ERR_BAD_RESERVED, ILAHRS_FRAME_RESERVED_OFFSET, NAME_FRAME_RESERVED);
+    }
+#endif
+    return true;
+}
+
 /* Write header, fields, length and checksum around a payload already at out + PAYLOAD_OFFSET. */
 static size_t frame_finish(uint8_t *out, const ilahrs_frame_t *frame, size_t payload_size)
 {

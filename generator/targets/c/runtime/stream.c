@@ -45,11 +45,12 @@ static bool may_start(uint8_t byte)
     return byte == ILAHRS_FRAME_HEADER_0;
 }
 
-/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE. */
-static int frame_candidate(const uint8_t *p, size_t n, ilahrs_message_t *msg)
+/* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE.
+ * Strict, a whole frame STRICT_REFUSES is invalid. */
+static int frame_candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
     int size = frame_check(p, n, &msg->frame);
-    if (size < 0) {
+    if (size < 0 || (s->strict && STRICT_REFUSES(p))) {
         return size == -ILAHRS_ERR_TRUNCATED ? NEED_MORE : INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_FRAME;
@@ -115,10 +116,10 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 #endif
 
 /* The message at p[0..n), of which p[0..seen) were examined before: as frame_candidate(). */
-static int candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
+static int candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, size_t seen, ilahrs_message_t *msg)
 {
     if (p[0] == ILAHRS_FRAME_HEADER_0) {
-        return frame_candidate(p, n, msg);
+        return frame_candidate(s, p, n, msg);
     }
 #if ILAHRS_STREAM_SENTENCES
     if (p[0] == PAHR_START) {
@@ -142,7 +143,7 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
     const uint8_t *p = *data;
     size_t n = *len;
     for (; n != 0; p++, n--, seen = 0) {
-        int r = may_start(*p) ? candidate(p, n, seen, msg) : INVALID;
+        int r = may_start(*p) ? candidate(s, p, n, seen, msg) : INVALID;
         if (r > 0) {
             *data = p + r;
             *len = n - (size_t)r;
@@ -183,6 +184,7 @@ void ilahrs_stream_init(ilahrs_stream_t *stream)
     stream->discarded = 0;
     stream->start = 0;
     stream->count = 0;
+    stream->strict = false;
 }
 
 /* A byte that may decide something: appended to the held bytes (the message handed out last
@@ -271,3 +273,14 @@ bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
     return scan_held(s, 0, true, msg);
 }
+
+#ifdef ILAHRS_IDLE_TIMEOUT_US
+/* An idle line ends the input as far as the held bytes go (finish()); the next byte starts afresh. */
+bool ilahrs_stream_idle(ilahrs_stream_t *s, uint32_t quiet_us, ilahrs_message_t *msg)
+{
+    if (quiet_us < ILAHRS_IDLE_TIMEOUT_US) {
+        return false;
+    }
+    return ilahrs_stream_finish(s, msg);
+}
+#endif
