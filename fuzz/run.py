@@ -1,21 +1,23 @@
 """Run the fuzz targets: the short coverage check of `make test`, and `make fuzz` to a plateau.
 
     python fuzz/run.py check TARGET... [--runs N] [--corpus DIR]
-    python fuzz/run.py fuzz TARGET... [--plateau N] [--plateau-python N] [--cap S]
+    python fuzz/run.py fuzz TARGET... [--plateau N] [--plateau-python N] [--cap S] [--jobs J]
 
 `check` runs each C fuzzer for N runs (seed 1) from its seeds (fuzz/seeds.py, under build/fuzz/seeds/)
 and any --corpus directories, with libFuzzer's -print_coverage=1, and fails naming every function its
 source lists on a `fuzz-must-reach:` line that the run did not reach (the build and round-trip
 functions); a crash fails too.
 
-`fuzz` runs each target in rounds of N executions, starting from its committed corpus
-(fuzz/corpus/TARGET/), its seeds and what earlier rounds found (build/fuzz/TARGET/corpus/), until a
-whole round adds nothing to the corpus: N executions in a row without new coverage (no new edge and
-no new feature). That is the plateau. A target that has not reached it after --cap seconds is
-stopped and reported as capped. Then the corpus is minimised (libFuzzer -merge=1) back into
-fuzz/corpus/TARGET/, and one line per target is printed: executions, edges and features covered,
-corpus size, crashes, how the run ended. A crash stops that target (its input is kept under
-build/fuzz/TARGET/crashes/) and the exit status is 1.
+`fuzz` runs each target in rounds of N/4 executions, each starting from its committed corpus
+(fuzz/corpus/TARGET/), its seeds and what earlier rounds found (build/fuzz/TARGET/corpus/), until
+the rounds since the last one that covered a new edge add up to N executions: N executions in a row
+without new coverage. That is the plateau (libFuzzer's `cov`, the edges of the code reached; its `ft`,
+features, also counts how often each edge ran and keeps creeping up long after, so it is reported,
+not waited for). A target that has not reached the plateau after --cap seconds is stopped and
+reported as CAPPED. Then the corpus is minimised (libFuzzer -merge=1) back into fuzz/corpus/TARGET/,
+and one line per target is printed: executions, edges and features covered, corpus size, crashes,
+how the run ended. A crash stops that target (its input is kept under build/fuzz/TARGET/crashes/)
+and the exit status is 1. J targets (default 2) are fuzzed at once, each in one process.
 """
 
 from __future__ import annotations
@@ -27,12 +29,14 @@ import shutil
 import subprocess
 import sys
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 BUILD = ROOT / "build" / "fuzz"
 PYTHON = ROOT / ".venv" / "bin" / "python"
+ROUNDS = 4  # a plateau is checked in rounds of a quarter of it
 RUST_BIN = ROOT / "build" / "rust" / "target" / "fuzz" / "x86_64-unknown-linux-gnu" / "release"
 
 
@@ -59,10 +63,10 @@ class Target:
 
 TARGETS = {
     "c-fuzz_parsers": Target("c", "selector", "fuzz_parsers", 256),
-    "c-fuzz_stream": Target("c", "stream", "fuzz_stream", 1024),
+    "c-fuzz_stream": Target("c", "stream", "fuzz_stream", 512),
     "rust-payloads": Target("rust", "selector", "payloads", 256),
-    "rust-stream": Target("rust", "cut-stream", "stream", 1024),
-    "python-stream": Target("python", "cut-stream", "stream", 1024),
+    "rust-stream": Target("rust", "cut-stream", "stream", 512),
+    "python-stream": Target("python", "cut-stream", "stream", 512),
     "python-payloads": Target("python", "selector", "payloads", 256),
     "python-sentences": Target("python", "sentence", "sentences", 256),
     "python-device": Target("python", "device", "device", 512),
@@ -148,7 +152,6 @@ def check(names: list[str], runs: int, corpora: list[str]) -> int:
 @dataclass
 class Round:
     executions: int
-    added: int
     edges: int
     features: int
     corpus: int
@@ -178,14 +181,8 @@ def one_round(name: str, target: Target, number: int, runs: int, seconds: int) -
     stats = dict(re.findall(r"^stat::(\w+): +(\d+)$", text, re.MULTILINE))
     last = re.findall(r"cov: (\d+) ft: (\d+) corp: (\d+)/", text)
     edges, features, corpus = map(int, last[-1]) if last else (0, 0, 0)
-    return Round(
-        int(stats.get("number_of_executed_units", 0)),
-        int(stats.get("new_units_added", 0)),
-        edges,
-        features,
-        corpus,
-        result.returncode != 0,
-    )
+    executions = int(stats.get("number_of_executed_units", 0))
+    return Round(executions, edges, features, corpus, result.returncode != 0)
 
 
 def minimise(name: str, target: Target) -> int:
@@ -212,37 +209,37 @@ def minimise(name: str, target: Target) -> int:
     return len(list(committed.iterdir()))
 
 
-def fuzz(name: str, plateau: int, cap: int) -> bool:
-    """Fuzz one target to its plateau; print its line. False after a crash."""
+def fuzz(name: str, plateau: int, cap: int) -> list[str]:
+    """Fuzz one target to its plateau: its closing lines (the first is the summary)."""
     target = TARGETS[name]
-    shutil.rmtree(BUILD / name / "corpus", ignore_errors=True)
+    shutil.rmtree(BUILD / name, ignore_errors=True)
     (BUILD / name / "corpus").mkdir(parents=True)
-    start, executions, number, ending = time.monotonic(), 0, 0, "plateau"
-    while True:
-        left = cap - int(time.monotonic() - start)
-        if left <= 0:
-            ending = "CAPPED"
-            break
+    start, executions, number, ending = time.monotonic(), 0, 0, "CAPPED"
+    result, best, quiet = Round(0, 0, 0, 0, crashed=False), 0, 0
+    while (left := cap - int(time.monotonic() - start)) > 0:
         number += 1
-        result = one_round(name, target, number, plateau, left)
+        result = one_round(name, target, number, -(-plateau // ROUNDS), left)
         executions += result.executions
         if result.crashed:
             ending = "CRASH"
             break
-        if result.added == 0 and result.executions >= plateau:
+        # executions since the round that last covered a new edge (at most a round's worth more)
+        quiet = 0 if result.edges > best else quiet + result.executions
+        best = max(best, result.edges)
+        if quiet >= plateau:
+            ending = "plateau"
             break
     crashes = sorted(str(p.relative_to(ROOT)) for p in (BUILD / name / "crashes").iterdir())
     size = minimise(name, target) if not crashes else len(list((ROOT / "fuzz" / "corpus" / name).iterdir()))
     elapsed = time.monotonic() - start
-    print(
-        f"{name}: {executions} executions, cov {result.edges} edges, ft {result.features} features, "
-        f"corpus {size} inputs, {len(crashes)} crashes; {ending} "
-        f"({plateau} executions without new coverage wanted; {number} rounds, {elapsed:.0f} s)",
-        flush=True,
-    )
-    for crash in crashes:
-        print(f"  crash input kept: {crash} (log {BUILD.relative_to(ROOT)}/{name}/round-{number}.log)")
-    return not crashes
+    lines = [
+        f"{name}: {executions} executions, cov {best} edges, ft {result.features} features, "
+        f"corpus {size} inputs, {len(crashes)} crashes; {ending} ({quiet} executions without a new edge) "
+        f"after {elapsed:.0f} s"
+    ]
+    lines += [f"  crash input kept: {c} (log build/fuzz/{name}/round-{number}.log)" for c in crashes]
+    print("\n".join(lines), flush=True)
+    return lines
 
 
 def main() -> int:
@@ -251,20 +248,31 @@ def main() -> int:
     parser.add_argument("targets", nargs="*", default=list(TARGETS))
     parser.add_argument("--runs", type=int, default=150000)
     parser.add_argument("--corpus", action="append", default=[])
-    parser.add_argument("--plateau", type=int, default=2_000_000)
+    parser.add_argument("--plateau", type=int, default=1_000_000)
     parser.add_argument("--plateau-python", type=int, default=50_000)
     parser.add_argument("--cap", type=int, default=300)
+    parser.add_argument("--jobs", type=int, default=2, help="targets fuzzed at once")
     args = parser.parse_args()
     unknown = [t for t in args.targets if t not in TARGETS]
     if unknown:
         parser.error(f"unknown targets {unknown}; known: {', '.join(TARGETS)}")
     if args.mode == "check":
         return check(args.targets, args.runs, args.corpus)
-    ok = True
-    for name in args.targets:
-        plateau = args.plateau_python if TARGETS[name].language == "python" else args.plateau
-        ok = fuzz(name, plateau, args.cap) and ok
-    return 0 if ok else 1
+    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        runs = [
+            pool.submit(
+                fuzz, name, args.plateau_python if TARGETS[name].language == "python" else args.plateau, args.cap
+            )
+            for name in args.targets
+        ]
+        lines = [line for run in runs for line in run.result()]
+    crashed = sum(1 for line in lines if line.startswith("  crash"))
+    print(
+        f"\nfuzz: {len(args.targets)} targets, {crashed} crashes; a plateau is {args.plateau} executions "
+        f"({args.plateau_python} for Python) without a new edge, at most {args.cap} s a target:"
+    )
+    print("\n".join(lines))
+    return 1 if crashed else 0
 
 
 if __name__ == "__main__":

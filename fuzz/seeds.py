@@ -43,7 +43,7 @@ import records
 SHAPES = ("selector", "stream", "cut-stream", "sentence", "device", "host")
 WALKS = 400
 STEPS = 8
-MAX_STREAM = 1536
+MAX_STREAM = 512  # the fuzzers take at most 512 bytes of a stream or a session (fuzz/run.py)
 PER_KIND = 3
 NAMES = tuple(ilahrs.COMMANDS)
 
@@ -159,12 +159,12 @@ def shape_seeds(shape: str, kept: list[Session]) -> set[bytes]:
     if shape == "stream":
         return stream_seeds(kept)
     if shape == "cut-stream":
-        return {bytes([1 + i * 13 % 97]) + s for i, s in enumerate(sorted(stream_seeds(kept)))}
+        return {bytes([1 + i * 13 % 97]) + s[: MAX_STREAM - 1] for i, s in enumerate(sorted(stream_seeds(kept)))}
     if shape == "sentence":
         return sentence_seeds(kept)
     if shape == "device":
-        return {bytes(s.device_records) for s in kept}
-    return {bytes(s.host_records) for s in kept}
+        return {bytes(s.device_records)[:MAX_STREAM] for s in kept}
+    return {bytes(s.host_records)[:MAX_STREAM] for s in kept}
 
 
 def words() -> dict[str, bytes]:

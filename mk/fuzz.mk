@@ -2,9 +2,10 @@
 # Python package, all from seeds and dictionaries made from the spec, and a three-way differential.
 #
 #   make fuzz           every target until its coverage stops growing (FUZZ_PLATEAU executions
-#                       without new coverage; FUZZ_PLATEAU_PYTHON for the Python targets), FUZZ_CAP
-#                       seconds at most each; corpora in fuzz/corpus/TARGET/ (minimised, committed);
-#                       one line per target; exit 1 on a crash (input kept in build/fuzz/TARGET/crashes/)
+#                       without a new edge; FUZZ_PLATEAU_PYTHON for the Python targets), FUZZ_CAP
+#                       seconds at most each, FUZZ_JOBS targets at once; corpora in fuzz/corpus/TARGET/
+#                       (minimised, committed); one line per target; exit 1 on a crash (its input kept
+#                       in build/fuzz/TARGET/crashes/)
 #   make fuzz-c / fuzz-rust / fuzz-python   the same for one language
 #   make fuzz-seeds     build/fuzz/seeds/SHAPE/ and build/fuzz/dict/SHAPE.dict (fuzz/seeds.py)
 #   make test-fuzz      (in make test) C, Rust and Python on the same seeded inputs, compared three
@@ -20,16 +21,18 @@
 
 FUZZ_OUT := $(BUILD)/fuzz
 FUZZ_SEEDS := $(FUZZ_OUT)/seeds/.stamp
-FUZZ_PLATEAU ?= 2000000
+FUZZ_PLATEAU ?= 1000000
 FUZZ_PLATEAU_PYTHON ?= 50000
 FUZZ_CAP ?= 300
+FUZZ_JOBS ?= 2
 CARGO_FUZZ_VERSION := 0.13.1
 CARGO_FUZZ := $(FUZZ_OUT)/cargo-fuzz/bin/cargo-fuzz
 ATHERIS := $(FUZZ_OUT)/python/.stamp
 FUZZ_C := c-fuzz_parsers c-fuzz_stream
 FUZZ_RUST := rust-payloads rust-stream
 FUZZ_PYTHON := python-stream python-payloads python-sentences python-device python-host
-FUZZ_RUN = $(PY) fuzz/run.py fuzz --plateau $(FUZZ_PLATEAU) --plateau-python $(FUZZ_PLATEAU_PYTHON) --cap $(FUZZ_CAP)
+FUZZ_RUN = $(PY) fuzz/run.py fuzz --plateau $(FUZZ_PLATEAU) --plateau-python $(FUZZ_PLATEAU_PYTHON) --cap $(FUZZ_CAP) \
+           --jobs $(FUZZ_JOBS)
 FUZZ_PY_FILES := fuzz/seeds.py fuzz/run.py fuzz/differential.py fuzz/python/records.py fuzz/python/targets.py
 
 .PHONY: fuzz-seeds fuzz-all fuzz-c fuzz-rust fuzz-python fuzz-rust-build test-fuzz lint-fuzz

@@ -96,7 +96,7 @@ def payloads(data: bytes) -> None:
         code, names = ilahrs.decode_command(rest)
     except IlahrsError:
         return
-    assert frame is not None and all(ilahrs.build_command(name) == rest for name in names), names
+    assert frame is not None and all(ilahrs.build_command(name, frame.reserved) == rest for name in names), names
     assert all(ilahrs.COMMANDS[name].code == code for name in names)
 
 
