@@ -69,7 +69,7 @@ TARGETS = {
     "python-stream": Target("python", "cut-stream", "stream", 512),
     "python-payloads": Target("python", "selector", "payloads", 256),
     "python-sentences": Target("python", "sentence", "sentences", 256),
-    "python-device": Target("python", "device", "device", 512),
+    "python-device": Target("python", "device", "device", 256),
     "python-host": Target("python", "host", "host", 512),
 }
 
@@ -250,9 +250,9 @@ def main() -> int:
     parser.add_argument("--corpus", action="append", default=[])
     parser.add_argument("--plateau", type=int, default=1_000_000)
     parser.add_argument("--plateau-python", type=int, default=50_000)
-    parser.add_argument("--cap", type=int, default=300)
+    parser.add_argument("--cap", type=int, default=480)
     parser.add_argument("--jobs", type=int, default=2, help="targets fuzzed at once")
-    args = parser.parse_args()
+    args = parser.parse_intermixed_args()
     unknown = [t for t in args.targets if t not in TARGETS]
     if unknown:
         parser.error(f"unknown targets {unknown}; known: {', '.join(TARGETS)}")
