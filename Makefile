@@ -9,7 +9,7 @@
 #   make conformance  run every binding against conformance/vectors (VECTORS=dir BINDINGS=a,b)
 #   make bench        benchmarks (timings live here, never in tests)
 #   make footprint    code and RAM size on a Cortex-M4
-#   make fuzz         longer fuzzing runs
+#   make fuzz         every fuzz target until its coverage stops growing (fuzz/README.md)
 #
 # Each binding adds its own rules in mk/<name>.mk and appends to the lists below.
 

@@ -6,13 +6,14 @@
 #   make test-c        unit tests under ASan+UBSan (gcc and clang, -O1 and -Os), the date codec against
 #                      its old algorithm, the sanitized conformance runner
 #                      (chunked and byte at a time, and the frames-only decoder against the full one),
-#                      brief libFuzzer runs, CMake build, the example
+#                      brief libFuzzer runs that must reach the build and round-trip functions
+#                      (mk/fuzz.mk), CMake build, the example
 #   make test-c-be     the same tests on a big-endian host (s390x under qemu-user)
 #   make test-c-m4     the Cortex-M build's tests on an emulated Cortex-M4 (qemu-system-arm, MPS2 AN386)
 #   make bench-c       stream decoder throughput next to a byte-summing loop, and its instructions per
 #                      byte (valgrind's callgrind, -Os); writes build/bench/capture.bin
 #   make footprint-c   Cortex-M4 code and RAM sizes (arm-none-eabi-gcc)
-#   make fuzz-c        longer libFuzzer runs (FUZZ_SECONDS per target, default 60)
+#   make fuzz-c        libFuzzer runs to a coverage plateau (mk/fuzz.mk)
 #
 # ilahrs.c is one code path: size or speed comes from the compiler's flags. The tests build it at -O1
 # (sanitizers) and -Os (C_SIZE, as a Cortex-M firmware does), the benchmark at -O2.
@@ -33,7 +34,6 @@ C_RUNTIME := generator/targets/c/runtime
 CLANG_FORMAT := $(VENV)/bin/clang-format --style=file:generator/targets/c/.clang-format
 CLANG ?= clang
 FUZZ_RUNS ?= 150000
-FUZZ_SECONDS ?= 60
 ARM_CC ?= arm-none-eabi-gcc
 ARM_FLAGS := -std=c99 -mcpu=cortex-m4 -mthumb -Os -ffunction-sections -fdata-sections
 
@@ -43,9 +43,8 @@ LINT_TARGETS += lint-c
 TEST_TARGETS += test-c test-c-be test-c-m4
 BENCH_TARGETS += bench-c
 FOOTPRINT_TARGETS += footprint-c
-FUZZ_TARGETS += fuzz-c
 
-.PHONY: setup-c build-c lint-c test-c test-c-be test-c-m4 bench-c footprint-c fuzz-c setup-c-arm setup-c-be setup-c-m4 \
+.PHONY: setup-c build-c lint-c test-c test-c-be test-c-m4 bench-c footprint-c setup-c-arm setup-c-be setup-c-m4 \
         setup-c-valgrind
 
 APT_INSTALL = tools/need $(1)
@@ -219,12 +218,7 @@ test-c: setup-c $(C_OUT)/san/test_ilahrs_gcc $(C_OUT)/san/test_ilahrs_clang $(C_
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture $(C_OUT)/san/ilahrs_conformance_frames
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(C_OUT)/san/ilahrs_conformance_frames_small --bytewise"
 	C_STD="$(C_STD)" $(PY) tests/c/names_off.py $(C_OUT)/capture $(C_NAMES_OFF)
-	@for f in $(C_FUZZERS); do \
-		rm -rf $(C_OUT)/fuzz/work && mkdir -p $(C_OUT)/fuzz/work && \
-		echo "$$f: $(FUZZ_RUNS) runs, seed 1" && \
-		$$f -seed=1 -runs=$(FUZZ_RUNS) -max_len=1024 -print_final_stats=0 $(C_OUT)/fuzz/work $(C_OUT)/corpus \
-			>$(C_OUT)/fuzz/log.txt 2>&1 || { tail -40 $(C_OUT)/fuzz/log.txt; exit 1; }; \
-	done
+	$(PY) fuzz/run.py check c-fuzz_parsers c-fuzz_stream --runs $(FUZZ_RUNS) --corpus $(C_OUT)/corpus
 	rm -rf $(C_OUT)/cmake && cmake -S $(C_DIR) -B $(C_OUT)/cmake -DILAHRS_BUILD_EXAMPLES=ON \
 		-DCMAKE_C_FLAGS="$(C_STD)" -DCMAKE_INSTALL_PREFIX=$(ROOT)/$(C_OUT)/cmake/install >/dev/null
 	cmake --build $(C_OUT)/cmake >/dev/null && cmake --install $(C_OUT)/cmake >/dev/null
@@ -323,7 +317,7 @@ test-c-m4: setup-c-m4 $(C_M4)/test_ilahrs.elf $(C_M4)/test_values.elf $(C_M4)/te
 	$(PY) tests/c/differential.py $(C_OUT)/capture "$(M4_RUN) -kernel $(C_M4)/ilahrs_conformance.elf" 4
 	$(PY) tests/c/frames_only.py $(C_OUT)/capture "$(M4_RUN),arg=runner,arg=--bytewise -kernel $(C_M4)/ilahrs_conformance_frames.elf" 2
 
-# --- bench, footprint, fuzz ----------------------------------------------------------------
+# --- bench, footprint ----------------------------------------------------------------
 
 C_BENCH_OPT ?= -O2
 
@@ -350,10 +344,3 @@ footprint-c: setup-c-arm
 	@mkdir -p $(C_OUT)/footprint
 	$(PY) bench/c/footprint.py --cc $(ARM_CC) --flags "$(ARM_FLAGS)" --source $(C_DIR)/ilahrs.c \
 		--include $(C_DIR) --out $(C_OUT)/footprint
-
-fuzz-c: setup-c $(C_FUZZERS) $(C_OUT)/corpus/.stamp
-	@mkdir -p $(C_OUT)/fuzz/long
-	@for f in $(C_FUZZERS); do \
-		echo "$$f: $(FUZZ_SECONDS) s"; \
-		$$f -max_total_time=$(FUZZ_SECONDS) -max_len=4096 -print_final_stats=1 $(C_OUT)/fuzz/long $(C_OUT)/corpus || exit 1; \
-	done

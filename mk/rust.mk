@@ -1,6 +1,6 @@
 # Rust: the ilahrs crate (generated/rust, no_std) and its conformance runner (generated/rust-conformance),
 # the seeded property and differential tests (tests/rust), the benchmark (bench/rust), the Cortex-M4
-# footprint and the fuzz targets (fuzz/rust).
+# footprint; the fuzz targets (fuzz/rust) are run by mk/fuzz.mk.
 #
 # The crates are hand-written runtime modules (generator/targets/rust/runtime/, copied) next to
 # modules generated from the spec (generator/targets/rust/templates/); rustfmt lays both out, so
@@ -17,7 +17,7 @@ RUST_RUNNER_CRATE := generated/rust-conformance/Cargo.toml
 RUST_RUNNER := $(RUST_BUILD)/target/release/ilahrs-conformance
 RUST_FOOTPRINT_TARGET := thumbv7em-none-eabihf
 
-.PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust fuzz-rust format-rust-runtime
+.PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust format-rust-runtime
 
 setup-rust:
 	@command -v cargo >/dev/null || { echo "setup-rust: cargo not found (install Rust stable)" >&2; exit 1; }
@@ -98,17 +98,5 @@ footprint-rust: setup-rust
 	@$(CARGO) build --quiet --release --manifest-path bench/rust/Cargo.toml
 	@$(RUST_BUILD)/target/release/ilahrs-bench --sizes
 
-# --- fuzz: cargo-fuzz on nightly, FUZZ_SECONDS per target ---------------------------------------
-FUZZ_SECONDS ?= 60
-
-fuzz-rust: setup-rust
-	@command -v cargo-fuzz >/dev/null || cargo install --quiet --locked cargo-fuzz
-	@rustup toolchain list | grep -q '^nightly' || rustup toolchain install --profile minimal nightly
-	for target in stream payloads; do \
-	  cargo +nightly fuzz run --fuzz-dir fuzz/rust --target-dir $(RUST_TARGET)/fuzz $$target -- \
-	    -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 || exit 1; \
-	done
-
 BENCH_TARGETS += bench-rust
 FOOTPRINT_TARGETS += footprint-rust
-FUZZ_TARGETS += fuzz-rust
