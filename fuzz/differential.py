@@ -7,8 +7,9 @@ as the harness compares them). The requests are:
 
 - `stream`: captures written by the C library (bench/c/capture.c), damaged by random byte changes
   and cut into random chunks (tests/c/differential.py), and streams of random messages, most of them
-  mutated (tests/rust/differential.py);
-- `frame_decode`, `command_decode`, `ack`: mutated frames and command frames;
+  mutated (tests/rust/differential.py), the latter with idle gaps around the idle timeout (E41)
+  and the strict option (E42) on about half of them;
+- `frame_decode` (strict on about half), `command_decode`, `ack`: mutated frames and command frames;
 - `payload_decode` of every payload table (with and without a device variant): payloads of the
   table's size made of random bytes, of bytes of a random valid message, and a byte too many or too
   few; then `payload_encode` of the raw values the Python runner decoded, changed at random;
@@ -36,6 +37,7 @@ from pathlib import Path
 from types import ModuleType
 
 import ilahrs
+from ilahrs.spec import IDLE_TIMEOUT
 
 ROOT = Path(__file__).resolve().parents[1]
 BINDINGS = ("c", "rust", "python")
@@ -166,6 +168,18 @@ def frame_encode(rng: random.Random) -> str:
     )
 
 
+def stream_options(rng: random.Random, chunks: int) -> str:
+    """Idle gaps after random chunks, around the idle timeout (E41), and the strict option (E42),
+    each on about half the requests."""
+    text = ""
+    if chunks and rng.random() < 0.5:
+        timeout = round(IDLE_TIMEOUT * 1_000_000)
+        quiet = (0, timeout - 1, timeout, timeout + 1, 0xFFFFFFFF)
+        gaps = sorted(rng.sample(range(chunks), rng.randint(1, min(chunks, 4))))
+        text += " idle=" + ",".join(f"{after}:{rng.choice(quiet)}" for after in gaps)
+    return text + (" strict" if rng.random() < 0.5 else "")
+
+
 def requests(rng: random.Random, cases: int, capture: str, tmp: Path) -> list[str]:
     lines = []
     for seed in range(1, CAPTURES + 1):
@@ -175,8 +189,10 @@ def requests(rng: random.Random, cases: int, capture: str, tmp: Path) -> list[st
     names = list(ilahrs.COMMANDS)
     for i in range(cases):
         data = b"".join(RUST_DIFF.message(SPEC, rng) for _ in range(rng.randint(1, 12)))
-        lines.append("stream " + ",".join(hex_token(c) for c in RUST_DIFF.chunks(data, rng)))
-        lines.append("frame_decode " + hex_token(mutate(frames[i], rng, SPEC.frame.header)))
+        chunks = RUST_DIFF.chunks(data, rng)
+        lines.append("stream " + ",".join(hex_token(c) for c in chunks) + stream_options(rng, len(chunks)))
+        strict = " strict" if rng.random() < 0.5 else ""
+        lines.append("frame_decode " + hex_token(mutate(frames[i], rng, SPEC.frame.header)) + strict)
         command = ilahrs.build_command(rng.choice(names))
         lines.append("command_decode " + hex_token(mutate(command, rng, bytes(range(256)))))
         lines.append("ack " + hex_token(mutate(rng.choice((command, frames[i])), rng, SPEC.frame.header)))
