@@ -46,11 +46,12 @@ static bool may_start(uint8_t byte)
 }
 
 /* The frame at p[0..n) (p[0] is the first header byte): its size if valid, INVALID, or NEED_MORE.
- * Strict, a whole frame STRICT_REFUSES is invalid. */
+ * Strict, a whole frame STRICT_REFUSES is invalid. (frame_check() never answers 0: `size <= 0`
+ * tells the compiler that a valid frame's size is positive, and scan() needs no test of its own.) */
 static int frame_candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, ilahrs_message_t *msg)
 {
     int size = frame_check(p, n, &msg->frame);
-    if (size < 0 || (s->strict && STRICT_REFUSES(p))) {
+    if (size <= 0 || (s->strict && STRICT_REFUSES(p))) {
         return size == -ILAHRS_ERR_TRUNCATED ? NEED_MORE : INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_FRAME;
@@ -135,10 +136,10 @@ static int candidate(const ilahrs_stream_t *s, const uint8_t *p, size_t n, size_
  * Decide on *data / *len in place (the caller's input, or the held bytes, held[start..start +
  * count)); the first candidate's first `seen` bytes were examined before. True with a message,
  * *data / *len then past it (for held bytes: start and count). False when every byte is decided, or
- * an undecided candidate waits at the front of `held` (held[0..count), shorter than the buffer);
- * unless `final`: the input has ended, so an undecided candidate is invalid.
+ * an undecided candidate waits at the front of `held` (held[0..count), shorter than the buffer;
+ * ilahrs_stream_finish() decides on it).
  */
-static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t seen, bool final, ilahrs_message_t *msg)
+static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t seen, ilahrs_message_t *msg)
 {
     const uint8_t *p = *data;
     size_t n = *len;
@@ -149,7 +150,7 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
             *len = n - (size_t)r;
             return true;
         }
-        if (r == NEED_MORE && !final) {
+        if (r == NEED_MORE) {
             break;
         }
         s->discarded++;
@@ -166,12 +167,12 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
 /* scan() on the held bytes: a message is handed out from there (the bytes after it wait in
  * held[start..start + count) for the next call), else the held bytes are all decided or wait at the
  * front. */
-static bool scan_held(ilahrs_stream_t *s, size_t seen, bool final, ilahrs_message_t *msg)
+static bool scan_held(ilahrs_stream_t *s, ilahrs_message_t *msg, size_t seen)
 {
     const uint8_t *p = s->held + s->start;
     size_t n = s->count;
     s->start = 0;
-    if (!scan(s, &p, &n, seen, final, msg)) {
+    if (!scan(s, &p, &n, seen, msg)) {
         return false;
     }
     s->start = (uint8_t)(p - s->held); /* after the message: not 0 */
@@ -202,7 +203,7 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
         seen = 0;
     }
     s->held[s->count++] = byte; /* room: the held bytes wait for a longer message, or followed one */
-    return scan_held(s, seen, false, msg);
+    return scan_held(s, msg, seen);
 }
 
 #if ILAHRS_STREAM_SENTENCES
@@ -235,43 +236,40 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
 
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg)
 {
-    for (;;) {
-        /* Held bytes after a message handed out; after them no message is handed out (start is 0).
-         * Frames only, in less code: any held bytes (a candidate waiting there waits again). */
-        if (!ILAHRS_STREAM_SENTENCES || s->start != 0) {
-            if (scan_held(s, 0, false, msg)) {
-                return true;
-            }
-            if (ILAHRS_STREAM_SENTENCES) {
-                continue;
-            }
-        }
-        if (*len == 0) {
-            return false;
-        }
-        if (s->count != 0) {
-            /* A candidate waits in `held`: the input reaches it a byte at a time. */
-            (*len)--;
-            if (ilahrs_stream_push(s, *(*data)++, msg)) {
-                return true;
-            }
-        } else {
+    /* Held bytes after a message handed out go first. Then, and after every byte pushed without a
+     * message, the held bytes are a candidate waiting for input (start is 0). */
+    bool found = (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
+    while (!found && *len != 0) {
+        if (s->count == 0) {
             /* In place in the input; a candidate that waits at its end moves to `held`. */
-            return scan(s, data, len, 0, false, msg);
+            return scan(s, data, len, 0, msg);
         }
+        /* A candidate waits in `held`: the input reaches it a byte at a time. */
+        (*len)--;
+        found = ilahrs_stream_push(s, *(*data)++, msg);
     }
+    return found;
 }
 
 bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
     /* Without a message handed out, the held bytes are a candidate waiting for input (frames only,
      * in less code: scanned again, it waits again). */
-    return (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, 0, false, msg);
+    return (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
 }
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
-    return scan_held(s, 0, true, msg);
+    while (!scan_held(s, msg, 0)) {
+        if (s->count == 0) {
+            return false;
+        }
+        /* The candidate waiting at the front is undecided, and no byte follows: invalid. In place of
+         * its first byte, one that starts no message (neither the header's first byte nor "$"), which
+         * scan() discards before it decides on the bytes that follow. */
+        s->held[0] = ILAHRS_FRAME_HEADER_0 == 0u ? 1u : 0u;
+    }
+    return true;
 }
 
 #ifdef ILAHRS_IDLE_TIMEOUT_US
