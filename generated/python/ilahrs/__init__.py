@@ -69,12 +69,14 @@ from .payloads import (
 )
 from .spec import SPEC_SHA256, SPEC_VERSION
 from .status import UnitStatusWord, UswFlag, UswMode
-from .stream import MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
+from .stream import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
 
 __all__ = [
     "CODES",
     "COMMANDS",
     "DECLINATION_COMPUTE",
+    "IDLE_BYTE_TIMES",
+    "IDLE_TIMEOUT",
     "MAX_FRAME_SIZE",
     "MAX_MESSAGE_SIZE",
     "PAYLOADS",
