@@ -7,11 +7,11 @@ lenient (the default, E6) and one strict. A frame a decoder delivers that is not
 device sent, at that place in the stream, is damage delivered as valid: the 16-bit sum cannot see
 two bytes moved by opposite amounts.
 
-    .venv/bin/python tools/checksum_escapes.py                      # 1,000,000 frames, ~2 minutes
+    .venv/bin/python tools/checksum_escapes.py                      # 5,000,000 frames, ~2 minutes
     .venv/bin/python tools/checksum_escapes.py --frames 50000 --json
 
-The device model makes about 3,500 frames a second, so it makes `--distinct` frames (20,000 by
-default: 200 s of motion at 100 Hz) and the line sends them over and over; each sending is damaged
+The device model makes about 3,500 frames a second, so it makes `--distinct` frames (50,000 by
+default: 500 s of motion at 100 Hz) and the line sends them over and over; each sending is damaged
 afresh. Seeded: the same arguments give the same counts. `make checksum-escapes` runs the default.
 """
 
@@ -103,7 +103,7 @@ class _Reader:
 
 
 def measure(
-    frames: int, *, corrupt_rate: float = 0.01, seed: int = 1, command: str = "AHRScont3", distinct: int = 20000
+    frames: int, *, corrupt_rate: float = 0.01, seed: int = 1, command: str = "AHRScont3", distinct: int = 50_000
 ) -> Result:
     """Send `frames` output frames of `command` through the simulator's faults; count what each
     decoder delivers."""
@@ -167,11 +167,11 @@ def report(result: Result) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--frames", type=int, default=1_000_000, help="frames sent (default 1,000,000)")
+    parser.add_argument("--frames", type=int, default=5_000_000, help="frames sent (default 5,000,000)")
     parser.add_argument("--corrupt-rate", type=float, default=0.01, help="probability of corrupting a byte (0.01)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the motion and of the faults (1)")
     parser.add_argument("--output-format", default="AHRScont3", help="the start command (AHRScont3)")
-    parser.add_argument("--distinct", type=int, default=20000, help="frames the device model makes (20,000)")
+    parser.add_argument("--distinct", type=int, default=50_000, help="frames the device model makes (50,000)")
     parser.add_argument("--json", action="store_true", help="print the counts as JSON")
     args = parser.parse_args(argv)
     result = measure(
