@@ -142,3 +142,29 @@ def test_mid_stream_session_reads_a_running_stream(sim: Simulator, tmp_path: Pat
         assert not [e for e in client.poll(0.2) if isinstance(e, ilahrs.ProtocolError)]
         client.stop()
         assert not any(isinstance(e, DataBlock) for e in client.poll(0.1))
+
+
+STALE = bytes.fromhex("AA 55 01 00 3A 00")  # the start of a 58-byte frame whose rest never came
+
+
+def test_the_device_recovers_from_a_stale_header_a_crashed_host_left(tmp_path: Path) -> None:
+    """E41 on the simulator's pty: a host cut off mid-write leaves a frame header; the next client's
+    Stop and ReadAHRSPar are answered once the line has been idle, without a retry."""
+    with simulator(tmp_path, "--seed", "3") as running:
+        with AhrsClient(running.first_line) as crashed:
+            crashed._write(STALE)
+        with AhrsClient(running.first_line, retries=0) as client:
+            client.stop()
+            assert isinstance(client.read_parameters(), ilahrs.AhrsParametersRead)
+            assert client.errors == []
+
+
+def test_the_client_gives_up_held_bytes_once_reads_return_nothing() -> None:
+    """E41 on the client's side: the start of a frame the device never finished is given up after
+    IDLE_TIMEOUT of empty reads (pyserial's loop:// reads back what is written)."""
+    with AhrsClient("loop://") as client:
+        client._write(STALE)
+        client.poll(ilahrs.IDLE_TIMEOUT / 4)
+        assert client.host.pending == len(STALE)
+        client.poll(2 * ilahrs.IDLE_TIMEOUT)
+        assert client.host.pending == 0 and client.discarded == len(STALE)

@@ -167,3 +167,44 @@ def test_resync_and_settings() -> None:
     assert host.state == "runs_ready" and host.owed == ()
     with pytest.raises(ilahrs.IlahrsError):
         host.resync("nowhere")
+
+
+def test_the_host_gives_up_a_stale_header_when_the_line_goes_idle() -> None:
+    """E41: the start of a frame whose rest never came holds the answer behind it until the line
+    has been idle for IDLE_TIMEOUT; then the answer is reported, stamped at that moment."""
+    host, device = Host(), ilahrs.Device()
+    answer = device.receive(host.send("GetBIT"))
+    stale = bytes.fromhex("AA 55 01 00 3A 00")
+    assert host.receive(stale + answer) == [] and host.pending == len(stale + answer)
+    assert host.advance(0.099) == [] and host.owed == ("bit_result",)
+    block, dropped = host.advance(0.5)
+    assert isinstance(block, DataBlock) and block.raw == answer and block.at == pytest.approx(ilahrs.IDLE_TIMEOUT)
+    assert dropped == Discarded(len(stale)) and host.pending == 0 and not host.owed
+    assert host.advance(2.0) == []  # the answer came in time: no timeout reported
+
+
+def test_the_host_reports_a_timeout_before_what_idle_releases_later() -> None:
+    host = Host(reply_timeout=0.05)
+    answer = ilahrs.Device().receive(host.send("GetBIT"))
+    host.receive(bytes.fromhex("AA 55 01 00 3A 00") + answer)
+    missing, late, dropped = host.advance(1.0)
+    assert isinstance(missing, ProtocolError) and missing.problem == "missing"
+    assert isinstance(late, ProtocolError) and late.problem == "unexpected" and late.raw == answer
+    assert missing.at == late.at == pytest.approx(ilahrs.IDLE_TIMEOUT) and isinstance(dropped, Discarded)
+
+
+def test_the_host_idle_call_and_strict_option() -> None:
+    host = Host.mid_stream("AHRScont2", strict=True)
+    assert host.strict
+    block = ilahrs.Quaternion(heading=9000).build()
+    good = ilahrs.Frame(ilahrs.MessageType.DATA, block).build()
+    bad = ilahrs.Frame(ilahrs.MessageType.DATA, block, reserved=1).build()
+    events = host.receive(bad + good)
+    assert [type(e) for e in events] == [Output, Discarded] and isinstance(events[0], Output)
+    assert events[0].raw == good
+    assert [type(e) for e in Host.mid_stream("AHRScont2").receive(bad + good)] == [Output, Output]
+    host.receive(good[:5])
+    assert host.idle(0.01) == [] and host.pending == 5
+    assert host.idle() == [Discarded(5)] and host.pending == 0
+    with pytest.raises(ilahrs.IlahrsError):
+        Host(strict="yes")  # type: ignore[arg-type]

@@ -8,6 +8,7 @@ import json
 import os
 import select
 import signal
+import socket
 import subprocess
 import sys
 import termios
@@ -159,6 +160,30 @@ def test_tcp_loopback(tmp_path: Path) -> None:
             assert all(isinstance(b, ilahrs.Quaternion) for b in blocks)
             client.stop()
         assert sim.process.wait(10) == 0  # exits when the peer closes
+
+
+def test_tcp_answers_behind_a_stale_header(tmp_path: Path) -> None:
+    """E41 over the simulator's TCP line: the start of a frame a host left (cut off mid-write),
+    then Stop and ReadAHRSPar: the device gives the stale bytes up once the line has been idle for
+    IDLE_TIMEOUT and answers (it answered nothing before, however long it waited)."""
+    read = ilahrs.build_command("ReadAHRSPar")
+    with simulator(tmp_path, "--tcp", "127.0.0.1:0") as sim:
+        _, _, port = sim.first_line.rpartition(":")
+        with socket.create_connection(("127.0.0.1", int(port)), timeout=10) as connection:
+            connection.sendall(bytes.fromhex("AA 55 01 00 3A 00"))
+            time.sleep(0.02)
+            connection.sendall(ilahrs.build_command("Stop") + read)
+            sent = time.monotonic()
+            decoder = ilahrs.StreamDecoder()
+            frames: list[ilahrs.Frame] = []
+            while not frames and time.monotonic() - sent < 5.0:
+                ready, _, _ = select.select([connection], [], [], 0.1)
+                if ready:
+                    frames += [e.frame for e in decoder.feed(connection.recv(4096)) if e.frame is not None]
+            waited = time.monotonic() - sent
+        assert frames, "no answer behind the stale header"
+        assert len(frames[0].payload) == ilahrs.AhrsParametersRead.SIZE
+        assert ilahrs.IDLE_TIMEOUT / 2 < waited < 3.0  # the answer waits for the idle line, then comes
 
 
 @pytest.mark.parametrize("address", ["0.0.0.0:0", "192.0.2.1:5000", "example.com:80", "127.0.0.1"])

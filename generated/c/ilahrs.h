@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+/* Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
  * Do not edit: change the spec or the generator and run `make generate`.
  */
 /**
@@ -85,7 +85,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887"
+#define ILAHRS_SPEC_HASH "78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a"
 /** Revision of the ICD the spec describes. */
 #define ILAHRS_ICD_REVISION "1.7"
 

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """The subcommands of `ilahrs` besides simulate and diagram: record, decode, send, params, monitor,
 calibrate and plot. `add_subcommands()` adds their parsers; `run()` runs one and turns bad input
@@ -50,6 +50,14 @@ def _variant(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("--variant", metavar="NAME", help=f"device variant for scaled rates ({', '.join(VARIANTS)})")
 
 
+def _strict(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument(
+        "--strict",
+        action="store_true",
+        help="refuse data frames whose reserved byte is not the AHRS's: damage the checksum cannot see (E42)",
+    )
+
+
 def _output_format(sub: argparse.ArgumentParser, default: str | None) -> None:
     starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
     sub.add_argument("--output-format", metavar="COMMAND", default=default, help=f"the start command ({starting})")
@@ -71,6 +79,7 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     _variant(dec)
     dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
     dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
+    _strict(dec)
     _output_format(dec, None)
 
     snd = commands.add_parser("send", help="send one command and print the answer", epilog=_EPILOG)
@@ -88,6 +97,7 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     _port(mon)
     _output_format(mon, "AHRScont3")
     _variant(mon)
+    _strict(mon)
 
     cal = commands.add_parser("calibrate", help="guided hard/soft-iron calibration", epilog=_EPILOG)
     _port(cal)
@@ -114,7 +124,7 @@ def _decode(args: argparse.Namespace) -> int:
     variant_named(args.variant)  # a wrong name is refused before the capture is opened
     table = output_table(args.output_format) if args.output_format else None
     source = open_source(args.file)
-    if args.to == "csv" and source.kind == "raw" and not args.follow:
+    if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
         return _decode_columns(args, source, selected, table)
     return _decode_messages(args, source, selected, table)
 
@@ -122,7 +132,8 @@ def _decode(args: argparse.Namespace) -> int:
 def _decode_messages(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
     """`_decode` message by message, following the commands in a pcapng capture."""
     variant = variant_named(args.variant)
-    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=args.output_format is not None)
+    known = args.output_format is not None
+    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=known, strict=args.strict)
     writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
     progress = Progress(source)
@@ -157,7 +168,8 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
 
 
 def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
-    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar."""
+    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar (lenient decoding
+    only: `--strict` goes message by message)."""
     decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
     progress = Progress(source)
     try:
@@ -222,7 +234,7 @@ def _monitor(args: argparse.Namespace) -> int:
     from .cli_monitor import monitor
 
     output_table(args.output_format)  # refuse an unknown command before opening the port
-    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant))
+    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant), strict=args.strict)
 
 
 def _plot(args: argparse.Namespace) -> int:

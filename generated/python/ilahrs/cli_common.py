@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli_common.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """What the subcommands of `ilahrs` share: the one kind of error a user sees (CliError: one line,
 exit status 2), name look-ups that suggest the closest valid name, key=value parsing, the rows of
@@ -158,15 +158,15 @@ def field_columns(kinds: Iterable[str]) -> list[str]:
     return list(columns)
 
 
-def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0) -> AhrsClient:
-    """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud`; CliError when the
-    port cannot be opened or pyserial is missing."""
+def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict: bool = False) -> AhrsClient:
+    """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud` (`strict`: see
+    AhrsClient); CliError when the port cannot be opened or pyserial is missing."""
     try:
         from .serial import AhrsClient
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise CliError(f"{exc}") from exc
     try:
-        client = AhrsClient(port, timeout=timeout)
+        client = AhrsClient(port, timeout=timeout, strict=strict)
     except ImportError as exc:
         raise CliError(str(exc)) from exc
     except (OSError, ValueError) as exc:

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli_decode.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs decode`: a capture as one row per message, in text, CSV or JSON lines.
 
@@ -111,8 +111,8 @@ class Message:
 class _Splitter:
     """A StreamDecoder that also says where each message and each discarded run starts."""
 
-    def __init__(self) -> None:
-        self.decoder = StreamDecoder()
+    def __init__(self, strict: bool = False) -> None:
+        self.decoder = StreamDecoder(strict=strict)
         self.buffer = bytearray()
         self.base = 0
         self.runs: list[tuple[int, int]] = []
@@ -147,13 +147,16 @@ class _Splitter:
 
 class CaptureDecoder:
     """Chunks in, Messages out. `context`: follow the commands seen in the capture with a Host;
-    `output`: the table of the output started before the capture began (None: unknown)."""
+    `output`: the table of the output started before the capture began (None: unknown); `strict`:
+    refuse data frames from the device whose reserved byte is not the AHRS's (E42)."""
 
-    def __init__(self, *, context: bool, output: str | None = None, output_known: bool = False) -> None:
-        self._host = Host() if context else None
+    def __init__(
+        self, *, context: bool, output: str | None = None, output_known: bool = False, strict: bool = False
+    ) -> None:
+        self._host = Host(strict=strict) if context else None
         self._output = output
         self._output_known = output_known
-        self._in = _Splitter()
+        self._in = _Splitter(strict)
         self._out = _Splitter()
         self._command: tuple[str, int] | None = None
         self._start: float | None = None

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli_monitor.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs monitor`: a live full-screen view (curses) of an AHRS's output.
 
@@ -115,10 +115,11 @@ def _loop(screen: Any, view: _View) -> None:
             return
 
 
-def monitor(port: str, baud: int, command: str, variant: Variant) -> int:
-    """Run the live view until `q`; Stop on exit."""
+def monitor(port: str, baud: int, command: str, variant: Variant, *, strict: bool = False) -> int:
+    """Run the live view until `q`; Stop on exit. `strict`: refuse data frames whose reserved byte
+    is not the AHRS's (E42)."""
     name = lookup("output command", command, [n for n, i in COMMANDS.items() if i.starts_output is not None])
-    client = open_client(port, baud)
+    client = open_client(port, baud, strict=strict)
     try:
         try:
             client.stop()

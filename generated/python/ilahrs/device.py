@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/device.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """The reference model of the AHRS: what the device does with every message, as time passes.
 
@@ -7,6 +7,9 @@ Sans-I/O (h11 style): `Device.receive(data)` takes the bytes the host sends and 
 the AHRS answers at once; `Device.advance(seconds)` moves the device's clock and returns what it
 sends meanwhile (the alignment block, output at the configured rate, calibration results, nothing
 after a parameter block timeout). No sockets, threads or sleeping; equal inputs give equal bytes.
+A message never spans an idle line (E41): when the clock passes IDLE_TIMEOUT after the last bytes
+received while the decoder holds some (the start of a frame whose rest never came), `advance`
+gives them up and answers the messages behind them then.
 
 Every decision comes from the table in `ilahrs.statemachine`: the device finds the event (the
 command, resolved by mode for 0xFE; a parameter block of the size its state expects; any other
@@ -75,7 +78,7 @@ from .statemachine import (
     timer_transition,
 )
 from .status import _MODES
-from .stream import StreamDecoder
+from .stream import IDLE_TIMEOUT_NS, StreamDecoder, StreamEvent
 from .synthetic import quantity as synthetic_quantity
 
 __all__ = ["DEFAULT_DEVICE_ID", "DEFAULT_VARIANT", "Device", "default_parameters"]
@@ -243,6 +246,7 @@ class Device:
         self._decoder = StreamDecoder()
         self._state = INITIAL
         self._now = 0
+        self._idle_at: int | None = None
         self._deadline: int | None = None
         self._deadline_event: str | None = None
         self._output: str | None = None
@@ -287,13 +291,31 @@ class Device:
 
     @property
     def next_event_in(self) -> float | None:
-        """Seconds until the device next acts on its own (a timer), or None."""
-        return None if self._deadline is None else max(0, self._deadline - self._now) / _NS
+        """Seconds until the device next acts on its own (a timer, or the line going idle while it
+        holds the start of a message), or None."""
+        due = [t for t in (self._deadline, self._idle_at) if t is not None]
+        return max(0, min(due) - self._now) / _NS if due else None
 
     def receive(self, data: bytes | bytearray | memoryview) -> bytes:
         """Take bytes from the host; return what the AHRS answers at once."""
+        out = self._answer(self._decoder.feed(data))
+        if len(data):
+            waiting = self._decoder.pending and IDLE_TIMEOUT_NS is not None
+            self._idle_at = self._now + IDLE_TIMEOUT_NS if waiting and IDLE_TIMEOUT_NS is not None else None
+        return out
+
+    def idle(self, quiet: float | None = None) -> bytes:
+        """The line has been quiet for `quiet` seconds since the last byte (None: it is idle). From
+        IDLE_TIMEOUT on, the bytes held are given up (E41; StreamDecoder.idle); return the answers
+        to the messages behind them. A shorter quiet time changes nothing."""
+        out = self._answer(self._decoder.idle(quiet))
+        if not self._decoder.pending:
+            self._idle_at = None
+        return out
+
+    def _answer(self, events: list[StreamEvent]) -> bytes:
         out = bytearray()
-        for event in self._decoder.feed(data):
+        for event in events:
             if event.frame is not None:
                 out += self._message(event.raw, event.frame)
         return bytes(out)
@@ -302,7 +324,14 @@ class Device:
         """Let `seconds` pass; return what the AHRS sends meanwhile, in order."""
         target = self._now + round(require_seconds(seconds) * _NS)
         out = bytearray()
-        while self._deadline is not None and self._deadline <= target:
+        while True:
+            idle_at = self._idle_at
+            if idle_at is not None and idle_at <= target and (self._deadline is None or idle_at <= self._deadline):
+                self._now = idle_at
+                out += self.idle()
+                continue
+            if self._deadline is None or self._deadline > target:
+                break
             self._now = self._deadline
             event = self._deadline_event
             self._deadline = self._deadline_event = None

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/host.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
@@ -32,7 +32,7 @@ from dataclasses import dataclass, field, replace
 from typing import Final
 
 from .commands import COMMAND_SET, COMMANDS, build_command
-from .errors import ErrorKind, IlahrsError, brief, require_seconds, suggest
+from .errors import ErrorKind, IlahrsError, brief, require_flag, require_seconds, suggest
 from .frame import Frame, MessageType
 from .machine import firmware_is_valid
 from .nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -54,7 +54,7 @@ from .statemachine import (
     timer_transition,
 )
 from .status import UnitStatusWord
-from .stream import StreamDecoder, StreamEvent
+from .stream import IDLE_TIMEOUT_NS, StreamDecoder, StreamEvent
 
 __all__ = [
     "DEFAULT_REPLY_TIMEOUT_S",
@@ -170,6 +170,11 @@ class Host:
     device's firmware version, for the rows of the table that depend on it (E29). `state` and
     `output` (a command that starts output, or an output format) start the session mid-stream
     (see `mid_stream`). Every event carries `at`, the host's clock when it was reported.
+
+    A message never spans an idle line (E41): when the host's clock passes IDLE_TIMEOUT after the
+    last bytes received while the decoder holds some, `advance` gives them up (as `idle` does)
+    and reports the messages found behind them as received then. `strict`: refuse data frames
+    whose reserved byte is not the AHRS's (E42); they count as discarded bytes.
     """
 
     def __init__(
@@ -179,6 +184,7 @@ class Host:
         reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S,
         state: str = INITIAL,
         output: str | None = None,
+        strict: bool = False,
     ) -> None:
         if firmware is not None and not firmware_is_valid(firmware):
             detail = f"{brief(firmware)} is not a firmware version such as 4.9.9.0"
@@ -186,8 +192,11 @@ class Host:
         self.firmware = firmware
         self.reply_timeout = require_seconds(reply_timeout, "reply_timeout")
         _check_state(state)
-        self._decoder = StreamDecoder()
+        self._decoder = StreamDecoder(strict=require_flag(strict, "strict"))
+        self.strict = strict
+        """Whether data frames with another reserved byte than the AHRS's are refused (E42)."""
         self._now = 0
+        self._idle_at: int | None = None
         self._state = state
         self._owed: list[_Owed] = []
         self._target = state
@@ -201,7 +210,12 @@ class Host:
 
     @classmethod
     def mid_stream(
-        cls, command: str, *, firmware: str | None = None, reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S
+        cls,
+        command: str,
+        *,
+        firmware: str | None = None,
+        reply_timeout: float = DEFAULT_REPLY_TIMEOUT_S,
+        strict: bool = False,
     ) -> Host:
         """A session for a line that is already streaming the output `command` started (a capture
         that began mid-stream): in the state where that output flows, reading its format."""
@@ -216,7 +230,7 @@ class Host:
             if timed is None or timed[1].to == state:
                 break
             state = timed[1].to
-        return cls(firmware=firmware, reply_timeout=reply_timeout, state=state, output=command)
+        return cls(firmware=firmware, reply_timeout=reply_timeout, state=state, output=command, strict=strict)
 
     @property
     def state(self) -> str:
@@ -308,8 +322,26 @@ class Host:
     def receive(self, data: bytes | bytearray | memoryview) -> list[HostEvent]:
         """Bytes from the device -> events, in order (Discarded last, if any bytes were dropped)."""
         before = self._decoder.discarded
+        events = self._messages(self._decoder.feed(data), before)
+        if len(data):
+            self._idle_at = (
+                None if not self._decoder.pending or IDLE_TIMEOUT_NS is None else self._now + IDLE_TIMEOUT_NS
+            )
+        return events
+
+    def idle(self, quiet: float | None = None) -> list[HostEvent]:
+        """The line has been quiet for `quiet` seconds since the last byte (None: it is idle). From
+        IDLE_TIMEOUT on, the bytes held are given up (E41; StreamDecoder.idle) and the messages
+        behind them reported, with a Discarded last; a shorter quiet time changes nothing."""
+        before = self._decoder.discarded
+        events = self._messages(self._decoder.idle(quiet), before)
+        if not self._decoder.pending:
+            self._idle_at = None
+        return events
+
+    def _messages(self, messages: list[StreamEvent], before: int) -> list[HostEvent]:
         events: list[HostEvent] = []
-        for message in self._decoder.feed(data):
+        for message in messages:
             events += self._message(message)
         dropped = self._decoder.discarded - before
         if dropped:
@@ -321,8 +353,18 @@ class Host:
         return [replace(event, at=now) for event in events] if now else events
 
     def advance(self, seconds: float) -> list[HostEvent]:
-        """Let time pass on the host's clock; report answers that did not come in time."""
-        self._now += round(require_seconds(seconds) * _NS)
+        """Let time pass on the host's clock; report answers that did not come in time, and what
+        the line going idle releases (at the moment it went idle)."""
+        target = self._now + round(require_seconds(seconds) * _NS)
+        events: list[HostEvent] = []
+        if self._idle_at is not None and self._idle_at <= target:
+            events += self._expire(self._idle_at)
+            events += self.idle()
+        return events + self._expire(target)
+
+    def _expire(self, now: int) -> list[HostEvent]:
+        """Move the clock to `now`; report what was owed before it and did not come."""
+        self._now = now
         events: list[HostEvent] = []
         if self._owed and self._owed[0].deadline < self._now:
             missing = ", ".join(self.owed)

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/live.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """Live conformance: drive a device through the session flows in real time and check each answer
 (`ilahrs conformance --device PORT`).
@@ -206,6 +206,7 @@ class Link:
             write_timeout=5.0,
         )
         self._decoder = StreamDecoder()
+        self._heard = time.monotonic()
 
     def close(self) -> None:
         self._port.close()
@@ -216,10 +217,13 @@ class Link:
         return time.monotonic()
 
     def read(self) -> list[Received]:
-        """What arrives within one poll interval."""
+        """What arrives within one poll interval (and what an idle line releases, E41)."""
         data: bytes = self._port.read(max(1, self._port.in_waiting))
         now = time.monotonic()
-        return [Received(now, m) for m in self._decoder.feed(data)] if data else []
+        if data:
+            self._heard = now
+            return [Received(now, m) for m in self._decoder.feed(data)]
+        return [Received(now, m) for m in self._decoder.idle(now - self._heard)] if self._decoder.pending else []
 
     def drain(self, quiet: float, limit: float) -> int:
         """Read until nothing came for `quiet` seconds (at most `limit`); the count of messages."""

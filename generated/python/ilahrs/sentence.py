@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/sentence.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """The code of an NMEA 0183 sentence class: parse, check and build, read from the class's field
 table (`_SPEC`: name, format, width, decimals, bounds and unit of each value), its identifier and

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/simulate.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """The virtual AHRS on a serial line: the device model behind a pseudo-terminal or a loopback
 socket, in real time.
@@ -96,7 +96,7 @@ class Line:
             return b""
         written = bytearray()
         for message in self._splitter.feed(out):
-            written += self._emit(message.raw)
+            written += self.emit(message.raw)
         if written and self.recorder is not None:
             self.recorder(bytes(written), False)
         return bytes(written)
@@ -106,7 +106,9 @@ class Line:
         self.lost += 1
         self._record({"kind": "lost", "written": data.hex()})
 
-    def _emit(self, message: bytes) -> bytes:
+    def emit(self, message: bytes) -> bytes:
+        """What the line writes for one message the device sends: the message with the faults
+        applied (and garbage before it), counted and logged."""
         faults = self.faults
         rng = self._rng
         garbage = b""

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -13,7 +13,7 @@ from typing import Final
 from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887"
+SPEC_SHA256: Final = "78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a"
 ICD_DATE: Final = (2014, 3, 11)
 """The date of Inertial Labs AHRS Interface Control Document, rev 1.7: (year, month, day)."""
 

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/stream.py for spec/ilahrs.yaml,
-# spec hash be1a7f680a52339a957fa7513d00f92b22f2d5205e71718d9f5ea37a0f7ce887.
+# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """A sans-I/O stream decoder: bytes in, frames and sentences out, "leftmost valid message".
 
@@ -16,6 +16,7 @@ refuses data frames whose reserved byte is not the AHRS's (E42).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Generator
 from dataclasses import dataclass
 from typing import Final
@@ -38,7 +39,10 @@ from .frame import (
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from .spec import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE
 
-__all__ = ["IDLE_BYTE_TIMES", "IDLE_TIMEOUT", "MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+__all__ = ["IDLE_BYTE_TIMES", "IDLE_TIMEOUT", "IDLE_TIMEOUT_NS", "MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+
+IDLE_TIMEOUT_NS: Final = None if math.isinf(IDLE_TIMEOUT) else round(IDLE_TIMEOUT * 1_000_000_000)
+"""IDLE_TIMEOUT in nanoseconds, for clocks that count them (None: no quiet time is idle)."""
 
 _NEED_MORE: Final = -1
 _INVALID: Final = 0

@@ -6,7 +6,8 @@ message", input ended), those of message type DATA whose payload is the table's 
 by the table's `parse`. It walks the capture's bytes in place (no copy of a bytes or bytearray
 capture, no per-message event objects; the blocks are made in batches with the garbage
 collector paused), so it suits long logs; `payload_offsets` gives where the
-payloads are, for a reader of its own (`ilahrs.columnar` reads them into columns).
+payloads are, for a reader of its own (`ilahrs.columnar` reads them into columns). `strict`
+accepts the frames a `StreamDecoder(strict=True)` accepts (E42).
 
 >>> from ilahrs.frame import Frame
 >>> from ilahrs.payloads import Quaternion
@@ -24,7 +25,7 @@ from itertools import islice, starmap
 from typing import Any, Final, TypeVar
 
 from .codec import PayloadBase, maker
-from .errors import ErrorKind, IlahrsError, brief
+from .errors import ErrorKind, IlahrsError, brief, require_flag
 from .frame import (
     CHECKSUM_SIZE,
     HEADER,
@@ -35,6 +36,8 @@ from .frame import (
     MESSAGE_TYPE_OFFSET,
     MIN_MESSAGE_LENGTH,
     PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    STRICT_RESERVED,
     MessageType,
 )
 
@@ -65,17 +68,18 @@ def _payload_class(payload: object) -> type[Any]:
     raise IlahrsError(ErrorKind.MALFORMED, None, "payload", f"{brief(payload)} is not a payload class")
 
 
-def payload_offsets(data: Capture, size: int) -> Iterator[int]:
+def payload_offsets(data: Capture, size: int, *, strict: bool = False) -> Iterator[int]:
     """Where the payload of each accepted DATA frame with a `size`-byte payload starts in `data`,
-    in order. The frames are those `StreamDecoder` accepts when fed `data` and finished: a valid
-    $PAHR sentence never holds a frame header, so frames alone decide."""
-    return _offsets(_capture(data), size)
+    in order. The frames are those `StreamDecoder(strict=strict)` accepts when fed `data` and
+    finished: a valid $PAHR sentence never holds a frame header, so frames alone decide."""
+    return _offsets(_capture(data), size, require_flag(strict, "strict"))
 
 
-def _offsets(data: bytes | bytearray, size: int) -> Iterator[int]:
+def _offsets(data: bytes | bytearray, size: int, strict: bool = False) -> Iterator[int]:
     find = data.find
     total = len(data)
     wanted = size + LENGTH_BIAS
+    refuse = STRICT_RESERVED if strict else {}
     pos = find(HEADER)
     while pos >= 0:
         if pos + PAYLOAD_OFFSET <= total and data[pos + MESSAGE_TYPE_OFFSET] in _MESSAGE_TYPES:
@@ -84,6 +88,10 @@ def _offsets(data: bytes | bytearray, size: int) -> Iterator[int]:
             if MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH and end <= total:
                 at = end - CHECKSUM_SIZE
                 if sum(data[pos + HEADER_SIZE : at]) & 0xFFFF == data[at] | data[at + 1] << 8:
+                    reserved = data[pos + RESERVED_OFFSET]
+                    if refuse and refuse.get(data[pos + MESSAGE_TYPE_OFFSET], reserved) != reserved:
+                        pos = find(HEADER, pos + 1)  # no frame when strict (E42)
+                        continue
                     if length == wanted and data[pos + MESSAGE_TYPE_OFFSET] == _DATA:
                         yield pos + PAYLOAD_OFFSET
                     pos = find(HEADER, end)
@@ -91,24 +99,26 @@ def _offsets(data: bytes | bytearray, size: int) -> Iterator[int]:
         pos = find(HEADER, pos + 1)
 
 
-def decode_output(data: Capture, payload: type[_P]) -> Iterator[_P]:
+def decode_output(data: Capture, payload: type[_P], *, strict: bool = False) -> Iterator[_P]:
     """Every block of table `payload` (a payload class) in the capture `data`, as payload objects
-    equal to `payload.parse` of each (see the module's note for which frames count).
+    equal to `payload.parse` of each (see the module's note for which frames count; `strict`:
+    refuse data frames whose reserved byte is not the AHRS's, E42).
     IlahrsError(MALFORMED) at once for a capture that is not a byte string or a `payload` that is
     not a payload class."""
     capture = _capture(data)
     cls = _payload_class(payload)
-    return _decode(capture, cls)
+    return _decode(capture, cls, require_flag(strict, "strict"))
 
 
-def _decode(data: bytes | bytearray, cls: type[Any]) -> Iterator[Any]:
+def _decode(data: bytes | bytearray, cls: type[Any], strict: bool) -> Iterator[Any]:
     size = cls.SIZE
     if cls._TEXT:
         parse = cls.parse
-        for offset in _offsets(data, size):
+        for offset in _offsets(data, size, strict):
             yield parse(data[offset : offset + size])
         return
-    blocks = starmap(maker(cls), map(partial(cls._STRUCT.unpack_from, data), _offsets(data, size)))
+    offsets = _offsets(data, size, strict)
+    blocks = starmap(maker(cls), map(partial(cls._STRUCT.unpack_from, data), offsets))
     while True:
         # The collector, run every few hundred new objects, costs more than the decoding when the
         # caller keeps the blocks: it is paused while a batch is made (never while the caller runs).

@@ -47,6 +47,14 @@ def _variant(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("--variant", metavar="NAME", help=f"device variant for scaled rates ({', '.join(VARIANTS)})")
 
 
+def _strict(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument(
+        "--strict",
+        action="store_true",
+        help="refuse data frames whose reserved byte is not the AHRS's: damage the checksum cannot see (E42)",
+    )
+
+
 def _output_format(sub: argparse.ArgumentParser, default: str | None) -> None:
     starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
     sub.add_argument("--output-format", metavar="COMMAND", default=default, help=f"the start command ({starting})")
@@ -68,6 +76,7 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     _variant(dec)
     dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
     dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
+    _strict(dec)
     _output_format(dec, None)
 
     snd = commands.add_parser("send", help="send one command and print the answer", epilog=_EPILOG)
@@ -85,6 +94,7 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     _port(mon)
     _output_format(mon, "AHRScont3")
     _variant(mon)
+    _strict(mon)
 
     cal = commands.add_parser("calibrate", help="guided hard/soft-iron calibration", epilog=_EPILOG)
     _port(cal)
@@ -111,7 +121,7 @@ def _decode(args: argparse.Namespace) -> int:
     variant_named(args.variant)  # a wrong name is refused before the capture is opened
     table = output_table(args.output_format) if args.output_format else None
     source = open_source(args.file)
-    if args.to == "csv" and source.kind == "raw" and not args.follow:
+    if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
         return _decode_columns(args, source, selected, table)
     return _decode_messages(args, source, selected, table)
 
@@ -119,7 +129,8 @@ def _decode(args: argparse.Namespace) -> int:
 def _decode_messages(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
     """`_decode` message by message, following the commands in a pcapng capture."""
     variant = variant_named(args.variant)
-    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=args.output_format is not None)
+    known = args.output_format is not None
+    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=known, strict=args.strict)
     writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
     progress = Progress(source)
@@ -154,7 +165,8 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
 
 
 def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
-    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar."""
+    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar (lenient decoding
+    only: `--strict` goes message by message)."""
     decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
     progress = Progress(source)
     try:
@@ -219,7 +231,7 @@ def _monitor(args: argparse.Namespace) -> int:
     from .cli_monitor import monitor
 
     output_table(args.output_format)  # refuse an unknown command before opening the port
-    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant))
+    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant), strict=args.strict)
 
 
 def _plot(args: argparse.Namespace) -> int:

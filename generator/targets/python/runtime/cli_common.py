@@ -155,15 +155,15 @@ def field_columns(kinds: Iterable[str]) -> list[str]:
     return list(columns)
 
 
-def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0) -> AhrsClient:
-    """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud`; CliError when the
-    port cannot be opened or pyserial is missing."""
+def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict: bool = False) -> AhrsClient:
+    """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud` (`strict`: see
+    AhrsClient); CliError when the port cannot be opened or pyserial is missing."""
     try:
         from .serial import AhrsClient
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise CliError(f"{exc}") from exc
     try:
-        client = AhrsClient(port, timeout=timeout)
+        client = AhrsClient(port, timeout=timeout, strict=strict)
     except ImportError as exc:
         raise CliError(str(exc)) from exc
     except (OSError, ValueError) as exc:

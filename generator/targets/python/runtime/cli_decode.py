@@ -108,8 +108,8 @@ class Message:
 class _Splitter:
     """A StreamDecoder that also says where each message and each discarded run starts."""
 
-    def __init__(self) -> None:
-        self.decoder = StreamDecoder()
+    def __init__(self, strict: bool = False) -> None:
+        self.decoder = StreamDecoder(strict=strict)
         self.buffer = bytearray()
         self.base = 0
         self.runs: list[tuple[int, int]] = []
@@ -144,13 +144,16 @@ class _Splitter:
 
 class CaptureDecoder:
     """Chunks in, Messages out. `context`: follow the commands seen in the capture with a Host;
-    `output`: the table of the output started before the capture began (None: unknown)."""
+    `output`: the table of the output started before the capture began (None: unknown); `strict`:
+    refuse data frames from the device whose reserved byte is not the AHRS's (E42)."""
 
-    def __init__(self, *, context: bool, output: str | None = None, output_known: bool = False) -> None:
-        self._host = Host() if context else None
+    def __init__(
+        self, *, context: bool, output: str | None = None, output_known: bool = False, strict: bool = False
+    ) -> None:
+        self._host = Host(strict=strict) if context else None
         self._output = output
         self._output_known = output_known
-        self._in = _Splitter()
+        self._in = _Splitter(strict)
         self._out = _Splitter()
         self._command: tuple[str, int] | None = None
         self._start: float | None = None

@@ -112,10 +112,11 @@ def _loop(screen: Any, view: _View) -> None:
             return
 
 
-def monitor(port: str, baud: int, command: str, variant: Variant) -> int:
-    """Run the live view until `q`; Stop on exit."""
+def monitor(port: str, baud: int, command: str, variant: Variant, *, strict: bool = False) -> int:
+    """Run the live view until `q`; Stop on exit. `strict`: refuse data frames whose reserved byte
+    is not the AHRS's (E42)."""
     name = lookup("output command", command, [n for n, i in COMMANDS.items() if i.starts_output is not None])
-    client = open_client(port, baud)
+    client = open_client(port, baud, strict=strict)
     try:
         try:
             client.stop()

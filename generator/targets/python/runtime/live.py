@@ -203,6 +203,7 @@ class Link:
             write_timeout=5.0,
         )
         self._decoder = StreamDecoder()
+        self._heard = time.monotonic()
 
     def close(self) -> None:
         self._port.close()
@@ -213,10 +214,13 @@ class Link:
         return time.monotonic()
 
     def read(self) -> list[Received]:
-        """What arrives within one poll interval."""
+        """What arrives within one poll interval (and what an idle line releases, E41)."""
         data: bytes = self._port.read(max(1, self._port.in_waiting))
         now = time.monotonic()
-        return [Received(now, m) for m in self._decoder.feed(data)] if data else []
+        if data:
+            self._heard = now
+            return [Received(now, m) for m in self._decoder.feed(data)]
+        return [Received(now, m) for m in self._decoder.idle(now - self._heard)] if self._decoder.pending else []
 
     def drain(self, quiet: float, limit: float) -> int:
         """Read until nothing came for `quiet` seconds (at most `limit`); the count of messages."""

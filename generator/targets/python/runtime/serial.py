@@ -19,6 +19,11 @@ line that loses a message now and then still completes them. The last `history` 
 host saw are in `events` (each stamped with its time.monotonic() receive time, `at`); protocol
 errors in `errors`; the count of bytes that belonged to no message in `discarded`. History is
 bounded, so a client can stream for days.
+
+A message never spans an idle line (E41): bytes the host holds (the start of a frame whose rest
+never came) are given up once reads have returned nothing for IDLE_TIMEOUT (the host's clock
+takes the bytes of a read as received at the previous read, at most one read, 10 ms, early).
+`strict`: refuse data frames whose reserved byte is not the AHRS's (E42; they count as discarded).
 """
 
 from __future__ import annotations
@@ -128,8 +133,9 @@ class AhrsClient:
         clock: Callable[[], float] = time.monotonic,
         baud: int | None = None,
         history: int = DEFAULT_HISTORY,
+        strict: bool = False,
     ) -> None:
-        self.host = Host(firmware=firmware, reply_timeout=timeout)
+        self.host = Host(firmware=firmware, reply_timeout=timeout, strict=strict)
         self.retries = retries
         self.quiet = quiet
         keep = require_int(history, "history", 0, 2**31)

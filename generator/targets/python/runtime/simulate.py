@@ -93,7 +93,7 @@ class Line:
             return b""
         written = bytearray()
         for message in self._splitter.feed(out):
-            written += self._emit(message.raw)
+            written += self.emit(message.raw)
         if written and self.recorder is not None:
             self.recorder(bytes(written), False)
         return bytes(written)
@@ -103,7 +103,9 @@ class Line:
         self.lost += 1
         self._record({"kind": "lost", "written": data.hex()})
 
-    def _emit(self, message: bytes) -> bytes:
+    def emit(self, message: bytes) -> bytes:
+        """What the line writes for one message the device sends: the message with the faults
+        applied (and garbage before it), counted and logged."""
         faults = self.faults
         rng = self._rng
         garbage = b""

@@ -13,6 +13,7 @@ refuses data frames whose reserved byte is not the AHRS's (E42).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Generator
 from dataclasses import dataclass
 from typing import Final
@@ -35,7 +36,10 @@ from .frame import (
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from .spec import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE
 
-__all__ = ["IDLE_BYTE_TIMES", "IDLE_TIMEOUT", "MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+__all__ = ["IDLE_BYTE_TIMES", "IDLE_TIMEOUT", "IDLE_TIMEOUT_NS", "MAX_MESSAGE_SIZE", "StreamDecoder", "StreamEvent"]
+
+IDLE_TIMEOUT_NS: Final = None if math.isinf(IDLE_TIMEOUT) else round(IDLE_TIMEOUT * 1_000_000_000)
+"""IDLE_TIMEOUT in nanoseconds, for clocks that count them (None: no quiet time is idle)."""
 
 _NEED_MORE: Final = -1
 _INVALID: Final = 0
