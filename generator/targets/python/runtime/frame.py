@@ -135,9 +135,10 @@ class Frame:
 
     def build(self) -> bytes:
         """Encode the frame, filling in message length and checksum."""
-        self._check_types()
-        if self.message_type not in _MESSAGE_TYPES:
+        if _is_int(self.message_type) and self.message_type not in _MESSAGE_TYPES:
+            # spec/README.md, frame encode: the message type is checked before the reserved byte
             raise IlahrsError(ErrorKind.BAD_MESSAGE_TYPE, None, "message_type", f"message type {self.message_type}")
+        self._check_types()
         if not MIN_PAYLOAD_SIZE <= len(self.payload) <= MAX_PAYLOAD_SIZE:
             raise IlahrsError(
                 ErrorKind.BAD_LENGTH,
