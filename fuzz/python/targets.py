@@ -4,10 +4,12 @@
 
 TARGET is one of:
 
-    stream     a byte giving a chunk size, then bytes: `StreamDecoder` fed whole and in chunks of that
-               size hands out the same messages and discards the same bytes; every byte is in one
-               message or discarded; every frame parses and re-builds to its bytes, every sentence
-               parses to the same values
+    stream     a byte giving a chunk size (low 7 bits) and the strict option (top bit, E42), then
+               bytes: `StreamDecoder` fed whole and in chunks of that size hands out the same
+               messages and discards the same bytes; every byte is in one message or discarded;
+               every frame parses (strictly too, when strict) and re-builds to its bytes, every
+               sentence parses to the same values; with the line idle after each chunk (E41), the
+               events are those of each chunk decoded on its own
     payloads   a byte choosing a payload table, then one message: the table parses it (exact size
                only), and what builds re-builds to the same bytes; `Frame.parse`, `decode_command`
                and `ack_for` agree with the builders on it
@@ -44,11 +46,14 @@ TABLES = tuple(ilahrs.PAYLOADS.values())
 DEVICE_OUTPUT = 2048  # bytes a Device may send for one input: output blocks cost time, not coverage
 
 
-def decode(chunks: list[bytes]) -> tuple[list[ilahrs.StreamEvent], int]:
-    decoder = ilahrs.StreamDecoder()
+def decode(chunks: list[bytes], strict: bool = False, idle: bool = False) -> tuple[list[ilahrs.StreamEvent], int]:
+    """Every chunk fed, the line idle after each one when `idle` (E41), then the end of input."""
+    decoder = ilahrs.StreamDecoder(strict=strict)
     events: list[ilahrs.StreamEvent] = []
     for chunk in chunks:
         events += decoder.feed(chunk)
+        if idle:
+            events += decoder.idle()
     events += decoder.finish()
     return events, decoder.discarded
 
@@ -62,13 +67,17 @@ def valid_messages(data: bytes) -> None:
 def stream(data: bytes) -> None:
     if not data:
         return
-    size, line = max(data[0], 1), data[1:]
-    whole = decode([line])
-    assert decode([line[at : at + size] for at in range(0, len(line), size)]) == whole
+    size, strict, line = max(data[0] & 0x7F, 1), data[0] >= 0x80, data[1:]
+    whole = decode([line], strict)
+    chunks = [line[at : at + size] for at in range(0, len(line), size)]
+    assert decode(chunks, strict) == whole
     assert sum(len(e.raw) for e in whole[0]) + whole[1] == len(line)
+    segments = [decode([chunk], strict) for chunk in chunks]
+    idle = ([e for events, _ in segments for e in events], sum(count for _, count in segments))
+    assert decode(chunks, strict, idle=True) == idle
     for event in whole[0]:
         if event.frame is not None:
-            assert ilahrs.Frame.parse(event.raw) == event.frame and event.frame.build() == event.raw
+            assert ilahrs.Frame.parse(event.raw, strict=strict) == event.frame and event.frame.build() == event.raw
         else:
             assert ilahrs.PahrSentence.parse(event.raw) == event.sentence
 
