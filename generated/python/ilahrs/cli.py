@@ -15,7 +15,7 @@ import sys
 from collections.abc import Callable
 from typing import Final, NoReturn
 
-from .cli_capture import Source, open_source
+from .cli_capture import Chunk, Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
 from .cli_decode import FORMATS, CaptureDecoder, ColumnarCsv, Progress, RowWriter, kinds, output_table, summary
 from .commands import COMMANDS
@@ -136,30 +136,18 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
     decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=known, strict=args.strict)
     writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
-    progress = Progress(source)
-    failure: CliError | None = None
-    try:
-        try:
-            for chunk in source.chunks(follow=args.follow):
-                for message in decoder.feed(chunk):
-                    if message.kind in wanted:
-                        writer.write(message)
-                progress.update()
-                if args.follow:
-                    sys.stdout.flush()
-        except KeyboardInterrupt:
-            pass
-        except CliError as exc:
-            failure = exc
+
+    def feed(chunk: Chunk) -> None:
+        for message in decoder.feed(chunk):
+            if message.kind in wanted:
+                writer.write(message)
+
+    def finish() -> None:
         for message in decoder.finish():
             if message.kind in wanted:
                 writer.write(message)
-        sys.stdout.flush()
-    except BrokenPipeError:
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-    finally:
-        progress.done()
-        source.close()
+
+    failure = _drive(source, feed, finish, follow=args.follow)
     for line in summary(decoder, "ilahrs decode"):
         print(line, file=sys.stderr)
     if failure is not None:
@@ -171,24 +159,41 @@ def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str
     """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar (lenient decoding
     only: `--strict` goes message by message)."""
     decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
+    failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, follow=False)
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    if failure is not None:
+        raise failure
+    return 0
+
+
+def _drive(
+    source: Source, feed: Callable[[Chunk], None], finish: Callable[[], None], *, follow: bool
+) -> CliError | None:
+    """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input, a
+    closed pipe ends the output quietly. Returns the error that cut the capture short, if any (the
+    messages before it are written)."""
     progress = Progress(source)
+    failure: CliError | None = None
     try:
         try:
-            for chunk in source.chunks():
-                decoder.feed(chunk.data)
+            for chunk in source.chunks(follow=follow):
+                feed(chunk)
                 progress.update()
+                if follow:
+                    sys.stdout.flush()
         except KeyboardInterrupt:
             pass
-        decoder.finish()
+        except CliError as exc:
+            failure = exc
+        finish()
         sys.stdout.flush()
     except BrokenPipeError:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
     finally:
         progress.done()
         source.close()
-    for line in summary(decoder, "ilahrs decode"):
-        print(line, file=sys.stderr)
-    return 0
+    return failure
 
 
 def _record(args: argparse.Namespace) -> int:
