@@ -8,6 +8,7 @@ import random
 import sys
 from typing import Any
 
+import damage_support
 import pytest
 
 import ilahrs
@@ -34,13 +35,8 @@ def damaged_capture(cls: type[ilahrs.Payload], count: int, rng: random.Random) -
     for index in range(count):
         good = frame(cls, rng)
         choice = index % 9
-        if choice == 0:
-            parts.append(rng.randbytes(rng.randrange(1, 40)))
-        elif choice == 1:
-            parts.append(good[: rng.randrange(1, len(good))])
-        elif choice == 2:
-            spot = rng.randrange(len(good))
-            parts.append(good[:spot] + bytes([good[spot] ^ 0x10]) + good[spot + 1 :])
+        if choice < damage_support.KINDS:
+            parts.append(damage_support.damage(good, choice, rng))
         elif choice == 3:
             parts.append(frame(OTHER, rng) + ilahrs.Frame(ilahrs.MessageType.COMMAND, b"\x83").build())
         elif choice == 4:

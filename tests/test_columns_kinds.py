@@ -12,6 +12,7 @@ import subprocess
 import sys
 from typing import Any
 
+import damage_support
 import pytest
 
 import ilahrs
@@ -66,13 +67,8 @@ def mixed_capture(count: int, rng: random.Random) -> bytes:
     for index in range(count):
         good = message(rng)
         choice = index % 11
-        if choice == 0:
-            parts.append(rng.randbytes(rng.randrange(1, 40)))
-        elif choice == 1:
-            parts.append(good[: rng.randrange(1, len(good))])
-        elif choice == 2:
-            spot = rng.randrange(len(good))
-            parts.append(good[:spot] + bytes([good[spot] ^ 0x10]) + good[spot + 1 :])
+        if choice < damage_support.KINDS:
+            parts.append(damage_support.damage(good, choice, rng))
         elif choice == 3:
             parts.append(b"\xaa\x55\x01\x00\xff\x00" + b"$PAHR,1*00\r\n")
         elif choice == 4:
