@@ -97,6 +97,25 @@ STRICT_RESERVED: Final[Mapping[int, int]] = MappingProxyType({1: 0})
 writes in such frames. A decoder asked to be strict refuses a frame of such a type with another reserved
 byte (BAD_RESERVED); without the option any value is accepted."""
 
+UNITS: Final[Mapping[str, str]] = MappingProxyType(
+    {
+        "deg": "degrees",
+        "deg_per_s": "degrees per second",
+        "g": "standard gravity",
+        "nT": "nanotesla",
+        "V": "volts DC",
+        "degC": "degrees Celsius",
+        "one": "dimensionless",
+        "Hz": "hertz",
+        "s": "seconds",
+        "m": "metres",
+        "adc": "ADC codes (no physical scale given by the ICD)",
+        "percent": "percent",
+        "year": "fractional year, see encoding `date`",
+    }
+)
+"""Unit name (a field's `unit`) -> what it measures, as the spec says."""
+
 SERIAL_LINE: Final[Mapping[str, int | str]] = MappingProxyType(
     {"baud_rate": 115200, "data_bits": 8, "parity": "none", "stop_bits": 1}
 )

@@ -15,6 +15,7 @@ from typing import Final, NoReturn
 from .cli_capture import Chunk, Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
 from .cli_decode import FORMATS, CaptureDecoder, ColumnarCsv, Progress, RowWriter, kinds, output_table, summary
+from .cli_plot import plottable
 from .commands import COMMANDS
 from .encodings import VARIANTS
 from .errors import IlahrsError
@@ -106,10 +107,23 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     answer.add_argument("--no", dest="answer", action="store_const", const=False, help="discard without asking")
     _variant(cal)
 
-    plot = commands.add_parser("plot", help="plot fields of a capture to a PNG (needs matplotlib)")
+    fields = ", ".join({name: None for table in plottable().values() for name in table})
+    plot = commands.add_parser(
+        "plot",
+        help="plot fields of a capture to a PNG (needs matplotlib)",
+        description="One panel per quantity (by the fields' units; heading 0-360 apart from signed angles), "
+        "sharing the time axis; lines break at gaps in the output and where heading wraps; multiplexed fields "
+        "(Vdd, Utermo of Table 6.4) are drawn one line per turn.",
+        epilog=f"FIELD: {fields}. Example: ilahrs plot s.pcapng -o s.png --fields heading,pitch,roll,gyro_z",
+    )
     plot.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump")
     plot.add_argument("-o", "--output", required=True, metavar="OUT.png", help="the PNG to write")
-    plot.add_argument("--fields", default="heading,pitch,roll", help="fields to plot (default heading,pitch,roll)")
+    plot.add_argument(
+        "--fields",
+        default="heading,pitch,roll",
+        metavar="FIELD,...",
+        help="fields to plot (default heading,pitch,roll)",
+    )
     plot.add_argument("--size", default="1200x800", metavar="WxH", help="image size in pixels (default 1200x800)")
     _variant(plot)
     _output_format(plot, None)
