@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import math
 import os
 import re
 import sys
@@ -26,6 +27,21 @@ from .errors import IlahrsError
 __all__ = ["COMMANDS_RUN", "OneLineParser", "add_subcommands", "run"]
 
 _EPILOG: Final = "PORT: a device path (/dev/ttyUSB0, the pty `ilahrs simulate` prints) or socket://HOST:PORT."
+_RECORD_EPILOG: Final = f"""{_EPILOG}
+A device path is locked while it is recorded: another ilahrs on the same port is refused.
+
+example:
+  ilahrs record /dev/ttyUSB0 -o s.pcapng --send GetBIT --send "LoadAHRSPar update_rate=50" \\
+      --start AHRScont3 --duration 10
+
+The capture is written beside FILE.pcapng and renamed onto it when the recording ends; if the
+device never answers (a wrong port or --baud), no file is written and FILE.pcapng is untouched.
+A one-line summary (messages, discarded bytes and errors, as `ilahrs decode` counts them) goes to
+standard error.
+
+exit status: 0 at the end of --duration or --count or after Ctrl-C; 2 after SIGTERM (the capture
+kept, the device stopped), when the device is lost or a command fails (the capture kept, a line
+after the summary), and for bad input or a device that does not answer (no file written)."""
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -59,19 +75,69 @@ def _strict(sub: argparse.ArgumentParser) -> None:
     )
 
 
+def _starting() -> str:
+    return ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
+
+
 def _output_format(sub: argparse.ArgumentParser, default: str | None) -> None:
-    starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
-    sub.add_argument("--output-format", metavar="COMMAND", default=default, help=f"the start command ({starting})")
+    sub.add_argument("--output-format", metavar="COMMAND", default=default, help=f"the start command ({_starting()})")
+
+
+def _positive(kind: Callable[[str], float], unit: str) -> Callable[[str], float]:
+    """An argparse type: a finite number above zero of `kind` (int or float)."""
+
+    def parse(text: str) -> float:
+        try:
+            value = kind(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a number of {unit}") from None
+        if not (math.isfinite(value) and value > 0):
+            raise argparse.ArgumentTypeError(f"{text!r}: must be a positive number of {unit}")
+        return value
+
+    parse.__name__ = kind.__name__
+    return parse
 
 
 def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None:
     """Add the parsers of record, decode, send, params, monitor, calibrate and plot."""
-    rec = commands.add_parser("record", help="record a session to pcapng", epilog=_EPILOG)
+    rec = commands.add_parser(
+        "record",
+        help="record a session to pcapng",
+        description="Send Stop, check that the device answers, send each --send command and wait for its\n"
+        "answers, start the --start output, and record both directions with timestamps until\n"
+        "--duration, --count, Ctrl-C or SIGTERM; Stop on exit (also after Ctrl-C and SIGTERM).",
+        epilog=_RECORD_EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     _port(rec)
-    rec.add_argument("-o", "--output", required=True, metavar="FILE.pcapng", help="the capture to write")
-    rec.add_argument("--start", metavar="COMMAND", help="start this output after Stop (e.g. AHRScont3)")
-    rec.add_argument("--duration", type=float, metavar="S", help="stop after S seconds")
-    rec.add_argument("--count", type=int, metavar="N", help="stop after N output messages")
+    rec.add_argument(
+        "-o",
+        "--output",
+        required=True,
+        metavar="FILE.pcapng",
+        help="the capture to write: replaced only when the recording ends, and only if the device answered",
+    )
+    rec.add_argument(
+        "--send",
+        action="append",
+        default=[],
+        metavar='"COMMAND [key=value ...]"',
+        help="send this command (and fields of its parameter block) after Stop and wait for its answers; "
+        "repeat for several, sent in order before --start. LoadAHRSPar keeps the device's values "
+        "of fields not given (read first with ReadAHRSPar)",
+    )
+    rec.add_argument("--start", metavar="COMMAND", help=f"start this output after the --send commands ({_starting()})")
+    rec.add_argument(
+        "--duration",
+        type=_positive(float, "seconds"),
+        metavar="S",
+        help="record S seconds after the --send commands and the --start output's initial alignment "
+        "(default: until Ctrl-C or SIGTERM)",
+    )
+    rec.add_argument(
+        "--count", type=_positive(int, "messages"), metavar="N", help="stop after N output messages (default: no limit)"
+    )
 
     dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
     dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
@@ -213,7 +279,9 @@ def _drive(
 def _record(args: argparse.Namespace) -> int:
     from .cli_device import record
 
-    return record(args.port, args.baud, args.output, start=args.start, duration=args.duration, count=args.count)
+    return record(
+        args.port, args.baud, args.output, start=args.start, duration=args.duration, count=args.count, sends=args.send
+    )
 
 
 def _send(args: argparse.Namespace) -> int:

@@ -8,6 +8,7 @@ Standard library only; pyserial is imported by `ilahrs.serial` when a port is op
 from __future__ import annotations
 
 import difflib
+import errno
 import math
 from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING, Final
@@ -39,6 +40,8 @@ BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
 """The AHRS line's baud rate (section 6): the default of every port argument."""
 SENTENCE_KIND: Final = PahrSentence.IDENTIFIER
 """The message kind of a $PAHR sentence in decoded rows."""
+_BUSY: Final = {errno.EAGAIN, errno.EWOULDBLOCK}
+"""The errno of a port another client holds (AhrsClient locks device paths)."""
 _USW_SEPARATOR: Final = "|"
 _USW_FLAGS: Final = USW_FAILURE_FLAGS.value | USW_WARNING_FLAGS.value
 _USW_NAMES: Final = [(flag.value, flag.name or "") for flag in UswFlag]
@@ -157,7 +160,8 @@ def field_columns(kinds: Iterable[str]) -> list[str]:
 
 def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict: bool = False) -> AhrsClient:
     """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud` (`strict`: see
-    AhrsClient); CliError when the port cannot be opened or pyserial is missing."""
+    AhrsClient); CliError when the port cannot be opened, another process holds it, or pyserial
+    is missing."""
     try:
         from .serial import AhrsClient
     except ImportError as exc:  # pragma: no cover - depends on the environment
@@ -167,6 +171,8 @@ def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict
     except ImportError as exc:
         raise CliError(str(exc)) from exc
     except (OSError, ValueError) as exc:
+        if getattr(exc, "errno", None) in _BUSY:  # the lock AhrsClient takes on a device path
+            raise CliError(f"{port} is in use by another process") from exc
         raise CliError(f"cannot open {port}: {_reason(exc)}") from exc
     if baud != BAUDRATE:
         client._port.baudrate = baud  # the client opens at the spec's rate

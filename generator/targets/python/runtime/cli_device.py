@@ -4,13 +4,20 @@ after Ctrl-C) and turns every failure into one line (CliError)."""
 
 from __future__ import annotations
 
+import math
+import os
+import shlex
+import signal
 import sys
+import tempfile
 import time
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from typing import TYPE_CHECKING, Any, BinaryIO, Final, TextIO
 
+from .cli_capture import Chunk
 from .cli_common import SENTENCE_KIND, CliError, fields_of, lookup, open_client, parse_assignments
+from .cli_decode import CaptureDecoder
 from .codec import Payload
 from .commands import COMMANDS
 from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded
@@ -36,28 +43,6 @@ _SLICE: Final = 0.25
 
 def _now_us() -> int:
     return time.time_ns() // 1000
-
-
-class _Tap:
-    """The client's port, with every chunk read or written also written to a pcapng file."""
-
-    def __init__(self, port: Any, writer: PcapngWriter) -> None:
-        self._port = port
-        self._writer = writer
-
-    def read(self, size: int = 1) -> bytes:
-        data: bytes = self._port.read(size)
-        if data:
-            self._writer.write(data, _now_us(), Direction.INBOUND)
-        return data
-
-    def write(self, data: bytes) -> int | None:
-        written: int | None = self._port.write(data)
-        self._writer.write(data, _now_us(), Direction.OUTBOUND)
-        return written
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._port, name)
 
 
 def _failure(port: str, what: str, exc: IlahrsError) -> CliError:
@@ -91,7 +76,9 @@ def _probe(client: AhrsClient, port: str) -> None:
         client.stop()
         client.firmware_version()
     except IlahrsError as exc:
-        raise CliError(f"{port}: no answer from the AHRS ({exc.detail or exc})") from exc
+        rate = getattr(client._port, "baudrate", client.baud)
+        detail = exc.detail or exc
+        raise CliError(f"{port}: no answer from the AHRS at {rate} baud ({detail}); check the port and --baud") from exc
     except OSError as exc:
         raise CliError(f"{port}: {exc}") from exc
 
@@ -117,6 +104,237 @@ def _event_line(event: HostEvent, variant: Variant) -> str:
 # --- record ----------------------------------------------------------------------------------------
 
 
+class _Terminated(BaseException):
+    """SIGTERM during a recording: it ends as Ctrl-C ends it (Stop sent, the capture kept)."""
+
+
+class _Signals:
+    """Ctrl-C (SIGINT) and SIGTERM during a recording. The first one ends it: while `live`, it
+    raises (KeyboardInterrupt, _Terminated), never in the middle of a chunk being written to the
+    capture (then right after it); later ones, and any after `live` is cleared (the final Stop is
+    draining), are only noted, so the device is always left stopped and the capture whole."""
+
+    def __init__(self) -> None:
+        self.caught: int | None = None
+        self.live = True
+        self.busy = False
+        self._raised = False
+        self._previous: dict[int, Any] = {}
+
+    def __enter__(self) -> _Signals:
+        try:
+            for number in (signal.SIGINT, signal.SIGTERM):
+                self._previous[number] = signal.signal(number, self._handler)
+        except ValueError:  # not the main thread: the signals stay as they are
+            pass
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for number, previous in self._previous.items():
+            signal.signal(number, previous)
+
+    def _handler(self, number: int, frame: object) -> None:
+        if self.caught is None:
+            self.caught = number
+        if not self.busy:
+            self.check()
+
+    def check(self) -> None:
+        """Raise for the first signal caught, once, while live."""
+        if self.caught is not None and self.live and not self._raised:
+            self._raised = True
+            raise _Terminated if self.caught == signal.SIGTERM else KeyboardInterrupt
+
+
+class _Capture:
+    """A pcapng capture written to a temporary file beside `path`: `keep()` renames it onto `path`,
+    `discard()` removes it, so a file already at `path` is untouched until the recording has data
+    to replace it with. Every chunk is also decoded as `ilahrs decode` decodes the file
+    (CaptureDecoder), so the summary counts what the capture holds."""
+
+    def __init__(self, path: str, port: str, baud: int, signals: _Signals) -> None:
+        self.path = path
+        self.decoder = CaptureDecoder(context=True)
+        self._signals = signals
+        if os.path.isdir(path):
+            raise CliError(f"{path}: is a directory")
+        folder = os.path.dirname(os.path.abspath(path))
+        try:
+            handle, self._temporary = tempfile.mkstemp(prefix=f".{os.path.basename(path)}.", suffix=".part", dir=folder)
+        except OSError as exc:
+            raise CliError(f"{path}: cannot write there: {exc.strerror or exc}") from exc
+        self._stream: BinaryIO = os.fdopen(handle, "wb")
+        self.writer = PcapngWriter(
+            self._stream,
+            port=port,
+            baud=baud,
+            data_bits=int(SERIAL_LINE["data_bits"]),
+            parity=str(SERIAL_LINE["parity"]),
+            stop_bits=int(SERIAL_LINE["stop_bits"]),
+        )
+
+    def write(self, data: bytes, direction: Direction) -> None:
+        """One chunk, stamped now, to the file and the decoder (a signal waits until both have it)."""
+        stamp = time.time_ns() // 1000
+        self._signals.busy = True
+        try:
+            self.writer.write(data, stamp, direction)
+            self.decoder.feed(Chunk(stamp / 1_000_000, direction, bytes(data)))
+        finally:
+            self._signals.busy = False
+        self._signals.check()
+
+    def keep(self) -> tuple[int, int, int]:
+        """Rename the capture onto `path` (with the mode a new file gets); its messages, discarded
+        bytes and decode errors, as `ilahrs decode` counts them."""
+        self.decoder.finish()
+        self._stream.close()
+        mask = os.umask(0)
+        os.umask(mask)
+        try:
+            os.chmod(self._temporary, 0o666 & ~mask)
+            os.replace(self._temporary, self.path)
+        except OSError as exc:
+            raise CliError(f"{self.path}: {exc.strerror or exc}; the capture is in {self._temporary}") from exc
+        return sum(self.decoder.counts.values()), self.decoder.discarded, len(self.decoder.errors)
+
+    def discard(self) -> None:
+        self._stream.close()
+        with suppress(OSError):
+            os.remove(self._temporary)
+
+
+class _Tap:
+    """The client's port, with every chunk read or written also written to the capture."""
+
+    def __init__(self, port: Any, capture: _Capture) -> None:
+        self._port = port
+        self._capture = capture
+
+    def read(self, size: int = 1) -> bytes:
+        data: bytes = self._port.read(size)
+        if data:
+            self._capture.write(data, Direction.INBOUND)
+        return data
+
+    def write(self, data: bytes) -> int | None:
+        written: int | None = self._port.write(data)
+        self._capture.write(data, Direction.OUTBOUND)
+        return written
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._port, name)
+
+
+def _planned(text: str) -> tuple[str, dict[str, object]]:
+    """A --send argument ("COMMAND key=value ...") -> the command and its raw field values,
+    checked before the port is opened."""
+    try:
+        words = shlex.split(text)
+    except ValueError as exc:
+        raise CliError(f"--send {text!r}: {exc}") from exc
+    if not words:
+        raise CliError("--send needs a command name")
+    name = lookup("command", words[0], COMMANDS)
+    table_name = COMMANDS[name].parameter_block
+    if table_name is None:
+        if words[1:]:
+            raise CliError(f"{name} takes no parameter block, so no key=value")
+        return name, {}
+    table = PAYLOADS[table_name]
+    values = parse_assignments(table, words[1:])
+    if name != LOAD_PARAMETERS:  # the parameters are checked once merged with the device's
+        try:
+            table.from_raw(values)
+        except IlahrsError as exc:
+            raise CliError(f"{exc.field or table_name}: {exc.detail or exc}") from exc
+    return name, values
+
+
+def _converse(client: AhrsClient, port: str, plan: Sequence[tuple[str, dict[str, object]]], start: str | None) -> None:
+    """Send each planned command in order and wait for its answers (a command that starts an
+    output: also its initial alignment); then start `start`."""
+    for name, values in plan:
+        try:
+            if name == LOAD_PARAMETERS:  # fields not given keep the device's values
+                client.load_parameters(client.read_parameters().raw() | values)
+            elif COMMANDS[name].starts_mode is not None:
+                client.start(name)
+            else:
+                table_name = COMMANDS[name].parameter_block
+                client.request(name, None if table_name is None else PAYLOADS[table_name].from_raw(values))
+        except IlahrsError as exc:
+            raise _failure(port, name, exc) from exc
+    if start is not None:
+        try:
+            client.start(start)
+        except IlahrsError as exc:
+            raise _failure(port, start, exc) from exc
+
+
+def _listen(client: AhrsClient, duration: float | None, count: int | None) -> None:
+    """Record until `duration` seconds have passed or `count` output messages have come."""
+    end = None if duration is None else time.monotonic() + duration
+    outputs = 0
+    while (end is None or time.monotonic() < end) and (count is None or outputs < count):
+        outputs += sum(1 for e in client.poll(0.05) if isinstance(e, Output) and not e.late)
+
+
+def _plan(
+    start: str | None, duration: float | None, count: int | None, sends: Sequence[str]
+) -> tuple[str | None, list[tuple[str, dict[str, object]]]]:
+    """The output command and the --send commands of a recording, every argument checked."""
+    command = None
+    if start is not None:
+        starting = [n for n, info in COMMANDS.items() if info.starts_output is not None]
+        command = lookup("output command", start, starting)
+    if duration is not None and not (math.isfinite(duration) and duration > 0):
+        raise CliError(f"--duration {duration}: not a positive number of seconds")
+    if count is not None and count <= 0:
+        raise CliError(f"--count {count}: not a positive number of messages")
+    return command, [_planned(text) for text in sends]
+
+
+def _recording(
+    capture: _Capture, signals: _Signals, port: str, baud: int, talk: Callable[[AhrsClient], None]
+) -> CliError | None:
+    """Open the port, probe the device, then `talk`; Stop and close, however it ends. Returns the
+    error that ended a recording that has data (a lost device, a failed command); raises it when
+    the device never answered (the capture then discarded)."""
+    answered = False
+    try:
+        try:
+            with _session(port, baud) as client:
+                client._port = _Tap(client._port, capture)  # every chunk goes to the capture
+                try:
+                    _probe(client, port)
+                    answered = True
+                    talk(client)
+                finally:
+                    signals.live = False  # the final Stop drains whatever comes, whatever comes next
+        except (KeyboardInterrupt, _Terminated) as exc:
+            signals.caught = signals.caught or (signal.SIGTERM if isinstance(exc, _Terminated) else signal.SIGINT)
+            if not answered:
+                raise
+        except CliError as exc:
+            if not answered:
+                raise
+            return exc
+        except OSError as exc:
+            if not answered:
+                raise CliError(f"{port}: {exc.strerror or exc}") from exc
+            return CliError(f"{port}: the device was lost ({exc.strerror or exc})")
+    except BaseException:
+        if answered:
+            capture.keep()
+        else:
+            capture.discard()
+        if signals.caught == signal.SIGTERM:
+            raise CliError("terminated before the device answered") from None
+        raise
+    return None
+
+
 def record(
     port: str,
     baud: int,
@@ -125,52 +343,37 @@ def record(
     start: str | None,
     duration: float | None,
     count: int | None,
+    sends: Sequence[str] = (),
     out: TextIO = sys.stderr,
 ) -> int:
-    """Stop, optionally start an output, and record both directions until the duration, the count
-    or Ctrl-C; Stop on exit; print a one-line summary."""
-    command = None
-    if start is not None:
-        starting = [n for n, info in COMMANDS.items() if info.starts_output is not None]
-        command = lookup("output command", start, starting)
-    try:
-        stream: BinaryIO = open(output, "wb")  # noqa: SIM115 - closed below
-    except OSError as exc:
-        raise CliError(f"{output}: {exc.strerror or exc}") from exc
-    outputs = 0
-    interrupted = False
-    with stream:
-        writer = PcapngWriter(
-            stream,
-            port=port,
-            baud=baud,
-            data_bits=int(SERIAL_LINE["data_bits"]),
-            parity=str(SERIAL_LINE["parity"]),
-            stop_bits=int(SERIAL_LINE["stop_bits"]),
-        )
-        with _session(port, baud) as client:
-            client._port = _Tap(client._port, writer)  # every chunk goes to the capture
-            try:
-                _probe(client, port)
-                if command is not None:
-                    try:
-                        client.start(command)
-                    except IlahrsError as exc:
-                        raise _failure(port, command, exc) from exc
-                end = None if duration is None else time.monotonic() + duration
-                while (end is None or time.monotonic() < end) and (count is None or outputs < count):
-                    outputs += sum(1 for e in client.poll(0.05) if isinstance(e, Output) and not e.late)
-            except KeyboardInterrupt:
-                interrupted = True
-            finally:
-                summary = (len(client.received), client.discarded, len(client.errors))
-    messages, discarded, errors = summary
-    stopped = " (interrupted)" if interrupted else ""
+    """Stop, check the device answers, send each of `sends` ("COMMAND key=value ...") and wait for
+    its answers, optionally start an output, and record both directions until the duration
+    (counted from then), the count, Ctrl-C, SIGTERM or the loss of the device; Stop on exit; print
+    a one-line summary (what `ilahrs decode` finds in the capture) to `out`.
+
+    The capture is written beside `output` and renamed onto it when the recording ends, kept
+    whenever the device has answered; a recording that fails before (a wrong port, a silent
+    device) leaves no file and `output` as it was. Returns 0, or 2 after SIGTERM; the loss of the
+    device, or a command that fails, is a CliError after the summary."""
+    command, plan = _plan(start, duration, count, sends)
+
+    def talk(client: AhrsClient) -> None:
+        _converse(client, port, plan, command)
+        _listen(client, duration, count)
+
+    with _Signals() as signals:
+        capture = _Capture(output, port, baud, signals)
+        failure = _recording(capture, signals, port, baud, talk)
+        messages, discarded, errors = capture.keep()
+    endings = {int(signal.SIGINT): " (interrupted)", int(signal.SIGTERM): " (terminated)"}
+    ending = endings.get(signals.caught or 0, "")
     print(
-        f"ilahrs record: {messages} messages, {discarded} bytes discarded, {errors} errors -> {output}{stopped}",
+        f"ilahrs record: {messages} messages, {discarded} bytes discarded, {errors} errors -> {output}{ending}",
         file=out,
     )
-    return 0
+    if failure is not None:
+        raise failure
+    return 2 if signals.caught == signal.SIGTERM else 0
 
 
 # --- send --------------------------------------------------------------------------------------------

@@ -25,12 +25,17 @@ never came) are given up once reads have returned nothing for IDLE_TIMEOUT. The 
 until a read finds bytes, never past them: an answer that begins after a pause of any length, the
 caller's included, is read whole (`Host.receive(data, within=...)`).
 `strict`: refuse data frames whose reserved byte is not the AHRS's (E42; they count as discarded).
+
+A device path is opened for this client alone (POSIX: pyserial's `exclusive`, an flock on the
+port): while it is open, opening the same port again, from this process or another, raises
+`serial.SerialException` with errno EAGAIN. A socket:// URL is not locked.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import importlib
+import os
 import time
 from collections import deque
 from collections.abc import Callable, Iterator, Mapping
@@ -160,6 +165,8 @@ class AhrsClient:
             line["baudrate"] = require_int(baud, "baud", 1, 10_000_000)
         self.baud = int(str(line["baudrate"]))
         """The line's baud rate (default: the spec's)."""
+        if os.name == "posix" and "://" not in port:
+            line["exclusive"] = True  # flock: a second process is refused the port, not given half its bytes
         self._port = _pyserial().serial_for_url(port, timeout=_POLL, write_timeout=5.0, **line)
 
     # --- Lifetime ----------------------------------------------------------------------------
