@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from test_cli import ILAHRS, Simulator, assert_stopped, decoded, ilahrs, simulator, written_intact
 
-from ilahrs import PAYLOADS
+from ilahrs import PAYLOADS, StreamDecoder
 from ilahrs.commands import COMMANDS
 from ilahrs.roles import LOAD_PARAMETERS, READ_PARAMETERS
 
@@ -268,3 +268,21 @@ def test_duration_counts_from_the_end_of_the_initial_alignment(tmp_path: Path) -
     last = max(float(str(r["time"])) for r in rows if r["kind"] == "orientation_sensors")
     assert aligned - started >= 1.9  # the alignment is not counted ...
     assert last - aligned >= 1.4  # ... the 1.5 s come after it (less one output period)
+
+
+def test_each_packet_is_a_chunk_as_it_crossed_the_line(tmp_path: Path) -> None:
+    """A packet per read, never the first byte of a message in a packet of its own: with the
+    simulator writing each message whole, every inbound packet holds whole messages."""
+    from ilahrs.pcapng import Direction, read
+
+    capture = tmp_path / "s.pcapng"
+    with simulator(tmp_path) as sim:
+        result = ilahrs("record", sim.port, "-o", str(capture), "--start", "AHRScont3", "--count", "50")
+        assert result.returncode == 0, result.stderr
+    with capture.open("rb") as stream:
+        inbound = [p.data for p in read(stream).packets if p.direction == Direction.INBOUND]
+    assert len(inbound) >= 50 and min(len(p) for p in inbound) > 1
+    decoder = StreamDecoder()
+    for packet in inbound:
+        messages = decoder.feed(packet)
+        assert messages and decoder.pending == 0, packet.hex()

@@ -187,6 +187,10 @@ class _Capture:
             self._signals.busy = False
         self._signals.check()
 
+    def tap(self, data: bytes, outbound: bool) -> None:
+        """AhrsClient's tap: each chunk as it crossed the line."""
+        self.write(data, Direction.OUTBOUND if outbound else Direction.INBOUND)
+
     def keep(self) -> tuple[int, int, int]:
         """Rename the capture onto `path` (with the mode a new file gets); its messages, discarded
         bytes and decode errors, as `ilahrs decode` counts them."""
@@ -205,28 +209,6 @@ class _Capture:
         self._stream.close()
         with suppress(OSError):
             os.remove(self._temporary)
-
-
-class _Tap:
-    """The client's port, with every chunk read or written also written to the capture."""
-
-    def __init__(self, port: Any, capture: _Capture) -> None:
-        self._port = port
-        self._capture = capture
-
-    def read(self, size: int = 1) -> bytes:
-        data: bytes = self._port.read(size)
-        if data:
-            self._capture.write(data, Direction.INBOUND)
-        return data
-
-    def write(self, data: bytes) -> int | None:
-        written: int | None = self._port.write(data)
-        self._capture.write(data, Direction.OUTBOUND)
-        return written
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._port, name)
 
 
 def _planned(text: str) -> tuple[str, dict[str, object]]:
@@ -308,7 +290,7 @@ def _recording(
     try:
         try:
             with _session(port, baud) as client:
-                client._port = _Tap(client._port, capture)  # every chunk goes to the capture
+                client.tap = capture.tap  # every chunk read or written goes to the capture
                 try:
                     _probe(client, port)
                     answered = True
