@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/serial.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
@@ -274,6 +274,13 @@ class AhrsClient:
         command or a block with a field its table does not have."""
         result: list[HostEvent] = self._retry(command, lambda: self._request(command, block))
         return result
+
+    def send(self, command: str, block: Payload | Mapping[str, object] | None = None) -> None:
+        """Send `command` (and its parameter block) without waiting: its answers come as events from
+        `poll()` (an answer that does not come, as a ProtocolError). Refused (IlahrsError, nothing
+        sent) while answers to the last command are owed or when the device ignores the command in
+        its state (Host.send). For a steady request rate, as `ilahrs monitor` polls GET_DATA."""
+        self._write(self.host.send(command, block))
 
     def _request(self, command: str, block: Payload | Mapping[str, object] | None) -> list[HostEvent]:
         info = COMMANDS.get(command) if isinstance(command, str) else None

@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 
 from .cli import COMMANDS_RUN, OneLineParser, add_subcommands, run
+from .cli_common import CliError, variant_named
 from .conformance import add_arguments as conformance_arguments
 from .conformance import run as run_conformance
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
@@ -37,12 +38,24 @@ def _parser() -> argparse.ArgumentParser:
     sim = commands.add_parser(
         "simulate",
         help="run a virtual AHRS on a pseudo-terminal (default) or a loopback TCP port",
-        description="Run a virtual AHRS. The first line of output is the device path (or HOST:PORT with --tcp); "
-        f"connect at {BAUDRATE} baud 8N1. Stop with Ctrl-C or SIGTERM.",
+        description="Run a virtual AHRS. The first line of output is the port a client opens: the device path, "
+        f"or socket://HOST:PORT with --tcp; connect at {BAUDRATE} baud 8N1. Stop with Ctrl-C or SIGTERM.",
+        epilog="With --tcp, clients are served one at a time, one after another, until the simulator is "
+        "stopped; the device carries on between them (state, parameters and clock; its output is lost "
+        "while nobody is connected).",
     )
-    sim.add_argument("--tcp", metavar="HOST:PORT", help="serve one client on a loopback address (port 0: any port)")
+    sim.add_argument(
+        "--tcp",
+        metavar="HOST:PORT",
+        help="serve a loopback address instead of a pty (port 0: any free port), one client at a time",
+    )
     sim.add_argument("--seed", type=int, default=0, help="seed of the motion, noise, calibration and faults")
-    sim.add_argument("--variant", choices=sorted(VARIANTS), default=DEFAULT_VARIANT, help="device variant (KG, KA)")
+    sim.add_argument(
+        "--variant",
+        metavar="NAME",
+        default=DEFAULT_VARIANT,
+        help=f"device variant, its scale factors KG and KA ({', '.join(VARIANTS)}; default {DEFAULT_VARIANT})",
+    )
     sim.add_argument("--firmware", default=DEFAULT_FIRMWARE, help=f"firmware version (default {DEFAULT_FIRMWARE})")
     sim.add_argument("--firmware-text", help=f"the {FIRMWARE} answer")
     sim.add_argument("--device-id", default=DEFAULT_DEVICE_ID, help=f"the device id of {READ_PARAMETERS}")
@@ -60,7 +73,13 @@ def _parser() -> argparse.ArgumentParser:
     )
     sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
     sim.add_argument("--record", metavar="FILE.pcapng", help="record both directions with timestamps as pcapng")
-    commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
+    commands.add_parser(
+        "diagram",
+        help="print the device state machine as a Mermaid diagram",
+        description="Print the device's state machine (ilahrs.statemachine, from the spec) as a Mermaid "
+        "stateDiagram on standard output: every state, and every transition with the event and what "
+        "the AHRS sends.",
+    )
     add_subcommands(commands)
     conformance = commands.add_parser(
         "conformance",
@@ -98,8 +117,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         sys.stdout.write(mermaid())
         return 0
     try:
+        args.variant = variant_named(args.variant).name
         device = _device(args)
-    except IlahrsError as exc:
+    except (CliError, IlahrsError) as exc:
         print(f"ilahrs simulate: {exc}", file=sys.stderr)
         return 2
     faults = Faults(args.corrupt_rate, args.drop_rate, args.garbage_rate, args.seed)

@@ -272,6 +272,13 @@ class AhrsClient:
         result: list[HostEvent] = self._retry(command, lambda: self._request(command, block))
         return result
 
+    def send(self, command: str, block: Payload | Mapping[str, object] | None = None) -> None:
+        """Send `command` (and its parameter block) without waiting: its answers come as events from
+        `poll()` (an answer that does not come, as a ProtocolError). Refused (IlahrsError, nothing
+        sent) while answers to the last command are owed or when the device ignores the command in
+        its state (Host.send). For a steady request rate, as `ilahrs monitor` polls GET_DATA."""
+        self._write(self.host.send(command, block))
+
     def _request(self, command: str, block: Payload | Mapping[str, object] | None) -> list[HostEvent]:
         info = COMMANDS.get(command) if isinstance(command, str) else None
         if info is None:
