@@ -176,7 +176,7 @@ def test_send_params_and_calibrate_change_the_device(tmp_path: Path) -> None:
         assert "update_rate = 50" in result.stdout
         shown = ilahrs("params", sim.port).stdout
         assert "update_rate = 50" in shown and "latitude = 38.5" in shown
-        result = ilahrs("calibrate", sim.port, "2d", "--accumulation", "1", "--yes")
+        result = ilahrs("calibrate", sim.port, "2d", "--accumulation", "2", "--yes")
         assert result.returncode == 0, result.stderr
         assert "Calibration result (Table 6.14)" in result.stdout and "accepted" in result.stdout
         status = ilahrs("send", sim.port, "GetClbRes")

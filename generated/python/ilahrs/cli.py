@@ -13,16 +13,20 @@ import math
 import os
 import re
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Final, NoReturn
 
 from .cli_capture import Chunk, Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
 from .cli_decode import FORMATS, CaptureDecoder, ColumnarCsv, Progress, RowWriter, kinds, output_table, summary
+from .cli_device import DEFAULT_ACCUMULATION_S
 from .cli_plot import plottable
 from .commands import COMMANDS
 from .encodings import VARIANTS
 from .errors import IlahrsError
+from .payloads import PAYLOADS
+from .roles import LOAD_PARAMETERS
+from .statemachine import TIMER_FIELDS
 
 __all__ = ["COMMANDS_RUN", "OneLineParser", "add_subcommands", "run"]
 
@@ -58,13 +62,31 @@ class OneLineParser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: {message}\n")
 
 
+def _baud(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a baud rate (a positive integer such as {BAUDRATE})")
+    return value
+
+
 def _port(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("port", metavar="PORT", help="device path or socket://HOST:PORT")
-    sub.add_argument("--baud", type=int, default=BAUDRATE, help=f"baud rate (default {BAUDRATE})")
+    sub.add_argument("--baud", type=_baud, default=BAUDRATE, help=f"baud rate (default {BAUDRATE})")
 
 
 def _variant(sub: argparse.ArgumentParser) -> None:
-    sub.add_argument("--variant", metavar="NAME", help=f"device variant for scaled rates ({', '.join(VARIANTS)})")
+    names = ", ".join(VARIANTS)
+    sub.add_argument(
+        "--variant", metavar="NAME", help=f"device variant for scaled rates ({names}; default {next(iter(VARIANTS))})"
+    )
+
+
+def _words(words: Iterable[str]) -> str:
+    """Names for an epilog, wrapped as argparse wraps text."""
+    return ", ".join(words)
 
 
 def _strict(sub: argparse.ArgumentParser) -> None:
@@ -142,23 +164,15 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
     dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
     dec.add_argument("--to", choices=FORMATS, default="text", help="output format (default text)")
-    dec.add_argument("--types", metavar="KIND,...", help="only these message kinds (table or command names, PAHR)")
+    dec.add_argument("--types", metavar="KIND,...", help=f"only these message kinds (default all): {_words(kinds())}")
     _variant(dec)
     dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
     dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
     _strict(dec)
     _output_format(dec, None)
 
-    snd = commands.add_parser("send", help="send one command and print the answer", epilog=_EPILOG)
-    _port(snd)
-    snd.add_argument("name", metavar="COMMAND", help="ICD command name (e.g. GetBIT, AHRScont3)")
-    snd.add_argument("assignments", nargs="*", metavar="key=value", help="fields of the command's parameter block")
-    _variant(snd)
-
-    par = commands.add_parser("params", help="print parameters; `set key=value ...` changes them", epilog=_EPILOG)
-    _port(par)
-    par.add_argument("action", nargs="*", metavar="set key=value", help="set key=value ...")
-    _variant(par)
+    _send_parser(commands)
+    _params_parser(commands)
 
     mon = commands.add_parser("monitor", help="live full-screen view of the output (q quits)", epilog=_EPILOG)
     _port(mon)
@@ -166,15 +180,7 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     _variant(mon)
     _strict(mon)
 
-    cal = commands.add_parser("calibrate", help="guided hard/soft-iron calibration", epilog=_EPILOG)
-    _port(cal)
-    cal.add_argument("kind", metavar="2d|3d|2d2t", help="calibration type")
-    cal.add_argument("--accumulation", type=int, metavar="S", help="accumulation time per run, seconds")
-    cal.add_argument("--runs", type=int, default=2, metavar="N", help="runs of a 2D-2T calibration (default 2)")
-    answer = cal.add_mutually_exclusive_group()
-    answer.add_argument("--yes", dest="answer", action="store_const", const=True, help="accept without asking")
-    answer.add_argument("--no", dest="answer", action="store_const", const=False, help="discard without asking")
-    _variant(cal)
+    _calibrate_parser(commands)
 
     fields = ", ".join({name: None for table in plottable().values() for name in table})
     plot = commands.add_parser(
@@ -196,6 +202,85 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     plot.add_argument("--size", default="1200x800", metavar="WxH", help="image size in pixels (default 1200x800)")
     _variant(plot)
     _output_format(plot, None)
+
+
+def _send_parser(commands: argparse._SubParsersAction[OneLineParser]) -> None:
+    blocks: dict[str, list[str]] = {}
+    for name, info in COMMANDS.items():
+        if info.parameter_block is not None:
+            blocks.setdefault(info.parameter_block, []).append(name)
+    keys = "; ".join(
+        f"{', '.join(names)}: {_words(f.name for f in PAYLOADS[table].FIELDS if f.type != 'reserved') or 'none'}"
+        for table, names in blocks.items()
+    )
+    snd = commands.add_parser(
+        "send",
+        help="send one command and print the answer",
+        description="Send one command to the device in whatever state it is in and print the decoded answer "
+        "(status 2 when the device ignores the command in its state). A command that takes a parameter block "
+        "sends the table's defaults for the fields not given, except LoadAHRSPar, which replaces every "
+        "parameter: give every field, add --defaults, or use `ilahrs params PORT set key=value`.",
+        epilog=f"COMMAND: {_words(COMMANDS)}. key=value: {keys}. {_EPILOG}",
+    )
+    _port(snd)
+    snd.add_argument("name", metavar="COMMAND", help="ICD command name (e.g. GetBIT, AHRScont3)")
+    snd.add_argument("assignments", nargs="*", metavar="key=value", help="fields of the command's parameter block")
+    snd.add_argument(
+        "--defaults", action="store_true", help=f"let {LOAD_PARAMETERS} send the fields not given as their defaults"
+    )
+    _variant(snd)
+    starting = [n for n, i in COMMANDS.items() if i.starts_output is not None]
+    snd.add_argument(
+        "--output-format",
+        metavar="COMMAND",
+        help=f"the command that started the device's output, to decode an output block ({', '.join(starting)}; "
+        "default: the format the block fits, raw when several do)",
+    )
+
+
+def _params_parser(commands: argparse._SubParsersAction[OneLineParser]) -> None:
+    load = PAYLOADS[COMMANDS[LOAD_PARAMETERS].parameter_block or ""]
+    par = commands.add_parser(
+        "params",
+        help="print parameters; `set key=value ...` changes them",
+        description="Print the parameters the device stores; `set key=value ...` reads them, changes the keys "
+        "given, loads them and reads them back (6.3.6). Floats print as the shortest text of their float32, "
+        "dates as YYYY-MM-DD (set takes a date or the raw number).",
+        epilog=f"key: {_words(f.name for f in load.FIELDS if f.type != 'reserved')}. {_EPILOG}",
+    )
+    _port(par)
+    par.add_argument("action", nargs="*", metavar="set key=value", help="set key=value ...")
+    _variant(par)
+
+
+def _calibrate_parser(commands: argparse._SubParsersAction[OneLineParser]) -> None:
+    cal = commands.add_parser("calibrate", help="guided hard/soft-iron calibration", epilog=_EPILOG)
+    _port(cal)
+    cal.add_argument("kind", metavar="2d|3d|2d2t", help="calibration type")
+    table, field = TIMER_FIELDS["accumulation"]
+    span = next(f for f in PAYLOADS[table].FIELDS if f.name == field)
+    cal.add_argument(
+        "--accumulation",
+        type=int,
+        default=DEFAULT_ACCUMULATION_S,
+        metavar="S",
+        help=f"accumulation time per run, seconds, {span.low:g}..{span.high:g}: long enough for a slow full "
+        f"turn (default {DEFAULT_ACCUMULATION_S})",
+    )
+    place = "(default: what the device stores)"
+    cal.add_argument("--latitude", type=float, metavar="DEG", help=f"latitude of the calibration {place}")
+    cal.add_argument("--longitude", type=float, metavar="DEG", help=f"longitude of the calibration {place}")
+    cal.add_argument("--altitude", type=float, metavar="M", help=f"altitude of the calibration {place}")
+    cal.add_argument("--date", metavar="YYYY-MM-DD", help=f"date of the calibration {place}")
+    cal.add_argument("--runs", type=int, default=2, metavar="N", help="runs of a 2D-2T calibration (default 2)")
+    answer = cal.add_mutually_exclusive_group()
+    answer.add_argument(
+        "--yes", dest="answer", action="store_const", const=True, help="accept without asking (default: ask)"
+    )
+    answer.add_argument(
+        "--no", dest="answer", action="store_const", const=False, help="discard without asking (default: ask)"
+    )
+    _variant(cal)
 
 
 def _decode(args: argparse.Namespace) -> int:
@@ -287,7 +372,18 @@ def _record(args: argparse.Namespace) -> int:
 def _send(args: argparse.Namespace) -> int:
     from .cli_device import send
 
-    return send(args.port, args.baud, args.name, args.assignments, variant=variant_named(args.variant), out=sys.stdout)
+    variant = variant_named(args.variant)
+    starting = [n for n, i in COMMANDS.items() if i.starts_output is not None]
+    return send(
+        args.port,
+        args.baud,
+        args.name,
+        args.assignments,
+        variant=variant,
+        out=sys.stdout,
+        defaults=args.defaults,
+        output=None if args.output_format is None else lookup("output command", args.output_format, starting),
+    )
 
 
 def _params(args: argparse.Namespace) -> int:
@@ -302,9 +398,10 @@ def _params(args: argparse.Namespace) -> int:
 
 
 def _calibrate(args: argparse.Namespace) -> int:
-    from .cli_device import calibrate
+    from .cli_device import calibrate, calibration_place
 
     variant = variant_named(args.variant)
+    place = calibration_place(args.latitude, args.longitude, args.altitude, args.date)
     return calibrate(
         args.port,
         args.baud,
@@ -314,6 +411,7 @@ def _calibrate(args: argparse.Namespace) -> int:
         answer=args.answer,
         variant=variant,
         out=sys.stdout,
+        place=place,
     )
 
 

@@ -14,14 +14,15 @@ import signal
 import sys
 import tempfile
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager, suppress
 from typing import TYPE_CHECKING, Any, BinaryIO, Final, TextIO
 
+from .anystate import states_hearing
 from .cli_capture import Chunk
 from .cli_common import SENTENCE_KIND, CliError, fields_of, lookup, open_client, parse_assignments
 from .cli_decode import CaptureDecoder
-from .codec import Payload
+from .codec import Payload, date_from_text, field_text
 from .commands import COMMANDS
 from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded
 from .errors import IlahrsError
@@ -31,7 +32,7 @@ from .payloads import PAYLOADS
 from .pcapng import Direction, PcapngWriter
 from .roles import ACCEPT, FINISH, LOAD_PARAMETERS, START_RUN, START_RUNS, STOP
 from .spec import SERIAL_LINE
-from .statemachine import CALIBRATION_TYPES, STATES, TIMER_EVENTS, command_event
+from .statemachine import CALIBRATION_TYPES, INITIAL, TIMER_EVENTS, TIMER_FIELDS, command_event
 from .statemachine import lookup as transition
 
 if TYPE_CHECKING:
@@ -49,7 +50,7 @@ def _now_us() -> int:
 
 
 def _failure(port: str, what: str, exc: IlahrsError) -> CliError:
-    detail = exc.detail or str(exc)
+    detail = (exc.detail or str(exc)).removeprefix(f"{what}: ")  # the client's errors name the command
     return CliError(f"{port}: {what}: {detail}")
 
 
@@ -90,6 +91,11 @@ def _describe(kind: str, data: Payload | PahrSentence | None, variant: Variant) 
     if data is None:
         return kind
     fields = fields_of(data, variant)
+    if not isinstance(data, PahrSentence):  # a float32 as its shortest text, a date as YYYY-MM-DD
+        raw = data.raw()
+        for info in data.FIELDS:
+            if info.name in fields and info.type == "f32" and info.multiplier == 1 and info.divisor == 1:
+                fields[info.name] = field_text(info, raw[info.name])
     return f"{kind} " + " ".join(f"{k}={v}" for k, v in fields.items())
 
 
@@ -364,7 +370,10 @@ def record(
 # --- send --------------------------------------------------------------------------------------------
 
 
-def _block(command: str, assignments: Sequence[str]) -> Payload | None:
+def _block(command: str, assignments: Sequence[str], *, defaults: bool = True) -> Payload | None:
+    """The parameter block `command` takes, from key=value words (the other fields take the
+    table's defaults). The block of LOAD_PARAMETERS replaces every stored parameter: without
+    `defaults`, one that leaves fields to their defaults is refused."""
     table_name = COMMANDS[command].parameter_block
     if table_name is None:
         if assignments:
@@ -372,72 +381,124 @@ def _block(command: str, assignments: Sequence[str]) -> Payload | None:
         return None
     table = PAYLOADS[table_name]
     values = parse_assignments(table, assignments)
+    if command == LOAD_PARAMETERS and not defaults:
+        left = [f.name for f in table.FIELDS if f.type != "reserved" and f.name not in values]
+        if left:
+            changed = " ".join(assignments) or "key=value"
+            raise CliError(
+                f"{command} replaces every parameter: {', '.join(left)} would be sent as defaults; "
+                f"to change only some, run `ilahrs params PORT set {changed}` (or add --defaults)"
+            )
     try:
         return table.from_raw(values)
     except IlahrsError as exc:
         raise CliError(f"{exc.field or table_name}: {exc.detail or exc}") from exc
 
 
-def _believe_valid(client: AhrsClient, command: str) -> None:
-    """A new client believes the device idle: for a command that idle ignores, believe the device
-    is in a state that hears it (the user knows the device's state)."""
-    host = client.host
-    event = command_event(COMMANDS[command].code, host.state) or command
-    if transition(host.state, event) is not None:
-        return
-    for state in STATES:
-        named = command_event(COMMANDS[command].code, state) or command
-        if named == command and transition(state, command) is not None:
-            host.resync(state)
-            return
+def _answering(command: str) -> list[str]:
+    """The states in which the device answers `command`."""
+    code = COMMANDS[command].code
+    return [s for s in states_hearing(command) if (t := transition(s, command_event(code, s) or command)) and t.send]
 
 
-def send(port: str, baud: int, command: str, assignments: Sequence[str], *, variant: Variant, out: TextIO) -> int:
-    """Send one command (and its parameter block); print the decoded answers."""
+def send(
+    port: str,
+    baud: int,
+    command: str,
+    assignments: Sequence[str],
+    *,
+    variant: Variant,
+    out: TextIO,
+    defaults: bool = False,
+    output: str | None = None,
+    err: TextIO = sys.stderr,
+) -> int:
+    """Send one command (and its parameter block) to the device in whatever state it is, and print
+    the decoded answers (AhrsClient.request_any_state). A command the device ignored is one line
+    and status 2; a command heard in idle is then sent again after a Stop (as the client retries).
+    `output`: the command that started the device's output (its blocks of every format have the
+    same size; without it an output block whose format does not show prints raw, E7)."""
     name = lookup("command", command, COMMANDS)
-    block = _block(name, assignments)
+    block = _block(name, assignments, defaults=defaults)
     with _session(port, baud, stop=False) as client:
-        _believe_valid(client, name)
         try:
-            answers = client.request(name, block)
+            reply = client.request_any_state(name, block, output=output)
+            answers = list(reply.answers)
+            if reply.state is None and reply.received and INITIAL in states_hearing(name):
+                print(f"ilahrs send: the device ignored {name} in its state; sent Stop and {name} again", file=err)
+                client.stop()
+                answers = [e for e in client.request(name, block) if not isinstance(e, ProtocolError)]
+            elif reply.state is None:
+                raise CliError(_ignored(port, name, reply.received))
         except IlahrsError as exc:
             raise _failure(port, name, exc) from exc
+        except OSError as exc:
+            raise CliError(f"{port}: {exc}") from exc
         if not answers:
-            print(f"{name}: sent (the command has no answer)", file=out)
+            print(_silent(name, reply.silent), file=out)
+        ambiguous = len(reply.formats) > 1
         for event in answers:
-            if not isinstance(event, ProtocolError):
-                print(_event_line(event, variant), file=out)
+            line = _event_line(event, variant)
+            if ambiguous and isinstance(event, Output):
+                line = f"output raw={event.raw.hex()}"
+            print(line, file=out)
+        if ambiguous:
+            starters = ", ".join(n for n, i in COMMANDS.items() if i.starts_output in reply.formats)
+            formats = ", ".join(reply.formats)
+            print(f"ilahrs send: the output block fits {formats}: --output-format ({starters}) decodes it", file=err)
     return 0
+
+
+def _ignored(port: str, command: str, received: int) -> str:
+    states = ", ".join(states_hearing(command))
+    line = f"{port}: no answer: the device ignores {command} in its state (it acts on it in {states})"
+    if not received:
+        line += "; or nothing is there: check PORT and --baud"
+    return line
+
+
+def _silent(command: str, states: Sequence[str]) -> str:
+    """The line of a command that owes no answer in the states that fit (a state that ignores it
+    looks the same)."""
+    tail = "; any other state ignores it" if not _answering(command) else ""
+    return f"{command}: sent; no answer came (none is due in {', '.join(states)}{tail})"
 
 
 # --- params ----------------------------------------------------------------------------------------
 
 
 def params(port: str, baud: int, assignments: Sequence[str], *, variant: Variant, out: TextIO) -> int:
-    """Print the parameters; with assignments, read-modify-write them (6.3.6) and read back."""
+    """Print the parameters; with assignments, read-modify-write them (6.3.6) and read back. A
+    value counts as taken when the device reads back what the table encodes (a float32: 3.3 is
+    3.299999952316284 on the wire); floats print as the shortest text of their float32, dates as
+    YYYY-MM-DD."""
     load = PAYLOADS[COMMANDS[LOAD_PARAMETERS].parameter_block or ""]
     changes = parse_assignments(load, assignments) if assignments else {}
+    wanted: dict[str, object] = {}
     with _session(port, baud) as client:
         _probe(client, port)
         try:
             current = client.read_parameters()
             if changes:
-                merged = current.raw() | changes
                 names = {f.name for f in load.FIELDS if f.type != "reserved"}
                 try:
-                    load.from_raw({k: v for k, v in merged.items() if k in names})
+                    block = load.from_raw({k: v for k, v in (current.raw() | changes).items() if k in names})
                 except IlahrsError as exc:
                     raise CliError(f"{exc.field or load.NAME}: {exc.detail or exc}") from exc
-                client.load_parameters(merged)
+                wanted = dict(load.parse(block.build()).raw())  # the values as the table encodes them
+                client.load_parameters(block)
                 current = client.read_parameters()
         except IlahrsError as exc:
             raise _failure(port, "parameters", exc) from exc
     now = current.raw()
-    kept = [k for k, v in changes.items() if now.get(k) != v]
+    infos = {f.name: f for f in current.FIELDS}
     for key, value in fields_of(current, variant).items():
-        print(f"{key} = {value}", file=out)
+        text = field_text(infos[key], now[key]) if infos[key].type == "f32" else value
+        print(f"{key} = {text}", file=out)
+    kept = [k for k in changes if now.get(k) != wanted[k]]
     if kept:
-        raise CliError(f"the device did not take {', '.join(f'{k}={changes[k]}' for k in kept)}")
+        asked = ", ".join(f"{k}={field_text(infos[k], wanted[k])}" for k in kept)
+        raise CliError(f"the device did not take {asked}")
     return 0
 
 
@@ -447,8 +508,16 @@ _STEPS: Final = {
     "alignment": "Keep the object still while the AHRS aligns",
     "2d": "Turn the object slowly through at least one full circle, keeping it level",
     "3d": "Turn the object slowly through as many orientations as you can",
-    "2d2t": "Turn the object slowly through a full circle, tilted as for this run",
+    "2d2t": "Turn the object slowly in heading through at least one full circle, keeping the pitch and roll "
+    "of this run's tilt",
+    "2d2t_first": "Tilt the object to the first pitch angle of the calibration, usually the lowest pitch it "
+    "works at (6.4.5)",
+    "2d2t_next": "Tilt the object to the next pitch angle, clearly different from the pitch of the runs before "
+    "(two runs at essentially different pitch angles must succeed, 6.4.5)",
+    "ready": "Press Enter when the object is there: ",
 }
+DEFAULT_ACCUMULATION_S: Final = 60
+"""The default accumulation time of `ilahrs calibrate`, s: time for a slow full turn."""
 
 
 class _Wait:
@@ -485,8 +554,9 @@ class _Wait:
 
 def _show(title: str, block: Payload, variant: Variant, out: TextIO) -> None:
     print(f"{title} ({block.ICD}):", file=out)
+    infos = {f.name: f for f in block.FIELDS}
     for key, value in fields_of(block, variant, raw=True).items():
-        print(f"  {key} = {value}", file=out)
+        print(f"  {key} = {field_text(infos[key], value)}", file=out)
     success = getattr(block, "success", None)
     if isinstance(success, int):
         accuracy = calibration_accuracy_deg(success)
@@ -507,37 +577,78 @@ def _decide(answer: bool | None, ask: Callable[[str], str], out: TextIO) -> bool
     return reply.strip().lower() in ("y", "yes")
 
 
+def _calibration_block(
+    start: str, accumulation: int, place: Mapping[str, object], stored: Mapping[str, object]
+) -> Payload:
+    """The parameter block of `start`: the accumulation time, the position and date stored in the
+    device (`stored`, a parameter block's raw values) under those given (`place`)."""
+    table = PAYLOADS[COMMANDS[start].parameter_block or ""]
+    names = {f.name for f in table.FIELDS if f.type != "reserved"}
+    values = {k: v for k, v in stored.items() if k in names} | dict(place)
+    values[TIMER_FIELDS["accumulation"][1]] = accumulation
+    try:
+        return table.from_raw(values)
+    except IlahrsError as exc:
+        raise CliError(f"{exc.field or table.NAME}: {exc.detail or exc}") from exc
+
+
+def calibration_place(
+    latitude: float | None, longitude: float | None, altitude: float | None, date: str | None
+) -> dict[str, object]:
+    """The raw values of the options of `ilahrs calibrate` that were given (date: YYYY-MM-DD)."""
+    place: dict[str, object] = {"latitude": latitude, "longitude": longitude, "altitude": altitude}
+    if date is not None:
+        try:
+            place["date"] = date_from_text(date)
+        except IlahrsError as exc:
+            raise CliError(f"--date {date}: {exc.detail or exc}") from exc
+    return {k: v for k, v in place.items() if v is not None}
+
+
 def calibrate(
     port: str,
     baud: int,
     kind: str,
     *,
-    accumulation: int | None,
+    accumulation: int = DEFAULT_ACCUMULATION_S,
     runs: int,
     answer: bool | None,
     variant: Variant,
     out: TextIO,
+    place: Mapping[str, object] | None = None,
     ask: Callable[[str], str] = input,
 ) -> int:
     """A guided calibration: what to do at each step, progress, each run's result, the final
-    result, then AcceptClb or ExitClb."""
+    result, then AcceptClb or ExitClb. The calibration block carries the position and date stored
+    in the device, or those in `place` (latitude, longitude, altitude, date: raw values). A
+    failed calibration is never accepted: ExitClb, then CliError (status 2)."""
     start = CALIBRATIONS[lookup("calibration", kind, CALIBRATIONS)]
     table = PAYLOADS[COMMANDS[start].parameter_block or ""]
-    block = _block(start, [f"accumulation_time={accumulation}"] if accumulation is not None else [])
-    assert block is not None
+    given = dict(place or {})
+    _calibration_block(start, accumulation, given, {})  # refuse bad values before opening the port
     word = next(w for w, c in CALIBRATIONS.items() if c == start)
+    interactive = answer is None and sys.stdin.isatty()
     with _session(port, baud) as client:
         _probe(client, port)
         wait = _Wait(client, port, out)
         try:
-            client.read_parameters()  # the alignment time, for the progress
-            print(f"{start}: {table.TITLE} accumulation {block.raw().get('accumulation_time')!s} s", file=out)
+            stored = client.read_parameters()  # the position and date, and the alignment time
+            block = _calibration_block(start, accumulation, given, stored.raw())
+            shown = " ".join(
+                f"{f.name}={field_text(f, block.raw()[f.name])}" for f in table.FIELDS if f.type != "reserved"
+            )
+            print(f"{start}: {table.TITLE}: {shown}", file=out)
             client.request(start, block)
             results: list[Payload] = []
             if start == START_RUNS:
                 run_table = PAYLOADS[COMMANDS[START_RUN].parameter_block or ""]
                 for run in range(1, runs + 1):
-                    print(f"Run {run} of {runs}. {_STEPS['alignment']}.", file=out)
+                    tilt = _STEPS["2d2t_first" if run == 1 else "2d2t_next"]
+                    print(f"Run {run} of {runs}. {tilt}.", file=out)
+                    if interactive:
+                        _ready(ask, out)
+                        client.poll(0)  # the quiet line while the user was asked is past before the answer
+                    print(f"{_STEPS['alignment']}.", file=out)
                     client.request(START_RUN, run_table())
                     wait("alignment", "alignment")
                     print(f"{_STEPS[word]}.", file=out)
@@ -550,10 +661,22 @@ def calibrate(
                 print(f"{_STEPS[word]}.", file=out)
                 final = wait("accumulation", "accumulation")
             _show("Calibration result", final, variant, out)
-            accept = _decide(answer, ask, out)
+            success = getattr(final, "success", None)
+            failed = isinstance(success, int) and not calibration_succeeded(success)
+            accept = not failed and _decide(answer, ask, out)
+            client.poll(0)  # the quiet line while the user was asked is past before the answer
             leave = command_event(COMMANDS[STOP].code, client.host.state) or STOP
             client.request(ACCEPT if accept else leave)
             print("accepted: saved in the AHRS" if accept else "discarded: the AHRS keeps its calibration", file=out)
         except IlahrsError as exc:
             raise _failure(port, start, exc) from exc
+    if failed:
+        raise CliError(f"{port}: {start}: the calibration failed (calibration success {success})")
     return 0
+
+
+def _ready(ask: Callable[[str], str], out: TextIO) -> None:
+    try:
+        ask(_STEPS["ready"])
+    except EOFError:
+        print("", file=out)

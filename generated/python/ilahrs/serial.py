@@ -45,6 +45,7 @@ from collections.abc import Callable, Iterator, Mapping
 from types import TracebackType
 from typing import Any, Final, TypeVar
 
+from .anystate import AnyStateRequest, Reply
 from .commands import COMMAND_SET, COMMANDS, build_command
 from .encodings import CalibrationType
 from .errors import ErrorKind, IlahrsError, brief, require_int, require_seconds, suggest
@@ -325,6 +326,43 @@ class AhrsClient:
                     raise
                 self.stop()
         raise AssertionError("unreachable")
+
+    def request_any_state(
+        self, command: str, block: Payload | Mapping[str, object] | None = None, *, output: str | None = None
+    ) -> Reply:
+        """Send `command` (and its parameter block) to a device whose state the client does not
+        know, and wait until its answers show the state it was in (`ilahrs.anystate`): the
+        decoded answers, or no answer after the reply timeout. Nothing is retried and no Stop
+        is sent, so the device stays in its state. The client then follows the device from the
+        state the answers show (unchanged when none fits). `output`: the output format the device
+        uses, or the command that started it (default: the one this client started, if any)."""
+        host = self.host
+        output = output if output is not None else host.output_format
+        request = AnyStateRequest(
+            command, block, firmware=host.firmware, reply_timeout=host.reply_timeout, output=output
+        )
+        self._queue.clear()
+        self._write(request.data)
+        last = self._clock()
+        while not request.done:
+            data: bytes = self._port.read(max(1, self._port.in_waiting))
+            now = self._clock()
+            request.advance(max(0.0, now - last))  # the quiet line before these bytes came
+            last = now
+            if data:
+                request.receive(data)
+        self._last = last
+        reply = request.reply()
+        answers = tuple(dataclasses.replace(event, at=last) for event in reply.answers)
+        reply = dataclasses.replace(reply, answers=answers)
+        for event in answers:
+            self.events.append(event)
+            raw = getattr(event, "raw", None)
+            if raw:
+                self.received.append(raw)
+        if reply.host is not None:
+            self.host = reply.host
+        return reply
 
     def wait_for(self, predicate: Callable[[HostEvent], bool], timeout: float) -> HostEvent:
         """The first queued or new event that satisfies `predicate`; ClientError after `timeout`

@@ -4,6 +4,7 @@ diagram` (the state machine as a Mermaid diagram). Run `ilahrs simulate --help` 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
@@ -108,6 +109,24 @@ def _device(args: argparse.Namespace) -> Device:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run `ilahrs`: its exit status. A closed standard output (`ilahrs params PORT | head -1`)
+    ends the command with one line on stderr and status 2, never a traceback."""
+    try:
+        status = _main(argv)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to write at exit
+        print(f"ilahrs: {_command(argv)}standard output closed", file=sys.stderr)
+        return 2
+    return status
+
+
+def _command(argv: Sequence[str] | None) -> str:
+    words = list(sys.argv[1:] if argv is None else argv)
+    return next((f"{word}: " for word in words if not word.startswith("-")), "")
+
+
+def _main(argv: Sequence[str] | None) -> int:
     args = _parser().parse_args(argv)
     if args.command in COMMANDS_RUN:
         return run(args)

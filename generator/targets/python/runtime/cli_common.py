@@ -13,8 +13,9 @@ import math
 from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING, Final
 
-from .codec import FieldInfo, Payload, field_kind
+from .codec import FieldInfo, Payload, date_from_text, field_kind
 from .encodings import VARIANTS, Variant, calibration_accuracy_deg, calibration_succeeded
+from .errors import IlahrsError
 from .nmea import PahrSentence
 from .payloads import PAYLOADS
 from .spec import SERIAL_LINE
@@ -88,9 +89,10 @@ def _number(text: str) -> int | float | str:
 
 def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, object]:
     """key=value words -> raw field values of `table` (names checked, values checked by the
-    caller's from_raw)."""
+    caller's from_raw); a field in the date encoding also takes a calendar date YYYY-MM-DD."""
     names = [f.name for f in table.FIELDS if f.type != "reserved"]
     kinds = {f.name: field_kind(f) for f in table.FIELDS}
+    dates = {f.name for f in table.FIELDS if f.encoding == "date"}
     values: dict[str, object] = {}
     for item in items:
         key, sep, text = item.partition("=")
@@ -98,6 +100,11 @@ def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, o
             raise CliError(f"{item!r} is not key=value (fields of {table.NAME}: {', '.join(names)})")
         key = lookup(f"field of {table.NAME}", key.strip(), names)
         value = text if kinds[key] == "char" else _number(text.strip())
+        if isinstance(value, str) and key in dates:
+            try:
+                value = date_from_text(text)
+            except IlahrsError as exc:
+                raise CliError(f"{key}={text!r}: not a date YYYY-MM-DD nor a number") from exc
         if isinstance(value, str) and kinds[key] != "char":
             raise CliError(f"{key}={text!r}: not a number")
         if kinds[key] == "float" and isinstance(value, int):
