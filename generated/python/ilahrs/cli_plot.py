@@ -2,8 +2,8 @@
 # spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs plot`: time series of chosen fields of a capture as a PNG, one panel per unit, with
-axis labels and units. Needs matplotlib (`pip install 'ilahrs[plot]'`); nothing else in the
-package does."""
+axis labels and units. Needs matplotlib (the `plot` extra, or `pip install 'matplotlib>=3.8'`);
+nothing else in the package does."""
 
 from __future__ import annotations
 
@@ -50,7 +50,7 @@ def _pyplot() -> Any:
     try:
         matplotlib = importlib.import_module("matplotlib")
     except ImportError as exc:
-        raise CliError("plotting needs matplotlib: pip install 'ilahrs[plot]'") from exc
+        raise CliError("plotting needs matplotlib: pip install 'matplotlib>=3.8'") from exc
     matplotlib.use("Agg")
     return importlib.import_module("matplotlib.pyplot")
 
