@@ -1,8 +1,8 @@
 # Copied from generator/targets/python/runtime/cli_plot.py for spec/ilahrs.yaml,
 # spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
-"""`ilahrs plot`: time series of chosen fields of a capture as a PNG. Needs matplotlib
-(`pip install 'ilahrs[plot]'`); nothing else in the package does.
+"""`ilahrs plot`: time series of chosen fields of a capture as a PNG. Needs matplotlib (the `plot`
+extra, or `pip install 'matplotlib>=3.8'`); nothing else in the package does.
 
 What the figure shows, and why:
 
@@ -153,7 +153,7 @@ def _pyplot() -> Any:
     try:
         matplotlib = importlib.import_module("matplotlib")
     except ImportError as exc:
-        raise CliError("plotting needs matplotlib: pip install 'ilahrs[plot]'") from exc
+        raise CliError("plotting needs matplotlib: pip install 'matplotlib>=3.8'") from exc
     matplotlib.use("Agg")
     return importlib.import_module("matplotlib.pyplot")
 

@@ -25,7 +25,7 @@ faster: the commands a flow sends during an alignment must fit in it, and a run 
 `--alignment-time` is too short for them is refused); calibration runs use `--accumulation-time`. At the end, also
 after a failure, Ctrl-C or SIGTERM, it loads the original parameters and reads them back, so a run
 changes nothing on the unit. Flows that would change the stored calibration (AcceptClb after a
-result, ClearClb) are skipped unless `--allow-calibration`. pyserial is needed (`ilahrs[serial]`).
+result, ClearClb) are skipped unless `--allow-calibration`. pyserial is needed (the `serial` extra).
 """
 
 from __future__ import annotations
@@ -200,7 +200,7 @@ class Link:
         try:
             serial = importlib.import_module("serial")
         except ImportError as exc:  # pragma: no cover - depends on the environment
-            raise ImportError("the live mode needs pyserial: pip install 'ilahrs[serial]'") from exc
+            raise ImportError("the live mode needs pyserial: pip install 'pyserial>=3.5'") from exc
         parity = {"none": "N", "even": "E", "odd": "O"}[str(SERIAL_LINE["parity"])]
         self._port = serial.serial_for_url(
             port,

@@ -3,7 +3,7 @@
 # Do not edit: change the runtime source and run `make generate`.
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
-pyserial is the optional dependency (`pip install ilahrs[serial]`) and is imported only when a
+pyserial is the optional dependency (the `serial` extra, or `pip install 'pyserial>=3.5'`) and is imported only when a
 client is opened, so the rest of the package stays standard-library only. `port` is anything
 `serial.serial_for_url` opens: a device path (/dev/ttyUSB0, the pty `ilahrs simulate` prints) or
 `socket://127.0.0.1:PORT` for `ilahrs simulate --tcp`.
@@ -114,7 +114,7 @@ def _pyserial() -> Any:
     try:
         return importlib.import_module("serial")
     except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("ilahrs.serial needs pyserial: pip install 'ilahrs[serial]'") from exc
+        raise ImportError("ilahrs.serial needs pyserial: pip install 'pyserial>=3.5'") from exc
 
 
 def _as_block(table: str | None, block: Payload | Mapping[str, object]) -> Payload:

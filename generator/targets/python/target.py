@@ -62,6 +62,10 @@ LINE_LENGTH = 120
 """The package's line length (the repository's ruff setting)."""
 
 
+# Folders that carry the licence texts (render.LICENCE_FILES).
+LICENSED = ("python",)
+
+
 def outputs(spec: Spec) -> list[Output | Runtime]:
     missing = [name for name in REQUIRED if getattr(spec, name) is None]
     if missing:

@@ -1,5 +1,5 @@
-"""`ilahrs plot`: time series of chosen fields of a capture as a PNG. Needs matplotlib
-(`pip install 'ilahrs[plot]'`); nothing else in the package does.
+"""`ilahrs plot`: time series of chosen fields of a capture as a PNG. Needs matplotlib (the `plot`
+extra, or `pip install 'matplotlib>=3.8'`); nothing else in the package does.
 
 What the figure shows, and why:
 
@@ -150,7 +150,7 @@ def _pyplot() -> Any:
     try:
         matplotlib = importlib.import_module("matplotlib")
     except ImportError as exc:
-        raise CliError("plotting needs matplotlib: pip install 'ilahrs[plot]'") from exc
+        raise CliError("plotting needs matplotlib: pip install 'matplotlib>=3.8'") from exc
     matplotlib.use("Agg")
     return importlib.import_module("matplotlib.pyplot")
 
