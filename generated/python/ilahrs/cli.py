@@ -164,12 +164,18 @@ def add_subcommands(commands: argparse._SubParsersAction[OneLineParser]) -> None
     dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
     dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
     dec.add_argument("--to", choices=FORMATS, default="text", help="output format (default text)")
-    dec.add_argument("--types", metavar="KIND,...", help=f"only these message kinds (default all): {_words(kinds())}")
+    dec.add_argument("--types", metavar="KIND,...", help=f"only these kinds of rows (default all): {_words(kinds())}")
     _variant(dec)
     dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
     dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
     _strict(dec)
-    _output_format(dec, None)
+    starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
+    dec.add_argument(
+        "--output-format",
+        metavar="COMMAND",
+        help=f"the command that started the output ({starting}); a capture that begins with the device's"
+        " output is decoded as if that command had been sent before it",
+    )
 
     _send_parser(commands)
     _params_parser(commands)
@@ -298,7 +304,9 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
     """`_decode` message by message, following the commands in a pcapng capture."""
     variant = variant_named(args.variant)
     known = args.output_format is not None
-    decoder = CaptureDecoder(context=source.kind == "pcapng", output=table, output_known=known, strict=args.strict)
+    context = source.kind == "pcapng"
+    start = args.output_format if known else None
+    decoder = CaptureDecoder(context=context, output=table, output_known=known, strict=args.strict, start=start)
     writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
 
@@ -313,10 +321,10 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
                 writer.write(message)
 
     failure = _drive(source, feed, finish, follow=args.follow)
+    if failure is not None:
+        raise failure  # alone: a summary of a capture cut short would read as the whole
     for line in summary(decoder, "ilahrs decode"):
         print(line, file=sys.stderr)
-    if failure is not None:
-        raise failure
     return 0
 
 
@@ -325,10 +333,10 @@ def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str
     only: `--strict` goes message by message)."""
     decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
     failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, follow=False)
-    for line in summary(decoder, "ilahrs decode"):
-        print(line, file=sys.stderr)
     if failure is not None:
         raise failure
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
     return 0
 
 
