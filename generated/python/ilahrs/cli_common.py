@@ -177,15 +177,13 @@ def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise CliError(f"{exc}") from exc
     try:
-        client = AhrsClient(port, timeout=timeout, strict=strict)
+        client = AhrsClient(port, timeout=timeout, strict=strict, baud=baud)
     except ImportError as exc:
         raise CliError(str(exc)) from exc
     except (OSError, ValueError) as exc:
         if getattr(exc, "errno", None) in _BUSY:  # the lock AhrsClient takes on a device path
             raise CliError(f"{port} is in use by another process") from exc
         raise CliError(f"cannot open {port}: {_reason(exc)}") from exc
-    if baud != BAUDRATE:
-        client._port.baudrate = baud  # the client opens at the spec's rate
     return client
 
 

@@ -80,9 +80,8 @@ def _probe(client: AhrsClient, port: str) -> None:
         client.stop()
         client.firmware_version()
     except IlahrsError as exc:
-        rate = getattr(client._port, "baudrate", client.baud)
-        detail = exc.detail or exc
-        raise CliError(f"{port}: no answer from the AHRS at {rate} baud ({detail}); check the port and --baud") from exc
+        detail = f"{exc.detail or exc}; check the port and --baud"
+        raise CliError(f"{port}: no answer from the AHRS at {client.baud} baud ({detail})") from exc
     except OSError as exc:
         raise CliError(f"{port}: {exc}") from exc
 
@@ -647,7 +646,6 @@ def calibrate(
                     print(f"Run {run} of {runs}. {tilt}.", file=out)
                     if interactive:
                         _ready(ask, out)
-                        client.poll(0)  # the quiet line while the user was asked is past before the answer
                     print(f"{_STEPS['alignment']}.", file=out)
                     client.request(START_RUN, run_table())
                     wait("alignment", "alignment")
@@ -664,7 +662,6 @@ def calibrate(
             success = getattr(final, "success", None)
             failed = isinstance(success, int) and not calibration_succeeded(success)
             accept = not failed and _decide(answer, ask, out)
-            client.poll(0)  # the quiet line while the user was asked is past before the answer
             leave = command_event(COMMANDS[STOP].code, client.host.state) or STOP
             client.request(ACCEPT if accept else leave)
             print("accepted: saved in the AHRS" if accept else "discarded: the AHRS keeps its calibration", file=out)

@@ -151,12 +151,14 @@ class AnyStateRequest:
         self._elapsed = 0.0
         self._received = 0
 
-    def receive(self, data: bytes | bytearray | memoryview) -> None:
-        """Bytes from the device, as they arrived."""
+    def receive(self, data: bytes | bytearray | memoryview, *, within: float = 0.0) -> None:
+        """Bytes from the device, as they arrived (`within`: as `Host.receive` takes it, the
+        seconds in which they came, which pass on the clock)."""
+        self._elapsed += require_seconds(within, "within")
         self._received += len(data)
         for hypothesis in self._hypotheses:
             if not hypothesis.failed:
-                self._take(hypothesis, hypothesis.host.receive(data))
+                self._take(hypothesis, hypothesis.host.receive(data, within=within))
 
     def advance(self, seconds: float) -> None:
         """Let time pass (the quiet before the next bytes, or after the last)."""

@@ -200,32 +200,40 @@ class AhrsClient:
                 return new
 
     def _read(self, *, wait: bool) -> list[HostEvent]:
-        """One read: what has come, or (`wait`) the first bytes within one poll interval."""
-        events: list[HostEvent] = []
+        """One read (see `_read_line`) through the host; the new events, stamped and recorded."""
+        quiet, data, within = self._read_line(wait=wait)
+        events = self.host.advance(quiet) + self.host.receive(data, within=within)
+        now = self._last
+        stamped = [dataclasses.replace(event, at=now) for event in events]
+        for event in stamped:
+            self._record(event)
+        return stamped
+
+    def _read_line(self, *, wait: bool) -> tuple[float, bytes, float]:
+        """One read of the line: `(quiet, data, within)`. When nothing had come since the last
+        read, the line was quiet until now: `quiet` seconds, which can end a message held from
+        before (E41), never the bytes that come after it; then (`wait`) the first bytes within one
+        poll interval, with the rest that came with them. `data` came at some moment of the
+        `within` seconds after that (answers among them count before a deadline in that time,
+        and the idle rule counts from its end: `Host.receive(data, within=...)`)."""
+        quiet = 0.0
         data = b""
         if self._port.in_waiting:
             data = self._port.read(self._port.in_waiting)
         else:
-            # Nothing came since the last read, so the line has been quiet until now: the host's
-            # clock catches up first. The quiet time can end a message held from before it (E41),
-            # never the bytes that come after it.
-            events += self.host.advance(max(0.0, self._clock() - self._last))
-            self._last = max(self._last, self._clock())
+            start = self._clock()
+            quiet = max(0.0, start - self._last)
+            self._last = max(self._last, start)
             if wait:
                 data = self._port.read(1)
                 if data and self._port.in_waiting:
                     data += self._port.read(self._port.in_waiting)
         now = self._clock()
+        within = max(0.0, now - self._last)
+        self._last = max(self._last, now)
         if data and self.tap is not None:
             self.tap(data, False)
-        # The bytes came at some moment since the last read: matched before any deadline in that
-        # time, and the idle rule counts from now.
-        events += self.host.receive(data, within=max(0.0, now - self._last))
-        self._last = now
-        stamped = [dataclasses.replace(event, at=now) for event in events]
-        for event in stamped:
-            self._record(event)
-        return stamped
+        return quiet, data, within
 
     def _record(self, event: HostEvent) -> None:
         self.events.append(event)
@@ -338,19 +346,15 @@ class AhrsClient:
         request = AnyStateRequest(
             command, block, firmware=host.firmware, reply_timeout=host.reply_timeout, output=output
         )
+        self._read(wait=False)  # what came before the command, and the host's clock brought up to now
         self._queue.clear()
         self._write(request.data)
-        last = self._clock()
         while not request.done:
-            data: bytes = self._port.read(max(1, self._port.in_waiting))
-            now = self._clock()
-            request.advance(max(0.0, now - last))  # the quiet line before these bytes came
-            last = now
-            if data:
-                request.receive(data)
-        self._last = last
+            quiet, data, within = self._read_line(wait=True)
+            request.advance(quiet)
+            request.receive(data, within=within)
         reply = request.reply()
-        answers = tuple(dataclasses.replace(event, at=last) for event in reply.answers)
+        answers = tuple(dataclasses.replace(event, at=self._last) for event in reply.answers)
         reply = dataclasses.replace(reply, answers=answers)
         for event in answers:
             self.events.append(event)
