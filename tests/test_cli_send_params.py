@@ -347,3 +347,18 @@ def test_anystate_finds_the_state_from_the_answers() -> None:
     assert _ask(pair, "AcceptClb").state == "calibration_deciding"
     silent = _ask(pair, "LowPowerOff")
     assert silent.state == "sleep" and silent.answers == () and silent.silent == ("sleep",)
+
+
+def test_every_subcommand_shows_a_value_the_same_way() -> None:
+    """One rule for each kind of value, whichever subcommand prints it: a clear status word reads
+    OK (never an empty cell), a date its calendar date, in `send`/`params`/`monitor` rows as in
+    `decode` rows."""
+    from ilahrs.cli_common import USW_CLEAR, fields_of, variant_named
+    from ilahrs.cli_decode import row_fields
+
+    variant = variant_named(None)
+    bit = package.BitResult(usw=0)
+    assert fields_of(bit, variant)["usw"] == row_fields(bit, variant)["usw"] == USW_CLEAR == "OK"
+    read = PAYLOADS["ahrs_parameters_read"].from_raw({"date": date_from_text("2024-06-15")})
+    date = next(info for info in read.FIELDS if info.name == "date")
+    assert row_fields(read, variant)["date"] == field_text(date, read.raw()["date"]) == "2024-06-15"

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
 __all__ = [
     "BAUDRATE",
     "SENTENCE_KIND",
+    "USW_CLEAR",
     "CliError",
     "field_columns",
     "fields_of",
@@ -46,6 +47,8 @@ SENTENCE_KIND: Final = PahrSentence.IDENTIFIER
 """The message kind of a $PAHR sentence in decoded rows."""
 _BUSY: Final = {errno.EAGAIN, errno.EWOULDBLOCK}
 """The errno of a port another client holds (AhrsClient locks device paths)."""
+USW_CLEAR: Final = "OK"
+"""The Unit Status Word with no flag set, in readiness mode."""
 _USW_SEPARATOR: Final = "|"
 _USW_FLAGS: Final = USW_FAILURE_FLAGS.value | USW_WARNING_FLAGS.value
 _USW_NAMES: Final = [(flag.value, flag.name or "") for flag in UswFlag]
@@ -118,13 +121,13 @@ def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, o
 
 def usw_text(raw: int) -> str:
     """A Unit Status Word as the names of its flags (and its mode when not readiness), joined by
-    '|'; empty when no flag is set in readiness mode."""
+    '|'; USW_CLEAR when no flag is set in readiness mode (never empty, which reads as missing)."""
     word = UnitStatusWord(raw)
     flags = raw & _USW_FLAGS
     names = [name for value, name in _USW_NAMES if flags & value == value]
     if word.mode.value != "readiness":
         names.append(str(word.mode.value).upper())
-    return _USW_SEPARATOR.join(names)
+    return _USW_SEPARATOR.join(names) or USW_CLEAR
 
 
 def _field_value(info: FieldInfo, raw: object, values: Mapping[str, float], *, as_raw: bool) -> object:

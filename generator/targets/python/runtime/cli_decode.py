@@ -42,7 +42,7 @@ from typing import Any, Final, TextIO
 
 from .cli_capture import Chunk, Source
 from .cli_common import SENTENCE_KIND, field_columns, fields_of, lookup, usw_text
-from .codec import Payload, field_kind
+from .codec import Payload, date_text, field_kind
 from .columnar import (
     COMMAND,
     KINDS,
@@ -55,7 +55,7 @@ from .columnar import (
     table_columns,
 )
 from .commands import COMMAND_SET, COMMANDS, decode_command
-from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded, decode_date
+from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded
 from .errors import ErrorKind, IlahrsError
 from .frame import (
     CHECKSUM_SIZE,
@@ -102,8 +102,6 @@ MISSING: Final = "missing"
 FORMATS: Final = ("text", "csv", "jsonl")
 BASE_COLUMNS: Final = ("time", "direction", "kind", "offset", "packet", "length", "reason", "detail")
 """The first columns of every CSV row; the fields of the selected kinds follow (`decode_columns`)."""
-USW_CLEAR: Final = "OK"
-"""The Unit Status Word with no flag set, in readiness mode (never an empty cell)."""
 ACCURACY: Final = "accuracy"
 """The column beside a calibration's success: its predicted accuracy in degrees (3 sigma)."""
 SUCCEEDED: Final = "succeeded"
@@ -139,7 +137,7 @@ _CALIBRATION_FIELDS: Final = frozenset(
 
 
 def _usw(raw: int) -> str:
-    return usw_text(raw) or USW_CLEAR
+    return usw_text(raw)
 
 
 def _outcome(raw: int) -> str:
@@ -151,11 +149,8 @@ def _accuracy(raw: int) -> float | None:
 
 
 def _date(value: float) -> object:
-    try:
-        year, month, day = decode_date(value)
-    except IlahrsError:
-        return value  # not a date the encoding can give: the number as sent
-    return f"{year:04d}-{month:02d}-{day:02d}"
+    text = date_text(value)
+    return value if text is None else text  # not a date the encoding can give: the number as sent
 
 
 def row_fields(data: Payload | PahrSentence, variant: Variant, *, raw: bool = False) -> dict[str, object]:

@@ -26,6 +26,7 @@ __all__ = [
     "Payload",
     "PayloadBase",
     "date_from_text",
+    "date_text",
     "field_kind",
     "field_text",
     "float32_text",
@@ -115,14 +116,21 @@ def field_text(info: FieldInfo, value: object) -> str:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         return str(value)
     if info.encoding == "date":
-        try:
-            year, month, day = decode_date(value)
-        except IlahrsError:
-            return float32_text(value)
-        return f"{year:04d}-{month:02d}-{day:02d}"
+        date = date_text(value)
+        return float32_text(value) if date is None else date
     if info.type == "f32":
         return float32_text(value)
     return str(value)
+
+
+def date_text(value: float) -> str | None:
+    """The calendar date of a float in the date encoding, YYYY-MM-DD (the nearest valid date,
+    E15); None when no date encodes near it."""
+    try:
+        year, month, day = decode_date(value)
+    except IlahrsError:
+        return None
+    return f"{year:04d}-{month:02d}-{day:02d}"
 
 
 def date_from_text(text: str) -> float:
