@@ -58,10 +58,10 @@ def summary_of(line: str) -> tuple[int, int, int]:
 
 def decode_counts(capture: Path) -> tuple[int, int, int]:
     """Messages, discarded bytes and errors as `ilahrs decode` reports them."""
-    lines = ilahrs("decode", str(capture)).stderr.splitlines()
-    messages = int(re.search(r"(\d+) messages", lines[0])[1])  # type: ignore[index]
-    discarded = int(re.search(r"(\d+) bytes discarded", lines[1])[1])  # type: ignore[index]
-    errors = int(re.search(r"(\d+) decode errors", lines[2])[1])  # type: ignore[index]
+    summary = ilahrs("decode", str(capture)).stderr
+    messages = int(re.search(r"(\d+) messages", summary)[1])  # type: ignore[index]
+    discarded = int(re.search(r"(\d+) bytes discarded", summary)[1])  # type: ignore[index]
+    errors = int(re.search(r"(\d+) decode errors", summary)[1])  # type: ignore[index]
     return messages, discarded, errors
 
 

@@ -344,10 +344,10 @@ class Host:
         counts as busy until then: the idle rule (E41) starts from the end, so bytes that came
         together are never given up for a quiet time that may have been before them."""
         seconds = require_seconds(within, "within")
-        if not len(data):
-            return self.advance(seconds)
         before = self._decoder.discarded
         events = self._messages(self._decoder.feed(data), before)
+        if not len(data):
+            return events + self.advance(seconds)
         if seconds:
             events += self._expire(self._now + round(seconds * _NS))
         self._idle_at = None if not self._decoder.pending or IDLE_TIMEOUT_NS is None else self._now + IDLE_TIMEOUT_NS
