@@ -168,3 +168,57 @@ def test_the_client_gives_up_held_bytes_once_reads_return_nothing() -> None:
         assert client.host.pending == len(STALE)
         client.poll(2 * ilahrs.IDLE_TIMEOUT)
         assert client.host.pending == 0 and client.discarded == len(STALE)
+
+
+PAUSES = (0.0, 0.05, 0.099, 0.101, 0.15, 0.3, 0.6, 2.0)
+"""Around the idle timeout (100 ms) and well past it."""
+
+
+def test_a_command_after_a_pause_is_answered_without_a_retry(sim: Simulator) -> None:
+    """E41 counts the quiet before bytes arrive: an answer that begins after the caller's pause is
+    read whole, so each command goes out once (no retry), in idle and in on-request mode, where
+    GetDataReq has no retry to hide a lost answer."""
+    sent: list[bytes] = []
+    with AhrsClient(sim.first_line, retries=0, tap=lambda data, out: sent.append(data) if out else None) as client:
+        client.stop()
+        for pause in PAUSES:
+            time.sleep(pause)
+            assert isinstance(client.read_parameters(), ilahrs.AhrsParametersRead), pause
+        assert sent.count(ilahrs.build_command("ReadAHRSPar")) == len(PAUSES)
+        client.stop()
+        client.start("AHRSreq2")
+        for pause in PAUSES:
+            time.sleep(pause)
+            assert isinstance(client.get_data(), ilahrs.Quaternion), pause
+        assert sent.count(ilahrs.build_command("GetDataReq")) == len(PAUSES)
+        assert client.errors == [] and client.discarded == 0
+        client.stop()
+
+
+def test_output_read_after_pauses_loses_nothing(sim: Simulator) -> None:
+    """Continuous output that piles up while the caller pauses is read whole: every frame the
+    device sent is an output block, none discarded, no protocol error."""
+    with AhrsClient(sim.first_line, history=100_000) as client:
+        client.stop()
+        client.start("AHRScont3")
+        for pause in PAUSES:
+            time.sleep(pause)
+            client.frames(5)
+        client.stop()
+        assert client.errors == [] and client.discarded == 0
+        outputs = [e for e in client.events if isinstance(e, Output)]
+        assert len(outputs) == len(client.received) - 2  # all but the acknowledgement and the alignment block
+
+
+def test_the_tap_sees_each_chunk_once_as_it_crossed_the_line(sim: Simulator) -> None:
+    """One call per write and one per read: a message is never split into a first byte and the
+    rest (a capture of the session shows what the line carried)."""
+    chunks: list[tuple[bytes, bool]] = []
+    with AhrsClient(sim.first_line, tap=lambda data, out: chunks.append((data, out))) as client:
+        client.stop()
+        chunks.clear()
+        time.sleep(0.2)
+        client.read_parameters()
+    (command, written), (answer, read) = chunks
+    assert (command, written) == (ilahrs.build_command("ReadAHRSPar"), True)
+    assert read is False and len(ilahrs.Frame.parse(answer).payload) == ilahrs.AhrsParametersRead.SIZE

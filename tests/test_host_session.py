@@ -208,3 +208,29 @@ def test_the_host_idle_call_and_strict_option() -> None:
     assert host.idle() == [Discarded(5)] and host.pending == 0
     with pytest.raises(ilahrs.IlahrsError):
         Host(strict="yes")  # type: ignore[arg-type]
+
+
+def test_bytes_read_together_after_a_quiet_time_are_never_given_up() -> None:
+    """E41 counts the quiet before bytes arrive, never past them: a read that returns the first
+    bytes of an answer after a long pause (the caller's) keeps them, and the rest completes it."""
+    host, device = Host(), ilahrs.Device()
+    answer = device.receive(host.send("GetBIT"))
+    assert host.advance(0.3) == []  # the line was quiet: nothing is held, nothing is given up
+    assert host.receive(answer[:1], within=0.3) == [] and host.pending == 1  # came some time in 0.3 s
+    assert host.advance(0.05) == [] and host.pending == 1
+    (block,) = host.receive(answer[1:], within=0.001)
+    assert isinstance(block, DataBlock) and block.raw == answer and not host.owed
+
+
+def test_an_answer_read_after_its_deadline_counts_when_it_came() -> None:
+    """`within`: the bytes of a read came some time since the one before; an answer among them is
+    matched before a deadline that passed in that time, and a later deadline still fires."""
+    host = Host(reply_timeout=0.5)
+    answer = ilahrs.Device().receive(host.send("GetBIT"))
+    (block,) = host.receive(answer, within=2.0)
+    assert isinstance(block, DataBlock) and host.now == pytest.approx(2.0) and not host.owed
+    host.send("GetBIT")
+    (missing,) = host.receive(b"", within=0.6)  # no bytes: time passes as with advance
+    assert isinstance(missing, ProtocolError) and missing.problem == "missing"
+    with pytest.raises(ilahrs.IlahrsError):
+        host.receive(b"", within=-1.0)

@@ -316,14 +316,22 @@ class Host:
             self._enter(target)
         return data
 
-    def receive(self, data: bytes | bytearray | memoryview) -> list[HostEvent]:
-        """Bytes from the device -> events, in order (Discarded last, if any bytes were dropped)."""
+    def receive(self, data: bytes | bytearray | memoryview, *, within: float = 0.0) -> list[HostEvent]:
+        """Bytes from the device -> events, in order (Discarded last, if any bytes were dropped).
+
+        `within`: the bytes came at some moment of the next `within` seconds, as with a read that
+        returns what arrived since the one before. They are matched first, so an answer among them
+        counts before any deadline in that time; then the clock moves on by `within`, and the line
+        counts as busy until then: the idle rule (E41) starts from the end, so bytes that came
+        together are never given up for a quiet time that may have been before them."""
+        seconds = require_seconds(within, "within")
+        if not len(data):
+            return self.advance(seconds)
         before = self._decoder.discarded
         events = self._messages(self._decoder.feed(data), before)
-        if len(data):
-            self._idle_at = (
-                None if not self._decoder.pending or IDLE_TIMEOUT_NS is None else self._now + IDLE_TIMEOUT_NS
-            )
+        if seconds:
+            events += self._expire(self._now + round(seconds * _NS))
+        self._idle_at = None if not self._decoder.pending or IDLE_TIMEOUT_NS is None else self._now + IDLE_TIMEOUT_NS
         return events
 
     def idle(self, quiet: float | None = None) -> list[HostEvent]:

@@ -21,8 +21,9 @@ errors in `errors`; the count of bytes that belonged to no message in `discarded
 bounded, so a client can stream for days.
 
 A message never spans an idle line (E41): bytes the host holds (the start of a frame whose rest
-never came) are given up once reads have returned nothing for IDLE_TIMEOUT (the host's clock
-takes the bytes of a read as received at the previous read, at most one read, 10 ms, early).
+never came) are given up once reads have returned nothing for IDLE_TIMEOUT. The quiet time counts
+until a read finds bytes, never past them: an answer that begins after a pause of any length, the
+caller's included, is read whole (`Host.receive(data, within=...)`).
 `strict`: refuse data frames whose reserved byte is not the AHRS's (E42; they count as discarded).
 """
 
@@ -134,6 +135,7 @@ class AhrsClient:
         baud: int | None = None,
         history: int = DEFAULT_HISTORY,
         strict: bool = False,
+        tap: Callable[[bytes, bool], None] | None = None,
     ) -> None:
         self.host = Host(firmware=firmware, reply_timeout=timeout, strict=strict)
         self.retries = retries
@@ -145,6 +147,9 @@ class AhrsClient:
         """The last `history` protocol errors outside the quiet period after a Stop."""
         self.received: History[bytes] = History(keep)
         """The last `history` valid messages received, as received."""
+        self.tap = tap
+        """Called with every chunk as it crosses the line, and whether it went out (True) or came in:
+        one call per write and one per read, for a capture of the session."""
         self._discarded = 0
         self._queue: deque[HostEvent] = deque(maxlen=_QUEUE_LIMIT)
         self._clock = clock
@@ -182,18 +187,37 @@ class AhrsClient:
         end = self._clock() + require_seconds(seconds)
         new: list[HostEvent] = []
         while True:
-            waiting = self._port.in_waiting
-            data: bytes = self._port.read(max(1, waiting))
-            now = self._clock()
-            events = self.host.receive(data) if data else []
-            events += self.host.advance(max(0.0, now - self._last))
-            self._last = now
-            for event in events:
-                stamped = dataclasses.replace(event, at=now)
-                self._record(stamped)
-                new.append(stamped)
-            if now >= end:
+            new += self._read(wait=True)
+            if self._clock() >= end:
                 return new
+
+    def _read(self, *, wait: bool) -> list[HostEvent]:
+        """One read: what has come, or (`wait`) the first bytes within one poll interval."""
+        events: list[HostEvent] = []
+        data = b""
+        if self._port.in_waiting:
+            data = self._port.read(self._port.in_waiting)
+        else:
+            # Nothing came since the last read, so the line has been quiet until now: the host's
+            # clock catches up first. The quiet time can end a message held from before it (E41),
+            # never the bytes that come after it.
+            events += self.host.advance(max(0.0, self._clock() - self._last))
+            self._last = max(self._last, self._clock())
+            if wait:
+                data = self._port.read(1)
+                if data and self._port.in_waiting:
+                    data += self._port.read(self._port.in_waiting)
+        now = self._clock()
+        if data and self.tap is not None:
+            self.tap(data, False)
+        # The bytes came at some moment since the last read: matched before any deadline in that
+        # time, and the idle rule counts from now.
+        events += self.host.receive(data, within=max(0.0, now - self._last))
+        self._last = now
+        stamped = [dataclasses.replace(event, at=now) for event in events]
+        for event in stamped:
+            self._record(event)
+        return stamped
 
     def _record(self, event: HostEvent) -> None:
         self.events.append(event)
@@ -210,6 +234,8 @@ class AhrsClient:
     def _write(self, data: bytes) -> None:
         self._port.write(data)
         self._port.flush()
+        if self.tap is not None:
+            self.tap(data, True)
 
     # --- Requests ----------------------------------------------------------------------------
 
@@ -245,6 +271,7 @@ class AhrsClient:
             raise COMMAND_SET.unknown(command)
         if block is not None:
             block = COMMAND_SET.parameter_block(command, block)
+        self._read(wait=False)  # what came before the command, and the host's clock brought up to now
         self._queue.clear()
         self._write(self.host.send(command, block))
         answers: list[HostEvent] = []
