@@ -21,9 +21,12 @@ written to build/stateful/client.txt.
 
 from __future__ import annotations
 
+import fcntl
 import os
 import select
+import struct
 import sys
+import termios
 import threading
 import time
 from collections import Counter
@@ -32,22 +35,25 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import HealthCheck, Phase, event, settings
+from hypothesis import strategies as st
+from hypothesis.stateful import (
+    RuleBasedStateMachine,
+    invariant,
+    precondition,
+    rule,
+    run_state_machine_as_test,
+)
 
-pytest.importorskip("serial")
-pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")
-
-from hypothesis import HealthCheck, Phase, event, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-from hypothesis.stateful import RuleBasedStateMachine, invariant, rule, run_state_machine_as_test  # noqa: E402
-
-from ilahrs import IDLE_TIMEOUT, IlahrsError  # noqa: E402
-from ilahrs.commands import COMMANDS  # noqa: E402
-from ilahrs.device import Device, default_parameters  # noqa: E402
-from ilahrs.payloads import PAYLOADS, Payload  # noqa: E402
-from ilahrs.roles import ParameterBlock  # noqa: E402
-from ilahrs.serial import AhrsClient  # noqa: E402
-from ilahrs.simulate import Line, _configure_pty  # noqa: E402
-from ilahrs.statemachine import (  # noqa: E402
+from ilahrs import IDLE_TIMEOUT, IlahrsError
+from ilahrs.commands import COMMANDS
+from ilahrs.device import Device, default_parameters
+from ilahrs.encodings import DECLINATION_COMPUTE, DECLINATION_MAX, DECLINATION_MIN
+from ilahrs.payloads import PAYLOADS, Payload
+from ilahrs.roles import ParameterBlock
+from ilahrs.serial import AhrsClient
+from ilahrs.simulate import Line, _configure_pty
+from ilahrs.statemachine import (
     DEFAULT_UPDATE_RATE_HZ,
     STATES,
     TIMER_FIELDS,
@@ -56,10 +62,13 @@ from ilahrs.statemachine import (  # noqa: E402
     lookup,
 )
 
+pytest.importorskip("serial")
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")
+
 ROOT = Path(__file__).resolve().parents[1]
 REPORT = ROOT / "build" / "stateful" / "client.txt"
 
-EXAMPLES = int(os.environ.get("ILAHRS_STATEFUL_EXAMPLES", "6"))
+EXAMPLES = int(os.environ.get("ILAHRS_STATEFUL_EXAMPLES", "8"))
 STEPS = int(os.environ.get("ILAHRS_STATEFUL_STEPS", "25"))
 RANDOM = os.environ.get("ILAHRS_STATEFUL_RANDOM") == "1"
 SHRINK = RANDOM or os.environ.get("ILAHRS_STATEFUL_SHRINK") == "1"
@@ -87,6 +96,8 @@ SHORT_TIMER = 1
 DRAIN = 5.0
 """Generous time for a message the device sent to reach the client (it takes milliseconds)."""
 TICK = 0.02
+MAX_LOSSES = 2
+"""Losses of the device in one example (each costs a reply timeout)."""
 HISTORY = 10**7
 """Big enough that the client keeps every event of a run."""
 
@@ -121,9 +132,13 @@ class _RecordingLine(Line):
         return super().emit(message)
 
 
-def _device(seed: int) -> Device:
+_SKIPPED_TIMERS = {timer for timer, rate in TIMER_IS_RATE.items() if not rate}
+"""The timers `PtyDevice.skip` may end early: alignment and accumulation, never the output rate."""
+
+
+def _device(seed: int, alignment: int = SHORT_TIMER) -> Device:
     raw = default_parameters().raw()
-    raw[TIMER_FIELDS["alignment"][1]] = SHORT_TIMER
+    raw[TIMER_FIELDS["alignment"][1]] = alignment
     return Device(seed=seed, parameters=ParameterBlock.from_raw(raw))
 
 
@@ -140,6 +155,12 @@ class PtyDevice:
         os.set_blocking(self._master, False)
         self.path = os.ttyname(self._slave)
         self._stopped = False
+        self.offset = 0.0
+        """Seconds added to the wall clock: `skip()` moves the device's clock past a timer at once."""
+        self.fast_after_input = False
+        """Set: once bytes come from the host, every alignment and accumulation ends at once."""
+        self._fast = False
+        self._loops = 0
         self.failure: BaseException | None = None
         self._thread = threading.Thread(target=self._serve, daemon=True)
         self._thread.start()
@@ -159,13 +180,17 @@ class PtyDevice:
                     except (BlockingIOError, OSError):
                         incoming = b""
                 with self.lock:
-                    pending += self.line.step(incoming, time.monotonic())
+                    self._fast = self._fast or (self.fast_after_input and bool(incoming))
+                    if self._fast and STATES[self.line.device.state].timer in _SKIPPED_TIMERS:
+                        self._skip()
+                    pending += self.line.step(incoming, time.monotonic() + self.offset)
                 if pending:
                     try:
                         written = os.write(self._master, bytes(pending))
                     except BlockingIOError:
                         written = 0
                     del pending[:written]
+                self._loops += 1
         except BaseException as exc:  # reported by the test, never swallowed
             self.failure = exc
 
@@ -183,11 +208,33 @@ class PtyDevice:
         with self.lock:
             self.line.connected = connected
 
-    def power_cycle(self) -> None:
-        """A new device in its power-up state, on the same line."""
+    def _unread(self) -> int:
+        """Bytes the host wrote that the device has not read yet."""
+        return struct.unpack("i", fcntl.ioctl(self._master, termios.FIONREAD, b"\0\0\0\0"))[0]  # type: ignore[no-any-return]
+
+    def power_cycle(self, alignment: int = SHORT_TIMER) -> None:
+        """A new device in its power-up state (with `alignment` seconds of alignment), on the same
+        line, once the old one has read what the host sent it."""
+        end = time.monotonic() + DRAIN
+        while self._unread() and time.monotonic() < end:
+            time.sleep(0.005)
+        loops = self._loops
+        while self._loops < loops + 2 and time.monotonic() < end:  # what was read has been stepped
+            time.sleep(0.005)
         self._seed += 1
         with self.lock:
-            self.line.device = _device(self._seed)
+            self.line.device = _device(self._seed, alignment)
+            self.fast_after_input = self._fast = False
+
+    def _skip(self) -> None:
+        wait = self.line.device.next_event_in
+        if wait is not None:
+            self.offset += wait
+
+    def skip(self) -> None:
+        """End the timer running in the device's state now (the alignment, the accumulation)."""
+        with self.lock:
+            self._skip()
 
     def close(self) -> None:
         self._stopped = True
@@ -227,6 +274,10 @@ def _field_values(table: str) -> st.SearchStrategy[dict[str, object]]:
             if info.name in _SHORT_FIELDS:
                 high = min(high, low + SHORT_TIMER)
             fields[info.name] = st.integers(low, high)
+        elif info.encoding == "declination":  # a declination, or the request to compute it
+            fields[info.name] = st.one_of(
+                st.floats(DECLINATION_MIN, DECLINATION_MAX, width=32), st.just(DECLINATION_COMPUTE)
+            )
         elif info.type == "f32":
             fields[info.name] = st.floats(info.low, info.high, width=32, allow_nan=False, allow_infinity=False)
     return st.fixed_dictionaries(fields)
@@ -251,6 +302,7 @@ class ClientAgainstDevice(RuleBasedStateMachine):
         self.client = self._open()
         self.earlier: list[bytes] = []
         """Messages earlier clients (before a reopen) received."""
+        self.losses = 0
 
     def _open(self) -> AhrsClient:
         return AhrsClient(self.device.path, history=HISTORY)
@@ -280,21 +332,15 @@ class ClientAgainstDevice(RuleBasedStateMachine):
 
     # --- Rules ------------------------------------------------------------------------------------
 
-    @rule(
-        command=st.sampled_from(sorted(COMMANDS)),
-        heard_only=st.booleans(),
-        pause=st.sampled_from(PAUSES),
-        data=st.data(),
-    )
-    def send(self, command: str, heard_only: bool, pause: float, data: st.DataObject) -> None:
-        """Wait `pause` without reading, then send a command (half the time one the device hears in
-        its state, so that the runs go deep into calibration) with its parameter block."""
+    def _send(self, command: str | None, pause: float, chunk: int, data: st.DataObject) -> None:
+        """Read in chunks of at most `chunk` bytes from now on; wait `pause` without reading; send
+        `command` (None: one the device hears in its state) with its parameter block."""
+        port = self.client._port
+        self.client._port = _Chunked(port._port if isinstance(port, _Chunked) else port, chunk)
         time.sleep(pause)
         state, _count = self.device.snapshot()
-        if heard_only:
-            heard = [name for name in sorted(COMMANDS) if _heard(state, name)]
-            if heard:
-                command = data.draw(st.sampled_from(heard), label="heard")
+        if command is None:
+            command = data.draw(st.sampled_from([name for name in sorted(COMMANDS) if _heard(state, name)]))
         table = COMMANDS[command].parameter_block
         block: Payload | None = None
         if table is not None:
@@ -305,16 +351,28 @@ class ClientAgainstDevice(RuleBasedStateMachine):
         OUTCOMES[outcome] += 1
         event(outcome)
 
+    @rule(
+        command=st.sampled_from(sorted(COMMANDS)),
+        pause=st.sampled_from(PAUSES),
+        chunk=st.sampled_from(CHUNKS),
+        data=st.data(),
+    )
+    def send_any(self, command: str, pause: float, chunk: int, data: st.DataObject) -> None:
+        """Any command, whether or not the device hears it in its state."""
+        self._send(command, pause, chunk, data)
+
+    @rule(pause=st.sampled_from(PAUSES), chunk=st.sampled_from(CHUNKS), data=st.data())
+    def send_heard(self, pause: float, chunk: int, data: st.DataObject) -> None:
+        """A command the device hears in its state (every state hears one), so that runs go deep
+        into calibration."""
+        self._send(None, pause, chunk, data)
+
     @rule(seconds=st.sampled_from(PAUSES))
     def read(self, seconds: float) -> None:
         """Read for a while (the output, the timers' blocks)."""
         self.client.poll(seconds)
 
-    @rule(size=st.sampled_from(CHUNKS))
-    def chunks(self, size: int) -> None:
-        port = self.client._port
-        self.client._port = _Chunked(port._port if isinstance(port, _Chunked) else port, size)
-
+    @precondition(lambda self: self.losses < MAX_LOSSES)
     @rule(
         how=st.sampled_from(LOSSES),
         command=st.sampled_from(sorted(COMMANDS)),
@@ -324,6 +382,7 @@ class ClientAgainstDevice(RuleBasedStateMachine):
     def lose(self, how: str, command: str, pause: float, data: st.DataObject) -> None:
         """Lose the device, try a command while it is gone, bring it back, and Stop (6.3.5) as a
         user does before anything else."""
+        self.losses += 1
         self.device.connect(False)
         self._drain()  # what was on the line before the cut still arrives
         if how == "reopened":
@@ -372,7 +431,9 @@ class ClientAgainstDevice(RuleBasedStateMachine):
             if self.client.host.state == state or time.monotonic() > end:
                 break
             self.client.poll(TICK)
-        assert self.client.host.state == state, f"the client believes {self.client.host.state}, the device is in {state}"
+        assert self.client.host.state == state, (
+            f"the client believes {self.client.host.state}, the device is in {state}"
+        )
 
 
 def _report() -> str:
@@ -381,8 +442,7 @@ def _report() -> str:
     pauses = {p for _s, _c, p in EXPLORED}
     heard = {(s, c, p) for s, c, p in EXPLORED if _heard(s, c)}
     lines = [
-        f"stateful client test: {EXAMPLES} examples x {STEPS} steps"
-        + (" (random)" if RANDOM else " (derandomized)"),
+        f"stateful client test: {EXAMPLES} examples x {STEPS} steps" + (" (random)" if RANDOM else " (derandomized)"),
         f"explored {len(EXPLORED)} (state, command, pause) combinations of "
         f"{len(STATES)} x {len(COMMANDS)} x {len(PAUSES)} = {len(STATES) * len(COMMANDS) * len(PAUSES)}: "
         f"{len(states)} states x {len(commands)} commands x {len(pauses)} pauses seen; "
