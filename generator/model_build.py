@@ -34,7 +34,10 @@ from .naming import prose
 def build(loaded: LoadedSpec) -> Spec:
     """Turn validated data into the model. Call generator.validate.validate first."""
     d = loaded.data
-    units = {key: Unit(key=key, suffix=u["suffix"], doc=prose(u["doc"])) for key, u in d.get("units", {}).items()}
+    units = {
+        key: Unit(key=key, suffix=u["suffix"], doc=prose(u["doc"]), symbol=u.get("symbol", key))
+        for key, u in d.get("units", {}).items()
+    }
     encodings = d.get("encodings", {})
     date_bounds = _date_bounds(encodings["date"]) if encodings.get("date") else None
     status_word = _status_word(d["status_word"]) if "status_word" in d else None

@@ -42,6 +42,8 @@ class Unit:
     key: str
     suffix: str
     doc: str
+    symbol: str
+    """What follows a value shown to a person ("" for a dimensionless number)."""
 
 
 @dataclass(frozen=True)

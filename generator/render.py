@@ -21,6 +21,11 @@ from . import naming
 from .model import Spec
 
 TARGETS_DIR = Path(__file__).resolve().parent / "targets"
+ROOT = TARGETS_DIR.parent.parent
+
+# The licence texts at the repository root, copied as they are into every folder a target names
+# in LICENSED (a package or library that leaves the repository: the Python package, the crate, ...).
+LICENCE_FILES = ("LICENSE-MIT", "LICENSE-APACHE")
 COMMON_TEMPLATES = Path(__file__).resolve().parent / "templates"
 
 
@@ -158,6 +163,9 @@ def render(spec: Spec, targets: list[str] | None = None) -> dict[str, str]:
             if out.path in files or out.path in mine:
                 raise ValueError(f"two outputs write {out.path}")
             mine[out.path] = _tidy(text) if not out.path.endswith((".svg", ".png")) else text
+        for folder in getattr(module, "LICENSED", ()):
+            for name in LICENCE_FILES:
+                mine[f"{folder}/{name}"] = (ROOT / name).read_text(encoding="utf-8")
         hook = getattr(module, "format", None)
         if hook is not None:
             mine = hook(mine)

@@ -205,7 +205,8 @@ def test_missing_runner_names_its_build_command(tmp_path: Path) -> None:
     bindings = register(tmp_path / "b", {}, ["checksum"], command=["build/fake/does-not-exist"])
     code, text = run("--vectors", str(vectors), "--bindings-dir", str(bindings))
     assert code == 1
-    assert "FAILED fake: runner build/fake/does-not-exist not found; build it with `make build-fake`" in text
+    assert "FAILED fake: runner build/fake/does-not-exist not found in " in text
+    assert "; build it with `make build-fake` there" in text
 
 
 def test_a_runner_that_exits_is_restarted(tmp_path: Path) -> None:

@@ -151,15 +151,16 @@ def test_pty_full_flow_with_faults(tmp_path: Path) -> None:
 def test_tcp_loopback(tmp_path: Path) -> None:
     with simulator(tmp_path, "--tcp", "127.0.0.1:0", "--update-rate", "50", "--alignment-time", "1") as sim:
         host, _, port = sim.first_line.rpartition(":")
-        assert host == "127.0.0.1" and port.isdigit() and int(port) > 0
-        with AhrsClient(f"socket://127.0.0.1:{port}") as client:
+        assert host == "socket://127.0.0.1" and port.isdigit() and int(port) > 0
+        with AhrsClient(sim.first_line) as client:
             client.stop()
             assert client.read_parameters().raw()["update_rate"] == 50
             client.start("AHRScont2")
             blocks = client.frames(60)
             assert all(isinstance(b, ilahrs.Quaternion) for b in blocks)
             client.stop()
-        assert sim.process.wait(10) == 0  # exits when the peer closes
+        assert sim.process.poll() is None  # serves the next client
+        assert sim.stop() == 0
 
 
 def test_tcp_answers_behind_a_stale_header(tmp_path: Path) -> None:

@@ -1,4 +1,4 @@
--- Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+-- Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 -- Do not edit: change the spec or the generator and run `make generate`.
 --
 -- Wireshark dissector for the Inertial Labs AHRS Interface Control Document, revision 1.7
@@ -12,7 +12,7 @@
 local SPEC = {
   name = "ilahrs",
   version = "1.0.0",
-  sha256 = "78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a",
+  sha256 = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74",
   icd = "Inertial Labs AHRS Interface Control Document, revision 1.7",
   byte_order = "little",
   max_message_size = 82,
@@ -38,15 +38,15 @@ SPEC.units = {
 SPEC.frame = {
   header = { 0xAA, 0x55 },
   fields = {
-    { name = "message_type", icd_name = "Message type", type = "u8", offset = 2, size = 1, doc = "0 for commands, 1 for data. Every AHRS output is data (Table 6.2)." },
-    { name = "reserved", icd_name = "Reserved", type = "u8", offset = 3, size = 1, doc = "Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the AHRS sends (`strict`, E42)." },
-    { name = "message_length", icd_name = "Message length", type = "u16", offset = 4, size = 2, doc = "Number of bytes after the 2-byte header, message type through checksum (Table 6.2)." },
+    { name = "message_type", icd_name = "Message type", label = "Message type", type = "u8", offset = 2, size = 1, doc = "0 for commands, 1 for data. Every AHRS output is data (Table 6.2)." },
+    { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "u8", offset = 3, size = 1, doc = "Not defined by rev 1.7. Decoders accept any value and expose it; builders write 0 unless told otherwise (E6). A strict decoder refuses a data frame whose value is not the one the AHRS sends (`strict`, E42)." },
+    { name = "message_length", icd_name = "Message length", label = "Message length", type = "u16", offset = 4, size = 2, doc = "Number of bytes after the 2-byte header, message type through checksum (Table 6.2)." },
   },
   message_type_offset = 2,
   length_offset = 4,
   length_size = 2,
   payload_offset = 6,
-  checksum = { name = "checksum", icd_name = "Check sum", type = "u16", offset = -1, size = 2, doc = "" },
+  checksum = { name = "checksum", icd_name = "Check sum", label = "Check sum", type = "u16", offset = -1, size = 2, doc = "" },
   checksum_algorithm = "sum16",
   checksum_doc = "Arithmetic sum, modulo 2^16, of every byte from the message type through the last payload byte (Table 6.2: bytes 2 ... n-1); low byte first (Table 6.3) (E28).",
   message_types = {
@@ -98,22 +98,22 @@ SPEC.payloads = {
     direction = "device_to_host", size = 34, erratum = nil,
     doc = "Output block after AHRScont1 / AHRSreq1.",
     fields = {
-      { name = "heading", icd_name = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
-      { name = "pitch", icd_name = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
-      { name = "roll", icd_name = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
-      { name = "ugyro_x", icd_name = "Ugyro", type = "s16", offset = 6, size = 2, unit = "adc", doc = "Raw gyro X sensor data." },
-      { name = "ugyro_y", icd_name = "Ugyro", type = "s16", offset = 8, size = 2, unit = "adc", doc = "Raw gyro Y sensor data." },
-      { name = "ugyro_z", icd_name = "Ugyro", type = "s16", offset = 10, size = 2, unit = "adc", doc = "Raw gyro Z sensor data." },
-      { name = "uacc_x", icd_name = "Uacc", type = "s16", offset = 12, size = 2, unit = "adc", doc = "Raw accelerometer X sensor data." },
-      { name = "uacc_y", icd_name = "Uacc", type = "s16", offset = 14, size = 2, unit = "adc", doc = "Raw accelerometer Y sensor data." },
-      { name = "uacc_z", icd_name = "Uacc", type = "s16", offset = 16, size = 2, unit = "adc", doc = "Raw accelerometer Z sensor data." },
-      { name = "umag_x", icd_name = "Umag", type = "s16", offset = 18, size = 2, unit = "adc", doc = "Raw magnetometer X sensor data." },
-      { name = "umag_y", icd_name = "Umag", type = "s16", offset = 20, size = 2, unit = "adc", doc = "Raw magnetometer Y sensor data." },
-      { name = "umag_z", icd_name = "Umag", type = "s16", offset = 22, size = 2, unit = "adc", doc = "Raw magnetometer Z sensor data." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 24, size = 4, doc = "" },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
-      { name = "vdd", icd_name = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, multiplexed = 2, erratum = "E19", doc = "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which." },
-      { name = "utermo", icd_name = "Utermo", type = "s16", offset = 32, size = 2, unit = "adc", multiplexed = 7, erratum = "E19", doc = "ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which." },
+      { name = "heading", icd_name = "Heading", label = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
+      { name = "pitch", icd_name = "Pitch", label = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
+      { name = "roll", icd_name = "Roll", label = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
+      { name = "ugyro_x", icd_name = "Ugyro", label = "Ugyro X", type = "s16", offset = 6, size = 2, unit = "adc", doc = "Raw gyro X sensor data." },
+      { name = "ugyro_y", icd_name = "Ugyro", label = "Ugyro Y", type = "s16", offset = 8, size = 2, unit = "adc", doc = "Raw gyro Y sensor data." },
+      { name = "ugyro_z", icd_name = "Ugyro", label = "Ugyro Z", type = "s16", offset = 10, size = 2, unit = "adc", doc = "Raw gyro Z sensor data." },
+      { name = "uacc_x", icd_name = "Uacc", label = "Uacc X", type = "s16", offset = 12, size = 2, unit = "adc", doc = "Raw accelerometer X sensor data." },
+      { name = "uacc_y", icd_name = "Uacc", label = "Uacc Y", type = "s16", offset = 14, size = 2, unit = "adc", doc = "Raw accelerometer Y sensor data." },
+      { name = "uacc_z", icd_name = "Uacc", label = "Uacc Z", type = "s16", offset = 16, size = 2, unit = "adc", doc = "Raw accelerometer Z sensor data." },
+      { name = "umag_x", icd_name = "Umag", label = "Umag X", type = "s16", offset = 18, size = 2, unit = "adc", doc = "Raw magnetometer X sensor data." },
+      { name = "umag_y", icd_name = "Umag", label = "Umag Y", type = "s16", offset = 20, size = 2, unit = "adc", doc = "Raw magnetometer Y sensor data." },
+      { name = "umag_z", icd_name = "Umag", label = "Umag Z", type = "s16", offset = 22, size = 2, unit = "adc", doc = "Raw magnetometer Z sensor data." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 24, size = 4, doc = "" },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
+      { name = "vdd", icd_name = "Vdd", label = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, multiplexed = 2, erratum = "E19", doc = "Combined voltage: successive frames carry the AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not say which." },
+      { name = "utermo", icd_name = "Utermo", label = "Utermo", type = "s16", offset = 32, size = 2, unit = "adc", multiplexed = 7, erratum = "E19", doc = "ADC code of one of 7 temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does not say which." },
     },
   },
   {
@@ -121,17 +121,17 @@ SPEC.payloads = {
     direction = "device_to_host", size = 34, erratum = nil,
     doc = "Output block after AHRScont2 / AHRSreq2.",
     fields = {
-      { name = "heading", icd_name = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
-      { name = "pitch", icd_name = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
-      { name = "roll", icd_name = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
-      { name = "lk0", icd_name = "Lk0", type = "s16", offset = 6, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, scalar component." },
-      { name = "lk1", icd_name = "Lk1", type = "s16", offset = 8, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, first vector component." },
-      { name = "lk2", icd_name = "Lk2", type = "s16", offset = 10, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, second vector component." },
-      { name = "lk3", icd_name = "Lk3", type = "s16", offset = 12, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, third vector component." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 14, size = 14, doc = "" },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
-      { name = "vdd", icd_name = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, doc = "AHRS input voltage." },
-      { name = "utermo", icd_name = "Utermo", type = "s16", offset = 32, size = 2, unit = "degC", multiplier = 1, divisor = 10, doc = "Average temperature of the 3 accelerometers." },
+      { name = "heading", icd_name = "Heading", label = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
+      { name = "pitch", icd_name = "Pitch", label = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
+      { name = "roll", icd_name = "Roll", label = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
+      { name = "lk0", icd_name = "Lk0", label = "Lk0", type = "s16", offset = 6, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, scalar component." },
+      { name = "lk1", icd_name = "Lk1", label = "Lk1", type = "s16", offset = 8, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, first vector component." },
+      { name = "lk2", icd_name = "Lk2", label = "Lk2", type = "s16", offset = 10, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, second vector component." },
+      { name = "lk3", icd_name = "Lk3", label = "Lk3", type = "s16", offset = 12, size = 2, unit = "one", multiplier = 1, divisor = 10000, doc = "Quaternion of orientation, third vector component." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 14, size = 14, doc = "" },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
+      { name = "vdd", icd_name = "Vdd", label = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, doc = "AHRS input voltage." },
+      { name = "utermo", icd_name = "Utermo", label = "Utermo", type = "s16", offset = 32, size = 2, unit = "degC", multiplier = 1, divisor = 10, doc = "Average temperature of the 3 accelerometers." },
     },
   },
   {
@@ -139,22 +139,22 @@ SPEC.payloads = {
     direction = "device_to_host", size = 34, erratum = nil,
     doc = "Output block after AHRScont3 / AHRSreq3 (the default format, section 6.2).",
     fields = {
-      { name = "heading", icd_name = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
-      { name = "pitch", icd_name = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
-      { name = "roll", icd_name = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
-      { name = "gyro_x", icd_name = "GyroX", type = "s16", offset = 6, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about X (lateral axis)." },
-      { name = "gyro_y", icd_name = "GyroY", type = "s16", offset = 8, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about Y (longitudinal axis)." },
-      { name = "gyro_z", icd_name = "GyroZ", type = "s16", offset = 10, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about Z (vertical axis)." },
-      { name = "acc_x", icd_name = "AccX", type = "s16", offset = 12, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along X." },
-      { name = "acc_y", icd_name = "AccY", type = "s16", offset = 14, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along Y." },
-      { name = "acc_z", icd_name = "AccZ", type = "s16", offset = 16, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along Z." },
-      { name = "mag_x", icd_name = "MagX", type = "s16", offset = 18, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along X." },
-      { name = "mag_y", icd_name = "MagY", type = "s16", offset = 20, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along Y." },
-      { name = "mag_z", icd_name = "MagZ", type = "s16", offset = 22, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along Z." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 24, size = 4, doc = "" },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
-      { name = "vdd", icd_name = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, doc = "AHRS input voltage." },
-      { name = "utermo", icd_name = "Utermo", type = "s16", offset = 32, size = 2, unit = "degC", multiplier = 1, divisor = 10, doc = "Average temperature of the 3 accelerometers." },
+      { name = "heading", icd_name = "Heading", label = "Heading", type = "u16", offset = 0, size = 2, unit = "deg", multiplier = 1, divisor = 100, erratum = "E23", doc = "Heading angle." },
+      { name = "pitch", icd_name = "Pitch", label = "Pitch", type = "s16", offset = 2, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Pitch angle." },
+      { name = "roll", icd_name = "Roll", label = "Roll", type = "s16", offset = 4, size = 2, unit = "deg", multiplier = 1, divisor = 100, doc = "Roll angle." },
+      { name = "gyro_x", icd_name = "GyroX", label = "GyroX", type = "s16", offset = 6, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about X (lateral axis)." },
+      { name = "gyro_y", icd_name = "GyroY", label = "GyroY", type = "s16", offset = 8, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about Y (longitudinal axis)." },
+      { name = "gyro_z", icd_name = "GyroZ", label = "GyroZ", type = "s16", offset = 10, size = 2, unit = "deg_per_s", multiplier = 1, divisor = "KG", doc = "Angular rate about Z (vertical axis)." },
+      { name = "acc_x", icd_name = "AccX", label = "AccX", type = "s16", offset = 12, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along X." },
+      { name = "acc_y", icd_name = "AccY", label = "AccY", type = "s16", offset = 14, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along Y." },
+      { name = "acc_z", icd_name = "AccZ", label = "AccZ", type = "s16", offset = 16, size = 2, unit = "g", multiplier = 1, divisor = "KA", doc = "Linear acceleration along Z." },
+      { name = "mag_x", icd_name = "MagX", label = "MagX", type = "s16", offset = 18, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along X." },
+      { name = "mag_y", icd_name = "MagY", label = "MagY", type = "s16", offset = 20, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along Y." },
+      { name = "mag_z", icd_name = "MagZ", label = "MagZ", type = "s16", offset = 22, size = 2, unit = "nT", multiplier = 10, divisor = 1, doc = "Magnetic field along Z." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 24, size = 4, doc = "" },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
+      { name = "vdd", icd_name = "Vdd", label = "Vdd", type = "u16", offset = 30, size = 2, unit = "V", multiplier = 1, divisor = 1000, doc = "AHRS input voltage." },
+      { name = "utermo", icd_name = "Utermo", label = "Utermo", type = "s16", offset = 32, size = 2, unit = "degC", multiplier = 1, divisor = 10, doc = "Average temperature of the 3 accelerometers." },
     },
   },
   {
@@ -162,19 +162,19 @@ SPEC.payloads = {
     direction = "device_to_host", size = 50, erratum = "E21",
     doc = "Sent once when initial alignment completes, before continuous / on-request output or a calibration run starts (6.3.1 - 6.3.3, 6.4). Note the ICD order: heading, roll, pitch.",
     fields = {
-      { name = "gyro_bias_x", icd_name = "Gyros bias", type = "f32", offset = 0, size = 4, unit = "adc", doc = "Gyro X bias." },
-      { name = "gyro_bias_y", icd_name = "Gyros bias", type = "f32", offset = 4, size = 4, unit = "adc", doc = "Gyro Y bias." },
-      { name = "gyro_bias_z", icd_name = "Gyros bias", type = "f32", offset = 8, size = 4, unit = "adc", doc = "Gyro Z bias." },
-      { name = "average_acc_x", icd_name = "Average acceleration", type = "f32", offset = 12, size = 4, unit = "adc", doc = "Average acceleration along X." },
-      { name = "average_acc_y", icd_name = "Average acceleration", type = "f32", offset = 16, size = 4, unit = "adc", doc = "Average acceleration along Y." },
-      { name = "average_acc_z", icd_name = "Average acceleration", type = "f32", offset = 20, size = 4, unit = "adc", doc = "Average acceleration along Z." },
-      { name = "average_mag_x", icd_name = "Average magn. field", type = "f32", offset = 24, size = 4, unit = "adc", doc = "Average magnetic field along X." },
-      { name = "average_mag_y", icd_name = "Average magn. field", type = "f32", offset = 28, size = 4, unit = "adc", doc = "Average magnetic field along Y." },
-      { name = "average_mag_z", icd_name = "Average magn. field", type = "f32", offset = 32, size = 4, unit = "adc", doc = "Average magnetic field along Z." },
-      { name = "initial_heading", icd_name = "Initial Heading", type = "f32", offset = 36, size = 4, unit = "deg", doc = "Heading at the end of alignment." },
-      { name = "initial_roll", icd_name = "Initial Roll", type = "f32", offset = 40, size = 4, unit = "deg", doc = "Roll at the end of alignment." },
-      { name = "initial_pitch", icd_name = "Initial Pitch", type = "f32", offset = 44, size = 4, unit = "deg", doc = "Pitch at the end of alignment." },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 48, size = 2, encoding = "usw", erratum = "E27", doc = "Unit Status Word: 0 after a successful alignment, non-zero otherwise." },
+      { name = "gyro_bias_x", icd_name = "Gyros bias", label = "Gyros bias X", type = "f32", offset = 0, size = 4, unit = "adc", doc = "Gyro X bias." },
+      { name = "gyro_bias_y", icd_name = "Gyros bias", label = "Gyros bias Y", type = "f32", offset = 4, size = 4, unit = "adc", doc = "Gyro Y bias." },
+      { name = "gyro_bias_z", icd_name = "Gyros bias", label = "Gyros bias Z", type = "f32", offset = 8, size = 4, unit = "adc", doc = "Gyro Z bias." },
+      { name = "average_acc_x", icd_name = "Average acceleration", label = "Average acceleration X", type = "f32", offset = 12, size = 4, unit = "adc", doc = "Average acceleration along X." },
+      { name = "average_acc_y", icd_name = "Average acceleration", label = "Average acceleration Y", type = "f32", offset = 16, size = 4, unit = "adc", doc = "Average acceleration along Y." },
+      { name = "average_acc_z", icd_name = "Average acceleration", label = "Average acceleration Z", type = "f32", offset = 20, size = 4, unit = "adc", doc = "Average acceleration along Z." },
+      { name = "average_mag_x", icd_name = "Average magn. field", label = "Average magn. field X", type = "f32", offset = 24, size = 4, unit = "adc", doc = "Average magnetic field along X." },
+      { name = "average_mag_y", icd_name = "Average magn. field", label = "Average magn. field Y", type = "f32", offset = 28, size = 4, unit = "adc", doc = "Average magnetic field along Y." },
+      { name = "average_mag_z", icd_name = "Average magn. field", label = "Average magn. field Z", type = "f32", offset = 32, size = 4, unit = "adc", doc = "Average magnetic field along Z." },
+      { name = "initial_heading", icd_name = "Initial Heading", label = "Initial Heading", type = "f32", offset = 36, size = 4, unit = "deg", doc = "Heading at the end of alignment." },
+      { name = "initial_roll", icd_name = "Initial Roll", label = "Initial Roll", type = "f32", offset = 40, size = 4, unit = "deg", doc = "Roll at the end of alignment." },
+      { name = "initial_pitch", icd_name = "Initial Pitch", label = "Initial Pitch", type = "f32", offset = 44, size = 4, unit = "deg", doc = "Pitch at the end of alignment." },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 48, size = 2, encoding = "usw", erratum = "E27", doc = "Unit Status Word: 0 after a successful alignment, non-zero otherwise." },
     },
   },
   {
@@ -182,17 +182,17 @@ SPEC.payloads = {
     direction = "host_to_device", size = 50, erratum = nil,
     doc = "The data message the host sends right after LoadAHRSPar (6.3.6). Read the block first (ReadAHRSPar), change it, send it back.",
     fields = {
-      { name = "update_rate", icd_name = "Update rate", type = "u16", offset = 0, size = 2, unit = "Hz", erratum = "E22", doc = "Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz)." },
-      { name = "alignment_time", icd_name = "Initial alignment time", type = "u16", offset = 2, size = 2, unit = "s", erratum = "E30", doc = "Initial alignment duration; default 30 s, change only in agreement with Inertial Labs." },
-      { name = "declination", icd_name = "Magnetic declination, Mdec", type = "f32", offset = 4, size = 4, unit = "deg", encoding = "declination", doc = "Magnetic declination; a value above 360 asks the AHRS to compute it from position and date." },
-      { name = "latitude", icd_name = "Latitude", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Latitude." },
-      { name = "longitude", icd_name = "Longitude", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Longitude." },
-      { name = "altitude", icd_name = "Altitude", type = "f32", offset = 16, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
-      { name = "date", icd_name = "Date (Year, Month, Day)", type = "f32", offset = 20, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
-      { name = "alignment_angle_a1", icd_name = "Alignment angle A1", type = "f32", offset = 24, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B)." },
-      { name = "alignment_angle_a2", icd_name = "Alignment angle A2", type = "f32", offset = 28, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B)." },
-      { name = "alignment_angle_a3", icd_name = "Alignment angle A3", type = "f32", offset = 32, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B)." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 36, size = 14, doc = "Should be all zeros." },
+      { name = "update_rate", icd_name = "Update rate", label = "Update rate", type = "u16", offset = 0, size = 2, unit = "Hz", erratum = "E22", doc = "Output data rate, 1 to 100 Hz (the AHRS limits NMEA output to 50 Hz)." },
+      { name = "alignment_time", icd_name = "Initial alignment time", label = "Initial alignment time", type = "u16", offset = 2, size = 2, unit = "s", erratum = "E30", doc = "Initial alignment duration; default 30 s, change only in agreement with Inertial Labs." },
+      { name = "declination", icd_name = "Magnetic declination, Mdec", label = "Magnetic declination, Mdec", type = "f32", offset = 4, size = 4, unit = "deg", encoding = "declination", doc = "Magnetic declination; a value above 360 asks the AHRS to compute it from position and date." },
+      { name = "latitude", icd_name = "Latitude", label = "Latitude", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Latitude." },
+      { name = "longitude", icd_name = "Longitude", label = "Longitude", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Longitude." },
+      { name = "altitude", icd_name = "Altitude", label = "Altitude", type = "f32", offset = 16, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
+      { name = "date", icd_name = "Date (Year, Month, Day)", label = "Date (Year, Month, Day)", type = "f32", offset = 20, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
+      { name = "alignment_angle_a1", icd_name = "Alignment angle A1", label = "Alignment angle A1", type = "f32", offset = 24, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 1: AHRS Y axis relative to the object's longitudinal axis in its horizontal plane, clockwise positive (Appendix B)." },
+      { name = "alignment_angle_a2", icd_name = "Alignment angle A2", label = "Alignment angle A2", type = "f32", offset = 28, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 2: inclination of the AHRS Y axis to the object's horizontal plane, up positive (Appendix B)." },
+      { name = "alignment_angle_a3", icd_name = "Alignment angle A3", label = "Alignment angle A3", type = "f32", offset = 32, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 3: inclination of the AHRS X axis about its Y axis, X down positive (Appendix B)." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 36, size = 14, doc = "Should be all zeros." },
     },
   },
   {
@@ -200,18 +200,18 @@ SPEC.payloads = {
     direction = "device_to_host", size = 50, erratum = nil,
     doc = "The AHRS answer to ReadAHRSPar (6.3.7).",
     fields = {
-      { name = "update_rate", icd_name = "Measurement rate", type = "u16", offset = 0, size = 2, unit = "Hz", erratum = "E24", doc = "Output data rate." },
-      { name = "alignment_time", icd_name = "Initial alignment time", type = "u16", offset = 2, size = 2, unit = "s", erratum = "E30", doc = "Initial alignment duration." },
-      { name = "declination", icd_name = "Magnetic declination", type = "f32", offset = 4, size = 4, unit = "deg", encoding = "declination", doc = "Magnetic declination; a value above 360 means the AHRS computes it." },
-      { name = "latitude", icd_name = "Latitude", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Latitude." },
-      { name = "longitude", icd_name = "Longitude", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Longitude." },
-      { name = "altitude", icd_name = "Altitude", type = "f32", offset = 16, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
-      { name = "date", icd_name = "Date (Year, Month, Day)", type = "f32", offset = 20, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
-      { name = "alignment_angle_a1", icd_name = "Alignment angle A1", type = "f32", offset = 24, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 1 (Appendix B)." },
-      { name = "alignment_angle_a2", icd_name = "Alignment angle A2", type = "f32", offset = 28, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 2 (Appendix B)." },
-      { name = "alignment_angle_a3", icd_name = "Alignment angle A3", type = "f32", offset = 32, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 3 (Appendix B)." },
-      { name = "device_id", icd_name = "Device ID", type = "char", offset = 36, size = 8, doc = "Device identifier (read only)." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 44, size = 6, doc = "" },
+      { name = "update_rate", icd_name = "Measurement rate", label = "Measurement rate", type = "u16", offset = 0, size = 2, unit = "Hz", erratum = "E24", doc = "Output data rate." },
+      { name = "alignment_time", icd_name = "Initial alignment time", label = "Initial alignment time", type = "u16", offset = 2, size = 2, unit = "s", erratum = "E30", doc = "Initial alignment duration." },
+      { name = "declination", icd_name = "Magnetic declination", label = "Magnetic declination", type = "f32", offset = 4, size = 4, unit = "deg", encoding = "declination", doc = "Magnetic declination; a value above 360 means the AHRS computes it." },
+      { name = "latitude", icd_name = "Latitude", label = "Latitude", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Latitude." },
+      { name = "longitude", icd_name = "Longitude", label = "Longitude", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Longitude." },
+      { name = "altitude", icd_name = "Altitude", label = "Altitude", type = "f32", offset = 16, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
+      { name = "date", icd_name = "Date (Year, Month, Day)", label = "Date (Year, Month, Day)", type = "f32", offset = 20, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
+      { name = "alignment_angle_a1", icd_name = "Alignment angle A1", label = "Alignment angle A1", type = "f32", offset = 24, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 1 (Appendix B)." },
+      { name = "alignment_angle_a2", icd_name = "Alignment angle A2", label = "Alignment angle A2", type = "f32", offset = 28, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 2 (Appendix B)." },
+      { name = "alignment_angle_a3", icd_name = "Alignment angle A3", label = "Alignment angle A3", type = "f32", offset = 32, size = 4, unit = "deg", erratum = "E31", doc = "Mounting angle 3 (Appendix B)." },
+      { name = "device_id", icd_name = "Device ID", label = "Device ID", type = "char", offset = 36, size = 8, doc = "Device identifier (read only)." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 44, size = 6, doc = "" },
     },
   },
   {
@@ -219,7 +219,7 @@ SPEC.payloads = {
     direction = "device_to_host", size = 50, erratum = nil,
     doc = "The AHRS answer to GetVerFirmware (6.3.10).",
     fields = {
-      { name = "version", icd_name = "Firmware version", type = "char", offset = 0, size = 50, doc = "Firmware version text, NUL-padded." },
+      { name = "version", icd_name = "Firmware version", label = "Firmware version", type = "char", offset = 0, size = 50, doc = "Firmware version text, NUL-padded." },
     },
   },
   {
@@ -227,8 +227,8 @@ SPEC.payloads = {
     direction = "device_to_host", size = 4, erratum = nil,
     doc = "The AHRS answer to GetBIT (6.3.11).",
     fields = {
-      { name = "utermo100", icd_name = "Utermo100", type = "s16", offset = 0, size = 2, unit = "degC", multiplier = 1, divisor = 100, erratum = "E4", doc = "AHRS temperature in 1/100 degC." },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 2, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
+      { name = "utermo100", icd_name = "Utermo100", label = "Utermo100", type = "s16", offset = 0, size = 2, unit = "degC", multiplier = 1, divisor = 100, erratum = "E4", doc = "AHRS temperature in 1/100 degC." },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 2, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
     },
   },
   {
@@ -236,12 +236,12 @@ SPEC.payloads = {
     direction = "host_to_device", size = 22, erratum = nil,
     doc = "The data message the host sends right after Start3DClb, Start2D2TClb or Start2DClb (6.4.1, 6.4.5, 6.4.8).",
     fields = {
-      { name = "reference_azimuth", icd_name = "Reserved", type = "f32", offset = 0, size = 4, unit = "deg", erratum = "E8", doc = "Reference azimuth (6.4.8); no influence on 2D calibration." },
-      { name = "accumulation_time", icd_name = "Time of data accumulation in one run", type = "u16", offset = 4, size = 2, unit = "s", erratum = "E30", doc = "Data accumulation time of one run." },
-      { name = "latitude", icd_name = "Latitude", type = "f32", offset = 6, size = 4, unit = "deg", doc = "Latitude." },
-      { name = "longitude", icd_name = "Longitude", type = "f32", offset = 10, size = 4, unit = "deg", doc = "Longitude." },
-      { name = "altitude", icd_name = "Altitude", type = "f32", offset = 14, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
-      { name = "date", icd_name = "Date (Year, Month, Day)", type = "f32", offset = 18, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
+      { name = "reference_azimuth", icd_name = "Reserved", label = "Reserved", type = "f32", offset = 0, size = 4, unit = "deg", erratum = "E8", doc = "Reference azimuth (6.4.8); no influence on 2D calibration." },
+      { name = "accumulation_time", icd_name = "Time of data accumulation in one run", label = "Time of data accumulation in one run", type = "u16", offset = 4, size = 2, unit = "s", erratum = "E30", doc = "Data accumulation time of one run." },
+      { name = "latitude", icd_name = "Latitude", label = "Latitude", type = "f32", offset = 6, size = 4, unit = "deg", doc = "Latitude." },
+      { name = "longitude", icd_name = "Longitude", label = "Longitude", type = "f32", offset = 10, size = 4, unit = "deg", doc = "Longitude." },
+      { name = "altitude", icd_name = "Altitude", label = "Altitude", type = "f32", offset = 14, size = 4, unit = "m", erratum = "E31", doc = "Altitude." },
+      { name = "date", icd_name = "Date (Year, Month, Day)", label = "Date (Year, Month, Day)", type = "f32", offset = 18, size = 4, unit = "year", encoding = "date", doc = "Date as Year + (Month - 1)/12 + Day/365." },
     },
   },
   {
@@ -249,22 +249,22 @@ SPEC.payloads = {
     direction = "device_to_host", size = 52, erratum = "E1",
     doc = "Sent when a calibration completes (after the accumulation time, StopClbRun, or FinishClb).",
     fields = {
-      { name = "calibration_type", icd_name = "Type of calibration", type = "u8", offset = 0, size = 1, enum = "calibration_type", doc = "1 for 2D, 2 for 2D-2T, 3 for 3D calibration." },
-      { name = "runs_used", icd_name = "Number of used calibration runs", type = "u8", offset = 1, size = 1, doc = "Number of calibration runs used." },
-      { name = "data_used", icd_name = "Percent of used data points", type = "u8", offset = 2, size = 1, unit = "percent", doc = "Percent of data points used (2D and 3D calibrations only)." },
-      { name = "success", icd_name = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate." },
-      { name = "tm_c_11", icd_name = "Matrix for soft iron correction", type = "f32", offset = 4, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 1." },
-      { name = "tm_c_12", icd_name = "Matrix for soft iron correction", type = "f32", offset = 8, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 2." },
-      { name = "tm_c_13", icd_name = "Matrix for soft iron correction", type = "f32", offset = 12, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 3." },
-      { name = "tm_c_21", icd_name = "Matrix for soft iron correction", type = "f32", offset = 16, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 1." },
-      { name = "tm_c_22", icd_name = "Matrix for soft iron correction", type = "f32", offset = 20, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 2." },
-      { name = "tm_c_23", icd_name = "Matrix for soft iron correction", type = "f32", offset = 24, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 3." },
-      { name = "tm_c_31", icd_name = "Matrix for soft iron correction", type = "f32", offset = 28, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 1." },
-      { name = "tm_c_32", icd_name = "Matrix for soft iron correction", type = "f32", offset = 32, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 2." },
-      { name = "tm_c_33", icd_name = "Matrix for soft iron correction", type = "f32", offset = 36, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 3." },
-      { name = "hm_0_x", icd_name = "Matrix for hard iron correction", type = "f32", offset = 40, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 1." },
-      { name = "hm_0_y", icd_name = "Matrix for hard iron correction", type = "f32", offset = 44, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 2." },
-      { name = "hm_0_z", icd_name = "Matrix for hard iron correction", type = "f32", offset = 48, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 3." },
+      { name = "calibration_type", icd_name = "Type of calibration", label = "Type of calibration", type = "u8", offset = 0, size = 1, enum = "calibration_type", doc = "1 for 2D, 2 for 2D-2T, 3 for 3D calibration." },
+      { name = "runs_used", icd_name = "Number of used calibration runs", label = "Number of used calibration runs", type = "u8", offset = 1, size = 1, doc = "Number of calibration runs used." },
+      { name = "data_used", icd_name = "Percent of used data points", label = "Percent of used data points", type = "u8", offset = 2, size = 1, unit = "percent", doc = "Percent of data points used (2D and 3D calibrations only)." },
+      { name = "success", icd_name = "Calibration success", label = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: not successful; 1..254: predicted 3-sigma heading error in deg*10; 255: successful without an estimate." },
+      { name = "tm_c_11", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 11", type = "f32", offset = 4, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 1." },
+      { name = "tm_c_12", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 12", type = "f32", offset = 8, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 2." },
+      { name = "tm_c_13", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 13", type = "f32", offset = 12, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 3." },
+      { name = "tm_c_21", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 21", type = "f32", offset = 16, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 1." },
+      { name = "tm_c_22", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 22", type = "f32", offset = 20, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 2." },
+      { name = "tm_c_23", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 23", type = "f32", offset = 24, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 3." },
+      { name = "tm_c_31", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 31", type = "f32", offset = 28, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 1." },
+      { name = "tm_c_32", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 32", type = "f32", offset = 32, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 2." },
+      { name = "tm_c_33", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 33", type = "f32", offset = 36, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 3." },
+      { name = "hm_0_x", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction X", type = "f32", offset = 40, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 1." },
+      { name = "hm_0_y", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction Y", type = "f32", offset = 44, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 2." },
+      { name = "hm_0_z", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction Z", type = "f32", offset = 48, size = 4, unit = "adc", erratum = "E1", doc = "Hard-iron vector Hm_0 component 3." },
     },
   },
   {
@@ -272,15 +272,15 @@ SPEC.payloads = {
     direction = "device_to_host", size = 30, erratum = nil,
     doc = "Sent after each run of a 2D-2T calibration (6.4.5).",
     fields = {
-      { name = "calibration_type", icd_name = "Type of calibration", type = "u8", offset = 0, size = 1, enum = "calibration_type", doc = "2 for 2D-2T calibration." },
-      { name = "run", icd_name = "Calibration run", type = "u8", offset = 1, size = 1, doc = "Number of this run (1, 2, ...)." },
-      { name = "data_used", icd_name = "Percent of used data points", type = "u8", offset = 2, size = 1, unit = "percent", doc = "Percent of data points used." },
-      { name = "success", icd_name = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate." },
-      { name = "reserved_1", icd_name = "Reserved", type = "reserved", offset = 4, size = 4, erratum = "E32", doc = "" },
-      { name = "average_pitch", icd_name = "Average pitch, deg", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Average pitch during the run." },
-      { name = "average_roll", icd_name = "Average roll, deg", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Average roll during the run." },
-      { name = "reserved_2", icd_name = "Reserved", type = "reserved", offset = 16, size = 12, erratum = "E32", doc = "" },
-      { name = "usw", icd_name = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
+      { name = "calibration_type", icd_name = "Type of calibration", label = "Type of calibration", type = "u8", offset = 0, size = 1, enum = "calibration_type", doc = "2 for 2D-2T calibration." },
+      { name = "run", icd_name = "Calibration run", label = "Calibration run", type = "u8", offset = 1, size = 1, doc = "Number of this run (1, 2, ...)." },
+      { name = "data_used", icd_name = "Percent of used data points", label = "Percent of used data points", type = "u8", offset = 2, size = 1, unit = "percent", doc = "Percent of data points used." },
+      { name = "success", icd_name = "Calibration success", label = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: run not successful (excluded); 1..254: predicted heading error in deg*10; 255: successful without an estimate." },
+      { name = "reserved_1", icd_name = "Reserved", label = "Reserved 1", type = "reserved", offset = 4, size = 4, erratum = "E32", doc = "" },
+      { name = "average_pitch", icd_name = "Average pitch, deg", label = "Average pitch, deg", type = "f32", offset = 8, size = 4, unit = "deg", doc = "Average pitch during the run." },
+      { name = "average_roll", icd_name = "Average roll, deg", label = "Average roll, deg", type = "f32", offset = 12, size = 4, unit = "deg", doc = "Average roll during the run." },
+      { name = "reserved_2", icd_name = "Reserved", label = "Reserved 2", type = "reserved", offset = 16, size = 12, erratum = "E32", doc = "" },
+      { name = "usw", icd_name = "USW", label = "USW", type = "u16", offset = 28, size = 2, encoding = "usw", doc = "Unit Status Word (section 6.5)." },
     },
   },
   {
@@ -288,7 +288,7 @@ SPEC.payloads = {
     direction = "host_to_device", size = 6, erratum = nil,
     doc = "The data message the host sends right after StartClbRun (6.4.6); its 6 bytes do not influence 2D-2T calibration and may be any, e.g. zeros.",
     fields = {
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 0, size = 6, erratum = "E32", doc = "" },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 0, size = 6, erratum = "E32", doc = "" },
     },
   },
   {
@@ -296,22 +296,22 @@ SPEC.payloads = {
     direction = "device_to_host", size = 52, erratum = "E2",
     doc = "The AHRS answer to GetClbRes (6.4.10).",
     fields = {
-      { name = "calibration_type", icd_name = "Type of calibration performed", type = "u8", offset = 0, size = 1, enum = "calibration_status_type", doc = "0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software." },
-      { name = "runs_used", icd_name = "Number of used calibration runs", type = "u8", offset = 1, size = 1, doc = "Number of calibration runs used." },
-      { name = "reserved", icd_name = "Reserved", type = "reserved", offset = 2, size = 1, erratum = "E3", doc = "" },
-      { name = "success", icd_name = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate." },
-      { name = "tm_c_11", icd_name = "Matrix for soft iron correction", type = "f32", offset = 4, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 1." },
-      { name = "tm_c_12", icd_name = "Matrix for soft iron correction", type = "f32", offset = 8, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 2." },
-      { name = "tm_c_13", icd_name = "Matrix for soft iron correction", type = "f32", offset = 12, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 3." },
-      { name = "tm_c_21", icd_name = "Matrix for soft iron correction", type = "f32", offset = 16, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 1." },
-      { name = "tm_c_22", icd_name = "Matrix for soft iron correction", type = "f32", offset = 20, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 2." },
-      { name = "tm_c_23", icd_name = "Matrix for soft iron correction", type = "f32", offset = 24, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 3." },
-      { name = "tm_c_31", icd_name = "Matrix for soft iron correction", type = "f32", offset = 28, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 1." },
-      { name = "tm_c_32", icd_name = "Matrix for soft iron correction", type = "f32", offset = 32, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 2." },
-      { name = "tm_c_33", icd_name = "Matrix for soft iron correction", type = "f32", offset = 36, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 3." },
-      { name = "hm_0_x", icd_name = "Matrix for hard iron correction", type = "f32", offset = 40, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 1." },
-      { name = "hm_0_y", icd_name = "Matrix for hard iron correction", type = "f32", offset = 44, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 2." },
-      { name = "hm_0_z", icd_name = "Matrix for hard iron correction", type = "f32", offset = 48, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 3." },
+      { name = "calibration_type", icd_name = "Type of calibration performed", label = "Type of calibration performed", type = "u8", offset = 0, size = 1, enum = "calibration_status_type", doc = "0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D; above 0x80: parameters loaded by other software." },
+      { name = "runs_used", icd_name = "Number of used calibration runs", label = "Number of used calibration runs", type = "u8", offset = 1, size = 1, doc = "Number of calibration runs used." },
+      { name = "reserved", icd_name = "Reserved", label = "Reserved", type = "reserved", offset = 2, size = 1, erratum = "E3", doc = "" },
+      { name = "success", icd_name = "Calibration success", label = "Calibration success", type = "u8", offset = 3, size = 1, encoding = "calibration_success", erratum = "E26", doc = "0: not successful; 1..254: predicted heading error in deg*10; 255: successful without an estimate." },
+      { name = "tm_c_11", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 11", type = "f32", offset = 4, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 1." },
+      { name = "tm_c_12", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 12", type = "f32", offset = 8, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 2." },
+      { name = "tm_c_13", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 13", type = "f32", offset = 12, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 1 column 3." },
+      { name = "tm_c_21", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 21", type = "f32", offset = 16, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 1." },
+      { name = "tm_c_22", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 22", type = "f32", offset = 20, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 2." },
+      { name = "tm_c_23", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 23", type = "f32", offset = 24, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 2 column 3." },
+      { name = "tm_c_31", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 31", type = "f32", offset = 28, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 1." },
+      { name = "tm_c_32", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 32", type = "f32", offset = 32, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 2." },
+      { name = "tm_c_33", icd_name = "Matrix for soft iron correction", label = "Matrix for soft iron correction 33", type = "f32", offset = 36, size = 4, unit = "one", doc = "Soft-iron matrix Tm_c row 3 column 3." },
+      { name = "hm_0_x", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction X", type = "f32", offset = 40, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 1." },
+      { name = "hm_0_y", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction Y", type = "f32", offset = 44, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 2." },
+      { name = "hm_0_z", icd_name = "Matrix for hard iron correction", label = "Matrix for hard iron correction Z", type = "f32", offset = 48, size = 4, unit = "adc", erratum = "E2", doc = "Hard-iron vector Hm_0 component 3." },
     },
   },
   {
@@ -319,7 +319,7 @@ SPEC.payloads = {
     direction = "device_to_host", size = 2, erratum = nil,
     doc = "The checksum of the message the AHRS received (E12).",
     fields = {
-      { name = "checksum", icd_name = "Check sum", type = "u16", offset = 0, size = 2, doc = "Checksum of the acknowledged message, message type through payload." },
+      { name = "checksum", icd_name = "Check sum", label = "Check sum", type = "u16", offset = 0, size = 2, doc = "Checksum of the acknowledged message, message type through payload." },
     },
   },
 }
@@ -343,7 +343,7 @@ SPEC.variants = {
   { name = "g300_a2_tga", part_number = "AHRS-G300-A2-TGA-C1-V1.1", values = { KA = 10000, KG = 100 } },
 }
 
-SPEC.encodings = { date = { terms = { { part = "year", offset = 0, divisor = 1 }, { part = "month", offset = -1, divisor = 12 }, { part = "day", offset = 0, divisor = 365 } }, year_min = 1900, year_max = 2199 }, declination = { min = -180, max = 180, compute_above = 360 }, calibration_success = { failed = 0, no_estimate = 255, accuracy_divisor = 10 } }
+SPEC.encodings = { date = { terms = { { part = "year", offset = 0, divisor = 1 }, { part = "month", offset = -1, divisor = 12 }, { part = "day", offset = 0, divisor = 365 } }, year_min = 1900, year_max = 2199 }, declination = { min = -180, max = 180, compute_above = 360 }, calibration_success = { failed = 0, no_estimate = 255, accuracy_divisor = 10, accuracy_unit = "deg" } }
 
 -- 6.5, Table 6.18, Table 6.19.
 SPEC.status_word = {
@@ -376,12 +376,12 @@ SPEC.nmea = {
   identifier = "PAHR",
   max_length = 82,
   fields = {
-    { name = "roll", icd_name = "RRRR.rr", format = "decimal", width = 4, decimals = 2, unit = "deg", min = -18000, max = 18000, doc = "Roll, hundredths of a degree." },
-    { name = "pitch", icd_name = "PPP.pp", format = "decimal", width = 3, decimals = 2, unit = "deg", min = -9000, max = 9000, doc = "Pitch, hundredths of a degree." },
-    { name = "heading", icd_name = "HHH.hh", format = "decimal", width = 3, decimals = 2, unit = "deg", min = 0, max = 35999, doc = "Heading, hundredths of a degree." },
-    { name = "temperature", icd_name = "TTT.t", format = "decimal", width = 3, decimals = 1, unit = "degC", min = -999, max = 9999, doc = "Average accelerometer temperature, tenths of a degree Celsius." },
-    { name = "vdd", icd_name = "V.vv", format = "decimal", width = 1, decimals = 2, unit = "V", min = 0, max = 999, doc = "AHRS input voltage, hundredths of a volt." },
-    { name = "usw", icd_name = "SSSS", format = "hex", width = 4, decimals = 0, min = 0, max = 65535, encoding = "usw", doc = "Unit Status Word (section 6.5), four hex digits." },
+    { name = "roll", icd_name = "RRRR.rr", label = "Roll", format = "decimal", width = 4, decimals = 2, unit = "deg", min = -18000, max = 18000, doc = "Roll, hundredths of a degree." },
+    { name = "pitch", icd_name = "PPP.pp", label = "Pitch", format = "decimal", width = 3, decimals = 2, unit = "deg", min = -9000, max = 9000, doc = "Pitch, hundredths of a degree." },
+    { name = "heading", icd_name = "HHH.hh", label = "Heading", format = "decimal", width = 3, decimals = 2, unit = "deg", min = 0, max = 35999, doc = "Heading, hundredths of a degree." },
+    { name = "temperature", icd_name = "TTT.t", label = "Temperature", format = "decimal", width = 3, decimals = 1, unit = "degC", min = -999, max = 9999, doc = "Average accelerometer temperature, tenths of a degree Celsius." },
+    { name = "vdd", icd_name = "V.vv", label = "Vdd", format = "decimal", width = 1, decimals = 2, unit = "V", min = 0, max = 999, doc = "AHRS input voltage, hundredths of a volt." },
+    { name = "usw", icd_name = "SSSS", label = "USW", format = "hex", width = 4, decimals = 0, min = 0, max = 65535, encoding = "usw", doc = "Unit Status Word (section 6.5), four hex digits." },
   },
 }
 
@@ -997,12 +997,17 @@ end
 -- direction of a conversation; bytes are fed packet by packet, in capture order. Each held byte
 -- remembers the packet it came in and its offset there, so that a message or a run of discarded
 -- bytes can be shown where it lies, or reassembled when it spans packets.
+--
+-- A candidate that fails its checksum is shown as damaged, but only once the scan has passed its
+-- bytes: if a valid message, or another damaged candidate, starts inside them, the candidate was
+-- truncated (its rest never came, and the bytes after it are the next message's) and is shown
+-- as such, up to where that message starts, never reaching into it.
 
 local Stream = {}
 Stream.__index = Stream
 
 function Stream.new()
-  return setmetatable({ buffer = "", frames = {}, offsets = {}, discarded = 0 }, Stream)
+  return setmetatable({ buffer = "", frames = {}, offsets = {}, discarded = 0, suspect = nil }, Stream)
 end
 
 -- A piece of the held bytes, first to last (1-based): its bytes and where its first byte came from.
@@ -1035,11 +1040,23 @@ local function damaged(s, pos, reason, sent, computed, size)
     sentence = sentence }
 end
 
+-- The damaged candidate held until the scan has passed its bytes, cut to its first `size` bytes
+-- when it was truncated.
+local function settle(suspect, size)
+  local bad = suspect.item
+  if size < #bad.raw then
+    bad.truncated_from, bad.reason, bad.sent, bad.computed = #bad.raw, "truncated", nil, nil
+    bad.raw = bad.raw:sub(1, size)
+    bad.contiguous = suspect.frames[size] == bad.frame
+  end
+  return bad
+end
+
 -- Add the bytes of packet `frame`; return what they complete, in order: messages
 -- ({ kind = "message", raw, frame, offset, contiguous, sentence = values or nil }), runs of
 -- discarded bytes ({ kind = "discard", ... }) and damaged frames and sentences, whose bytes are
--- discarded too ({ kind = "damaged", reason, sent, computed, ... }). A candidate that needs bytes
--- not yet received waits for the next packet.
+-- discarded too ({ kind = "damaged", reason, sent, computed, truncated_from, ... }). A candidate
+-- that needs bytes not yet received waits for the next packet.
 function Stream:feed(data, frame)
   local base = #self.buffer
   self.buffer = self.buffer .. data
@@ -1059,8 +1076,17 @@ function Stream:feed(data, frame)
       run = nil
     end
   end
+  -- Show the suspect once the scan is past it, or cut where a message starts inside it.
+  local function decide(pos, starts)
+    local suspect = self.suspect
+    if suspect and (pos > suspect.last or starts) then
+      table.insert(out, settle(suspect, math.min(pos - suspect.first, #suspect.item.raw)))
+      self.suspect = nil
+    end
+  end
   local pos = 1
   while pos <= #s do
+    decide(pos, false)
     local first = s:byte(pos)
     if first ~= P.header:byte(1) and first ~= P.SENTENCE_START then
       run = run or pos
@@ -1077,13 +1103,19 @@ function Stream:feed(data, frame)
       elseif used == P.INVALID then
         local bad = damaged(s, pos, extra, sent, computed, size)
         if bad then
+          decide(pos, true)
           local piece = self:piece(pos, pos + size - 1)
           bad.raw, bad.frame, bad.offset, bad.contiguous = piece.raw, piece.frame, piece.offset, piece.contiguous
-          table.insert(out, bad)
+          local frames = {}
+          for i = pos, pos + size - 1 do
+            frames[i - pos + 1] = self.frames[i]
+          end
+          self.suspect = { item = bad, first = pos, last = pos + size - 1, frames = frames }
         end
         run = run or pos
         pos = pos + 1
       else
+        decide(pos, true)
         close(pos)
         local piece = self:piece(pos, pos + used - 1)
         piece.kind = "message"
@@ -1093,7 +1125,11 @@ function Stream:feed(data, frame)
       end
     end
   end
+  decide(pos, false)
   close(pos)
+  if self.suspect then
+    self.suspect.first, self.suspect.last = self.suspect.first - pos + 1, self.suspect.last - pos + 1
+  end
   self.buffer = s:sub(pos)
   local frames, offsets = {}, {}
   for i = pos, #s do
@@ -1112,21 +1148,44 @@ end
 -- what is owed, then against what the current state's timer sends (alignment blocks, output,
 -- calibration results), then against output still in flight from the previous state. A message
 -- nothing explains is shown as such, never guessed. Owed answers that do not come within the
--- answer timeout are reported missing on the request.
+-- answer timeout are reported missing on the request; only those: an answer owed to a retry sent
+-- before that timeout is still owed. A capture begun mid-stream starts, as `Host.mid_stream`
+-- does, in the state where the output of the start command of the preferences flows.
 
 local Context = {}
 Context.__index = Context
 
 local MACHINE = SPEC.machine
 
--- settings: { firmware = version text or "", timeout = seconds }
+-- The state in which the output a start command chose flows: the command's transition from the
+-- initial state, then the timers' transitions (the alignment) to the state that sends output.
+function Context.streaming_state(command, firmware)
+  local first = P.lookup(MACHINE.initial, command, firmware)
+  local state = first and first.to or MACHINE.initial
+  for _ = 1, #MACHINE.states do
+    local _, timed = P.timer_transition(state)
+    if timed == nil or timed.to == state then
+      break
+    end
+    state = timed.to
+  end
+  return state
+end
+
+-- settings: { firmware = version text or "", timeout = seconds, start = the command whose output
+-- the capture begins in, or nil }
 function Context.new(settings)
+  local state, output = MACHINE.initial, nil
+  if settings.start then
+    state = Context.streaming_state(settings.start, settings.firmware)
+    output = P.commands[settings.start].starts_output
+  end
   return setmetatable({
     settings = settings,
-    state = MACHINE.initial, -- what the host has seen of the device's state
-    target = MACHINE.initial, -- the state once every owed answer has come
+    state = state, -- what the host has seen of the device's state
+    target = state, -- the state once every owed answer has come
     owed = {},
-    output = nil, -- the output format the last start command chose
+    output = output, -- the output format the last start command (or the preferences) chose
     timer_index = 0,
     late_state = nil,
     late_until = 0,
@@ -1157,12 +1216,16 @@ function Context:timer_done(state, time)
   end
 end
 
--- Owed answers past their deadline: reported on their request, forgotten.
+-- Owed answers past their deadline: reported on their request (the first one each), forgotten.
+-- What is owed to a later request (a retry) keeps its own deadline.
 function Context:expire(time)
-  local owed = self.owed[1]
-  if owed and time > owed.deadline then
-    owed.request.missing = owed.item
-    self.owed = {}
+  local expired = false
+  while self.owed[1] and time > self.owed[1].deadline do
+    local owed = table.remove(self.owed, 1)
+    owed.request.missing = owed.request.missing or owed.item
+    expired = true
+  end
+  if expired and #self.owed == 0 then
     self:enter(self.target, time)
   end
 end
@@ -1325,13 +1388,35 @@ function Context:explain(msg, time)
       end
     end
   end
-  return { kind = "unexpected", expected = owed and owed.item, source = owed and owed.source }
+  return { kind = "unexpected", expected = owed and owed.item, source = owed and owed.source,
+    no_start = self.output == nil and Context.looks_like_output(msg) }
+end
+
+-- A $ sentence, or a data frame of the size of an output format's table: what output would be,
+-- had a start command (or the preferences) chosen its format.
+function Context.looks_like_output(msg)
+  if msg.sentence then
+    return true
+  end
+  local kind, payload = Context.frame_parts(msg.raw)
+  if kind ~= SPEC.frame.data_type then
+    return false
+  end
+  for _, name in pairs(MACHINE.output_formats) do
+    if name and P.payloads[name].size == #payload then
+      return true
+    end
+  end
+  return false
 end
 
 
 -- The protocol, its preferences and display-filter fields, registered from SPEC: one field per
 -- frame field, per payload field (the engineering value, with the raw value beside it when a scale
--- applies), per $PAHR field and per Unit Status Word flag; the rest is the dissector's own.
+-- applies; a date as YYYY-MM-DD with the float beside it; the calibration success byte with its
+-- outcome and predicted accuracy), per $PAHR field and per Unit Status Word flag; the rest is the
+-- dissector's own. Labels are the spec's titles (the ICD's names); the filter names are the
+-- spec's field names.
 
 local proto = Proto(SPEC.name, SPEC.icd)
 local NAME = SPEC.name
@@ -1425,19 +1510,34 @@ for _, p in ipairs(SPEC.payloads) do
   for _, f in ipairs(p.fields) do
     local abbrev = NAME .. "." .. p.name .. "." .. f.name
     local names = f.enum and SPEC.enums[f.enum].values or nil
-    local display = (f.encoding == "usw") and base.HEX or base.DEC
+    -- Checksums (an acknowledgement's) in hex, as the frame's own checksum.
+    local hex = f.encoding == "usw" or p.name == SPEC.ack_payload
+    local display = hex and base.HEX or base.DEC
+    local label = f.label
     local entry = {}
-    if f.type == "char" then
-      entry.value = ProtoField.string(abbrev, f.name, base.ASCII, describe(f))
+    if f.encoding == "date" then
+      entry.value = ProtoField.string(abbrev, label, base.ASCII,
+        "The calendar date whose encoding is nearest the float (YYYY-MM-DD). " .. describe(f))
+      entry.raw = ProtoField.double(abbrev .. ".raw", label .. " (float)", nil,
+        "The date float as sent, every digit of its value")
+    elseif f.type == "char" then
+      entry.value = ProtoField.string(abbrev, label, base.ASCII, describe(f))
     elseif f.type == "reserved" then
-      entry.value = ProtoField.bytes(abbrev, f.name, base.NONE, describe(f))
+      entry.value = ProtoField.bytes(abbrev, label, base.NONE, describe(f))
     elseif f.type == "f32" then
-      entry.value = ProtoField.float(abbrev, f.name, nil, describe(f))
+      entry.value = ProtoField.float(abbrev, label, nil, describe(f))
     elseif f.multiplier ~= nil then
-      entry.value = ProtoField.double(abbrev, f.name, nil, describe(f))
-      entry.raw = WIRE[f.type](abbrev .. ".raw", "raw", base.DEC, nil, nil, "The value as sent")
+      entry.value = ProtoField.double(abbrev, label, nil, describe(f))
+      entry.raw = WIRE[f.type](abbrev .. ".raw", label .. " (raw)", base.DEC, nil, nil, "The value as sent")
     else
-      entry.value = WIRE[f.type](abbrev, f.name, display, names, nil, describe(f))
+      entry.value = WIRE[f.type](abbrev, label, display, names, nil, describe(f))
+    end
+    if f.encoding == "calibration_success" then
+      entry.outcome = ProtoField.string(abbrev .. ".outcome", "Calibration outcome", base.ASCII,
+        "succeeded or failed, as the success byte says")
+      entry.accuracy = ProtoField.double(abbrev .. ".accuracy", "Predicted heading accuracy", nil,
+        "The predicted 3-sigma heading error in " .. SPEC.encodings.calibration_success.accuracy_unit
+        .. "; absent when the calibration failed or gave no estimate")
     end
     PAYLOAD_FIELDS[p.name][f.name] = entry
   end
@@ -1450,10 +1550,10 @@ for _, f in ipairs(SPEC.nmea.fields) do
   local abbrev = SENTENCE .. "." .. f.name
   local entry = {}
   if f.format == "hex" then
-    entry.value = ProtoField.uint16(abbrev, f.name, base.HEX, nil, nil, describe(f))
+    entry.value = ProtoField.uint16(abbrev, f.label, base.HEX, nil, nil, describe(f))
   else
-    entry.value = ProtoField.double(abbrev, f.name, nil, describe(f))
-    entry.raw = ProtoField.int32(abbrev .. ".raw", "raw", base.DEC, nil, nil,
+    entry.value = ProtoField.double(abbrev, f.label, nil, describe(f))
+    entry.raw = ProtoField.int32(abbrev .. ".raw", f.label .. " (raw)", base.DEC, nil, nil,
       string.format("The value x %d, as the sentence carries it", 10 ^ f.decimals))
   end
   NMEA_FIELDS[f.name] = entry
@@ -1474,6 +1574,8 @@ for _, entries in pairs(PAYLOAD_FIELDS) do
   for _, entry in pairs(entries) do
     table.insert(all, entry.value)
     all[#all + 1] = entry.raw
+    all[#all + 1] = entry.outcome
+    all[#all + 1] = entry.accuracy
   end
 end
 for _, entry in pairs(NMEA_FIELDS) do
@@ -1485,7 +1587,7 @@ proto.fields = all
 local E = {
   checksum = ProtoExpert.new(NAME .. ".expert.bad_checksum", "Bad checksum",
     expert.group.CHECKSUM, expert.severity.WARN),
-  damaged = ProtoExpert.new(NAME .. ".expert.damaged", "Damaged sentence",
+  damaged = ProtoExpert.new(NAME .. ".expert.damaged", "Damaged message",
     expert.group.MALFORMED, expert.severity.WARN),
   discarded = ProtoExpert.new(NAME .. ".expert.discarded", "Bytes discarded",
     expert.group.UNDECODED, expert.severity.NOTE),
@@ -1501,9 +1603,11 @@ local E = {
     expert.group.PROTOCOL, expert.severity.WARN),
   late = ProtoExpert.new(NAME .. ".expert.late", "Output from the previous state",
     expert.group.SEQUENCE, expert.severity.CHAT),
+  no_start = ProtoExpert.new(NAME .. ".expert.no_start", "Output with no start command",
+    expert.group.SEQUENCE, expert.severity.NOTE),
 }
 proto.experts = { E.checksum, E.damaged, E.discarded, E.unexpected, E.wrong_ack, E.missing, E.ignored, E.unknown,
-  E.late }
+  E.late, E.no_start }
 
 -- Preferences.
 local variants = {}
@@ -1525,6 +1629,20 @@ proto.prefs.firmware = Pref.string("Firmware version", "",
   "The device's firmware; before some versions some transitions differ. Empty: current firmware")
 proto.prefs.timeout = Pref.uint("Answer timeout (ms)", 1000,
   "How long an answer the device owes may take before it is reported missing")
+
+-- The commands that start output: a capture begun mid-stream is read as their output.
+local STARTERS = {}
+local starter_choices = { { "none", "none: the capture holds the start command", 0 } }
+for _, c in ipairs(SPEC.commands) do
+  if c.starts_output then
+    table.insert(STARTERS, c.name)
+    table.insert(starter_choices, { c.name, c.name .. " (" .. c.starts_output .. ")", #STARTERS })
+  end
+end
+proto.prefs.output_format = Pref.enum("Output format (capture begun mid-stream)", 0,
+  "For a capture that begins while the device is already sending output: the command that started it ("
+  .. table.concat(STARTERS, ", ") .. "). The capture is read from the state where that output flows, "
+  .. "in its format. none: the capture holds the start command", starter_choices, false)
 
 
 -- Following a capture. Each conversation (a pcapng interface, or a TCP connection) has a stream
@@ -1559,7 +1677,8 @@ local function process(tvb, pinfo)
   local key, from_host = conversation(pinfo)
   local conv = conversations[key]
   if conv == nil then
-    local settings = { firmware = proto.prefs.firmware, timeout = proto.prefs.timeout / 1000 }
+    local settings = { firmware = proto.prefs.firmware, timeout = proto.prefs.timeout / 1000,
+      start = STARTERS[proto.prefs.output_format] }
     conv = { host = Stream.new(), device = Stream.new(), context = Context.new(settings) }
     conversations[key] = conv
   end
@@ -1610,9 +1729,15 @@ local function printable(text)
   end))
 end
 
-local function usw_tree(item, range, value)
+-- The flags of a status word: from the bytes of a frame, from the parsed value of a sentence
+-- (whose bytes are hex digits).
+local function usw_tree(item, range, value, text)
   for _, flag in ipairs(SPEC.status_word.flags) do
-    add_wire(item, USW.flags[flag.name], range)
+    if text then
+      item:add(USW.flags[flag.name], range, value)
+    else
+      add_wire(item, USW.flags[flag.name], range)
+    end
   end
   item:add(USW.mode, range, P.usw_mode(value)):set_generated()
 end
@@ -1620,10 +1745,7 @@ end
 -- What an encoding, an enum or multiplexing adds to a value's text.
 local function annotate(item, f, raw)
   local encodings = SPEC.encodings
-  if f.encoding == "date" then
-    local date = P.decode_date(raw)
-    item:append_text(date and " (" .. date .. ")" or " (not a date)")
-  elseif f.encoding == "declination" and raw > encodings.declination.compute_above then
+  if f.encoding == "declination" and raw > encodings.declination.compute_above then
     item:append_text(" (the device computes it)")
   elseif f.encoding == "calibration_success" then
     local c = encodings.calibration_success
@@ -1632,7 +1754,7 @@ local function annotate(item, f, raw)
     elseif raw == c.no_estimate then
       item:append_text(" (succeeded, no estimate)")
     else
-      item:append_text(string.format(" (succeeded, estimate %g)", raw / c.accuracy_divisor))
+      item:append_text(string.format(" (succeeded, %g %s)", raw / c.accuracy_divisor, c.accuracy_unit))
     end
   end
   local enum = f.enum and SPEC.enums[f.enum]
@@ -1668,6 +1790,16 @@ local function payload_tree(tree, mtvb, offset, name)
     local item
     if f.type == "reserved" then
       item = sub:add(entry.value, range)
+    elseif f.encoding == "date" then
+      -- The calendar date, the float as sent beside it; a float no date is near: the float only.
+      local date = P.decode_date(raw)
+      if date then
+        item = sub:add(entry.value, range, date)
+        item:add(entry.raw, range, raw)
+      else
+        item = sub:add(entry.raw, range, raw)
+        item:append_text(" (not a date)")
+      end
     elseif entry.raw then
       item = sub:add(entry.value, range, P.engineering(f, raw, variant))
       item:append_text(unit)
@@ -1676,11 +1808,20 @@ local function payload_tree(tree, mtvb, offset, name)
       item = sub:add(entry.value, range, raw)
       item:append_text(unit)
     end
-    if type(raw) == "number" then
+    if type(raw) == "number" and f.encoding ~= "date" then
       annotate(item, f, raw)
     end
     if f.encoding == "usw" then
       usw_tree(item, range, raw)
+    end
+    if entry.outcome then
+      local c = SPEC.encodings.calibration_success
+      sub:add(entry.outcome, range, raw == c.failed and "failed" or "succeeded"):set_generated()
+      if raw ~= c.failed and raw ~= c.no_estimate then
+        local accuracy = sub:add(entry.accuracy, range, raw / c.accuracy_divisor)
+        accuracy:append_text(" " .. c.accuracy_unit)
+        accuracy:set_generated()
+      end
     end
   end
   return sub
@@ -1700,7 +1841,7 @@ local function sentence_tree(tree, mtvb, offset, raw, values)
       item:append_text(f.unit and " " .. f.unit or "")
       item:add(entry.raw, range, value)
     else
-      usw_tree(tree:add(entry.value, range, value), range, value)
+      usw_tree(tree:add(entry.value, range, value), range, value, true)
     end
     pos = pos + #part + 1
   end
@@ -1767,6 +1908,11 @@ local function device_body(sub, payload_range, mtvb, info)
     end
     local text = "Nothing in state " .. info.state .. " explains this message"
     sub:add_proto_expert_info(E.unexpected, text .. (info.expected and " (expected " .. info.expected .. ")" or ""))
+    if info.no_start then
+      sub:add_proto_expert_info(E.no_start, "Output with no start command before it: if the capture began "
+        .. "mid-stream, set the preference \"Output format (capture begun mid-stream)\" (-o " .. SPEC.name
+        .. ".output_format:COMMAND) to the command that started it")
+    end
   elseif info.table and payload_range then
     payload_tree(sub, mtvb, payload_range:offset(), info.table)
   end
@@ -1824,12 +1970,43 @@ local function draw_message(tree, tvb, pinfo, item, from_host)
   end
 end
 
+-- A frame or sentence given up because the next message starts inside it: the bytes that came.
+local function draw_truncated(sub, mtvb, offset, item)
+  local raw = item.raw
+  if item.sentence then
+    sub:add(F.sentence, mtvb(offset, #raw), printable((raw:gsub("[\r\n]+$", ""))))
+  else
+    local frame = SPEC.frame
+    sub:add(F.header, mtvb(offset, math.min(#P.header, #raw)))
+    for _, f in ipairs(frame.fields) do
+      if f.offset + f.size <= #raw then
+        add_wire(sub, frame_fields[f.name], mtvb(offset + f.offset, f.size))
+      end
+    end
+    if #raw > frame.payload_offset then
+      sub:add(F.payload, mtvb(offset + frame.payload_offset, #raw - frame.payload_offset))
+    end
+  end
+  local what = item.sentence and "sentence" or "frame"
+  local why = item.sentence and "no CR LF before it"
+    or string.format("its length field announces %d bytes", item.truncated_from)
+  sub:add_proto_expert_info(E.damaged, string.format("Truncated %s: %d bytes, then the next message (%s)", what,
+    #raw, why))
+end
+
+local function damage_text(item)
+  return "damaged " .. (item.sentence and "sentence" or "frame") .. ": " .. printable(item.reason)
+end
+
 local function draw_damaged(tree, tvb, pinfo, item)
   local mtvb, offset = locate(tvb, pinfo, item, "Damaged message")
   local reason = printable(item.reason)
-  local sub = tree:add(proto, mtvb(offset, #item.raw), LABEL .. ", damaged " .. (item.sentence and "sentence"
-    or "frame") .. ": " .. reason)
+  local sub = tree:add(proto, mtvb(offset, #item.raw), LABEL .. ", " .. damage_text(item))
   generated(sub, F.damaged, reason)
+  if item.truncated_from then
+    draw_truncated(sub, mtvb, offset, item)
+    return
+  end
   local checksum_range
   if item.sentence then
     checksum_range = mtvb(offset + #item.raw - 4, 2)
@@ -1880,7 +2057,7 @@ function proto.dissector(tvb, pinfo, tree)
       table.insert(texts, summary(item, record.from_host))
     elseif item.kind == "damaged" then
       draw_damaged(tree, tvb, pinfo, item)
-      table.insert(texts, "damaged " .. (item.sentence and "sentence" or "frame"))
+      table.insert(texts, damage_text(item))
     else
       draw_discarded(tree, tvb, pinfo, item)
       discarded = discarded + #item.raw

@@ -204,8 +204,15 @@ def summary(shown: list[tshark.Shown]) -> list[tuple[Any, ...]]:
 def check_fields_doc(lua: Path) -> int:
     registered = {row[2] for row in tshark.fields(lua)}
     text = (lua.parent.parent / "docs" / "wireshark.md").read_text(encoding="utf-8")
-    documented = set(re.findall(r"^\| `([a-z0-9_.]+)` \|", text, re.MULTILINE))
-    documented |= {name + ".raw" for name in documented if f"`{name}` | double" in text}
+    documented: set[str] = set()
+    for row in re.findall(r"^\| `[a-z0-9_.]+` \|.*$", text, re.MULTILINE):
+        cells = [cell.strip() for cell in row.strip("|").split(" | ")]
+        name = cells[0].strip("`")
+        documented.add(name)
+        # A scaled value (its value cell: raw x multiplier / divisor) or a $PAHR decimal has `.raw`.
+        scaled = "double" in cells and any(cell == "raw" or cell.startswith("raw ") for cell in cells)
+        if scaled or any(cell.startswith("double (`.raw`") for cell in cells):
+            documented.add(name + ".raw")
     difference = sorted(documented ^ registered)
     check(documented == registered, "docs/wireshark.md", f"differs from tshark -G fields: {difference}")
     return len(registered)

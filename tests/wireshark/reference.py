@@ -60,14 +60,24 @@ class PacketExpected:
 
 def payload_values(payload: ilahrs.Payload, variant: ilahrs.Variant) -> dict[str, Value]:
     """tshark's fields for a payload: `ilahrs.<table>.<field>` (engineering value where a scale
-    applies, with `.raw`), the USW flags."""
+    applies, with `.raw`; a date as YYYY-MM-DD with the float as `.raw`; the calibration success
+    byte with `.outcome` and `.accuracy`), the USW flags."""
     raw = payload.raw()
     engineering = payload.values(variant)
     out: dict[str, Value] = {}
     for info in payload.FIELDS:
         name = f"{PROTO}.{payload.NAME}.{info.name}"
         value = raw[info.name]
-        if info.type == "reserved":
+        if info.encoding == "date":
+            assert isinstance(value, float)
+            try:
+                year, month, day = ilahrs.decode_date(value)
+            except ilahrs.IlahrsError:
+                pass  # no calendar date: the float only
+            else:
+                out[name] = Value("text", f"{year:04d}-{month:02d}-{day:02d}")
+            out[name + ".raw"] = Value("double", value)
+        elif info.type == "reserved":
             assert isinstance(value, bytes)
             out[name] = Value("bytes", value)
         elif info.type == "char":
@@ -80,6 +90,12 @@ def payload_values(payload: ilahrs.Payload, variant: ilahrs.Variant) -> dict[str
             out[name] = Value("float", value, struct.pack("<f", value))
         else:
             out[name] = Value("int", value)
+        if info.encoding == "calibration_success":
+            assert isinstance(value, int)
+            out[name + ".outcome"] = Value("text", "succeeded" if ilahrs.calibration_succeeded(value) else "failed")
+            accuracy = ilahrs.calibration_accuracy_deg(value)
+            if accuracy is not None:
+                out[name + ".accuracy"] = Value("double", accuracy)
     return out
 
 

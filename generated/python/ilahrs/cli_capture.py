@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli_capture.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """Reading a capture for `ilahrs decode` and `ilahrs plot`: a pcapng file (`ilahrs.pcapng`, both
 directions with timestamps) or a raw byte dump (what a terminal program saves: device-to-host
@@ -7,7 +7,10 @@ bytes, no timestamps), from a file or standard input, read in chunks so a large 
 memory and a growing one can be followed.
 
 A file that starts with a pcapng Section Header Block is pcapng; any other file is a raw dump if
-a frame or a $PAHR sentence is found in its first RAW_PROBE bytes (else it is refused).
+a frame or a $PAHR sentence is found in its first RAW_PROBE bytes (else it is refused). A pcapng
+packet is read only from an interface of link type LINKTYPE_ILAHRS (the bytes of the serial
+line); a capture of another link type (Ethernet ...) is refused, naming it, and so is a block
+longer than `ilahrs.pcapng.MAX_BLOCK`, before it is read.
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ from dataclasses import dataclass
 from typing import BinaryIO, Final
 
 from .cli_common import CliError
-from .pcapng import Direction, IncrementalReader, PcapngError
+from .pcapng import LINKTYPE_ILAHRS, Direction, IncrementalReader, PcapngError
 from .stream import StreamDecoder
 
 __all__ = ["CHUNK", "RAW_PROBE", "Chunk", "Source", "open_source"]
@@ -32,6 +35,17 @@ RAW_PROBE: Final = 1 << 16
 """A raw dump must hold a message within this many bytes from its start."""
 _FOLLOW_PAUSE: Final = 0.2
 _SHB: Final = struct.pack("<I", 0x0A0D0D0A)
+_LINKTYPES: Final = {
+    0: "NULL (BSD loopback)",
+    1: "ETHERNET",
+    101: "RAW (IP)",
+    105: "IEEE802_11 (Wi-Fi)",
+    113: "LINUX_SLL",
+    228: "IPV4",
+    229: "IPV6",
+    276: "LINUX_SLL2",
+}
+"""Names of the link types most often met, for the error that refuses them."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,6 +56,8 @@ class Chunk:
     time: float | None
     direction: Direction
     data: bytes
+    packet: int | None = None
+    """The packet's number in a pcapng file, from 1 (Wireshark's frame number); None in a raw dump."""
 
 
 class Source:
@@ -86,17 +102,27 @@ class Source:
                 yield Chunk(None, Direction.INBOUND, data)
             return
         reader = IncrementalReader()
+        number = 0
         try:
             for data in self._read(follow, stop):
                 for packet in reader.feed(data):
-                    if not self.interface and reader.capture.interfaces:
-                        interface = reader.capture.interfaces[0]
+                    number += 1
+                    interface = reader.capture.interfaces[packet.interface]
+                    if interface.linktype != LINKTYPE_ILAHRS:
+                        raise CliError(f"{self.name}: {_foreign(interface.linktype, number)}")
+                    if not self.interface:
                         self.interface = interface.description or interface.name
                     direction = Direction.OUTBOUND if packet.direction == Direction.OUTBOUND else Direction.INBOUND
-                    yield Chunk(packet.timestamp_us / 1_000_000, direction, packet.data)
+                    yield Chunk(packet.timestamp_us / 1_000_000, direction, packet.data, number)
             reader.finish()
         except PcapngError as exc:
             raise CliError(f"{self.name}: {exc}") from exc
+
+
+def _foreign(linktype: int, number: int) -> str:
+    name = _LINKTYPES.get(linktype, "")
+    named = f"{linktype} ({name})" if name else str(linktype)
+    return f"packet {number} has link type {named}, not {LINKTYPE_ILAHRS} (LINKTYPE_USER0, an AHRS serial line)"
 
 
 def _looks_raw(head: bytes) -> bool:

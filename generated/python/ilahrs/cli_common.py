@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli_common.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """What the subcommands of `ilahrs` share: the one kind of error a user sees (CliError: one line,
 exit status 2), name look-ups that suggest the closest valid name, key=value parsing, the rows of
@@ -11,12 +11,14 @@ Standard library only; pyserial is imported by `ilahrs.serial` when a port is op
 from __future__ import annotations
 
 import difflib
+import errno
 import math
 from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING, Final
 
-from .codec import FieldInfo, Payload, field_kind
+from .codec import FieldInfo, Payload, date_from_text, field_kind
 from .encodings import VARIANTS, Variant, calibration_accuracy_deg, calibration_succeeded
+from .errors import IlahrsError
 from .nmea import PahrSentence
 from .payloads import PAYLOADS
 from .spec import SERIAL_LINE
@@ -28,6 +30,7 @@ if TYPE_CHECKING:
 __all__ = [
     "BAUDRATE",
     "SENTENCE_KIND",
+    "USW_CLEAR",
     "CliError",
     "field_columns",
     "fields_of",
@@ -42,6 +45,10 @@ BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
 """The AHRS line's baud rate (section 6): the default of every port argument."""
 SENTENCE_KIND: Final = PahrSentence.IDENTIFIER
 """The message kind of a $PAHR sentence in decoded rows."""
+_BUSY: Final = {errno.EAGAIN, errno.EWOULDBLOCK}
+"""The errno of a port another client holds (AhrsClient locks device paths)."""
+USW_CLEAR: Final = "OK"
+"""The Unit Status Word with no flag set, in readiness mode."""
 _USW_SEPARATOR: Final = "|"
 _USW_FLAGS: Final = USW_FAILURE_FLAGS.value | USW_WARNING_FLAGS.value
 _USW_NAMES: Final = [(flag.value, flag.name or "") for flag in UswFlag]
@@ -88,9 +95,10 @@ def _number(text: str) -> int | float | str:
 
 def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, object]:
     """key=value words -> raw field values of `table` (names checked, values checked by the
-    caller's from_raw)."""
+    caller's from_raw); a field in the date encoding also takes a calendar date YYYY-MM-DD."""
     names = [f.name for f in table.FIELDS if f.type != "reserved"]
     kinds = {f.name: field_kind(f) for f in table.FIELDS}
+    dates = {f.name for f in table.FIELDS if f.encoding == "date"}
     values: dict[str, object] = {}
     for item in items:
         key, sep, text = item.partition("=")
@@ -98,6 +106,11 @@ def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, o
             raise CliError(f"{item!r} is not key=value (fields of {table.NAME}: {', '.join(names)})")
         key = lookup(f"field of {table.NAME}", key.strip(), names)
         value = text if kinds[key] == "char" else _number(text.strip())
+        if isinstance(value, str) and key in dates:
+            try:
+                value = date_from_text(text)
+            except IlahrsError as exc:
+                raise CliError(f"{key}={text!r}: not a date YYYY-MM-DD nor a number") from exc
         if isinstance(value, str) and kinds[key] != "char":
             raise CliError(f"{key}={text!r}: not a number")
         if kinds[key] == "float" and isinstance(value, int):
@@ -108,13 +121,13 @@ def parse_assignments(table: type[Payload], items: Iterable[str]) -> dict[str, o
 
 def usw_text(raw: int) -> str:
     """A Unit Status Word as the names of its flags (and its mode when not readiness), joined by
-    '|'; empty when no flag is set in readiness mode."""
+    '|'; USW_CLEAR when no flag is set in readiness mode (never empty, which reads as missing)."""
     word = UnitStatusWord(raw)
     flags = raw & _USW_FLAGS
     names = [name for value, name in _USW_NAMES if flags & value == value]
     if word.mode.value != "readiness":
         names.append(str(word.mode.value).upper())
-    return _USW_SEPARATOR.join(names)
+    return _USW_SEPARATOR.join(names) or USW_CLEAR
 
 
 def _field_value(info: FieldInfo, raw: object, values: Mapping[str, float], *, as_raw: bool) -> object:
@@ -160,19 +173,20 @@ def field_columns(kinds: Iterable[str]) -> list[str]:
 
 def open_client(port: str, baud: int = BAUDRATE, *, timeout: float = 1.0, strict: bool = False) -> AhrsClient:
     """An AhrsClient on `port` (a device path or socket://HOST:PORT) at `baud` (`strict`: see
-    AhrsClient); CliError when the port cannot be opened or pyserial is missing."""
+    AhrsClient); CliError when the port cannot be opened, another process holds it, or pyserial
+    is missing."""
     try:
         from .serial import AhrsClient
     except ImportError as exc:  # pragma: no cover - depends on the environment
         raise CliError(f"{exc}") from exc
     try:
-        client = AhrsClient(port, timeout=timeout, strict=strict)
+        client = AhrsClient(port, timeout=timeout, strict=strict, baud=baud)
     except ImportError as exc:
         raise CliError(str(exc)) from exc
     except (OSError, ValueError) as exc:
+        if getattr(exc, "errno", None) in _BUSY:  # the lock AhrsClient takes on a device path
+            raise CliError(f"{port} is in use by another process") from exc
         raise CliError(f"cannot open {port}: {_reason(exc)}") from exc
-    if baud != BAUDRATE:
-        client._port.baudrate = baud  # the client opens at the spec's rate
     return client
 
 

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/columnar.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """A whole capture as columns: one array per field, for numpy, pandas and friends.
 
@@ -165,7 +165,7 @@ def numpy_for(backend: str) -> ModuleType | None:
         import numpy  # optional: the `columns` extra
     except ImportError:
         if backend == "numpy":
-            detail = "numpy is not installed (the ilahrs[columns] extra)"
+            detail = "numpy is not installed (the columns extra: pip install 'numpy>=1.22')"
             raise IlahrsError(ErrorKind.MALFORMED, None, "backend", detail) from None
         return None
     return numpy

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/host.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """The host session: the client side of the protocol, sans-I/O (h11 style).
 
@@ -279,6 +279,25 @@ class Host:
         payload object or raw field values; a name its table does not have is refused, MALFORMED).
         Refused (IlahrsError UNEXPECTED_MESSAGE) while answers are owed, or if the device would
         ignore the command in its state (E33). Nothing is sent when an error is raised."""
+        return self._send(command, block, None)
+
+    def sent(self, command: str, block: Payload | Mapping[str, object] | None = None, *, frame: bytes) -> bytes:
+        """`send` for a command someone else wrote (a capture being decoded), whose parameter block
+        crossed the line as `frame`, whatever its message type (0 or 1, E5): the acknowledgement
+        owed is checked against that frame's checksum (E12), not that of the type-1 frame `send`
+        builds. Errors as `send`'s, and IlahrsError for a `frame` that is not a valid frame.
+        Returns the bytes as they were sent.
+
+        >>> from ilahrs.frame import Frame, MessageType
+        >>> from ilahrs.payloads import CalibrationParameters
+        >>> host, block = Host(), CalibrationParameters(accumulation_time=20)
+        >>> data = host.sent("Start2DClb", block, frame=Frame(MessageType.COMMAND, block.build()).build())
+        >>> host.owed, data[-2:] == Frame(MessageType.COMMAND, block.build()).build()[-2:]
+        (('ack',), True)
+        """
+        return self._send(command, block, bytes(frame))
+
+    def _send(self, command: str, block: Payload | Mapping[str, object] | None, sent: bytes | None) -> bytes:
         info = COMMANDS.get(command) if isinstance(command, str) else None
         if info is None:
             raise COMMAND_SET.unknown(command)
@@ -302,7 +321,7 @@ class Host:
                 got = "nothing" if block is None else block.NAME
                 detail = f"{command} must be followed by a {expects} block, not {got} (E13)"
                 raise IlahrsError(ErrorKind.UNEXPECTED_MESSAGE, None, None, detail)
-            block_frame = Frame(MessageType.DATA, block.build()).build()
+            block_frame = Frame(MessageType.DATA, block.build()).build() if sent is None else sent
             after = lookup(target, PARAMETER_BLOCK, self.firmware)
             assert after is not None
             owed += [_Owed(item, block.NAME, Frame.parse(block_frame).checksum, deadline) for item in after.send]

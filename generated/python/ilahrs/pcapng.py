@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/pcapng.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """A capture file of a serial line: pcapng with one Enhanced Packet Block per chunk read or written.
 
@@ -16,7 +16,9 @@ Description Block per port, then one Enhanced Packet Block per chunk. What this 
   INBOUND (1) = device to host, OUTBOUND (2) = host to device.
 
 The reader accepts either byte order, any timestamp resolution, several interfaces and skips
-blocks it does not know; a damaged or truncated file raises PcapngError naming the offset. Every
+blocks it does not know; a damaged or truncated file raises PcapngError naming the offset, and so
+does a block longer than MAX_BLOCK, before its bytes are read (a reader's memory stays within that
+bound, whatever a damaged or hostile length field says). Every
 block is written whole with one call and flushed, so a file cut short by an interrupted writer is
 readable up to its last complete block (`read(..., partial=True)`). Standard library only.
 
@@ -38,6 +40,7 @@ from typing import BinaryIO, Final
 
 __all__ = [
     "LINKTYPE_ILAHRS",
+    "MAX_BLOCK",
     "Capture",
     "Direction",
     "IncrementalReader",
@@ -51,6 +54,10 @@ __all__ = [
 
 LINKTYPE_ILAHRS: Final = 147
 """LINKTYPE_USER0: the bytes of the serial line as read or written (Wireshark's DLT_USER0)."""
+
+MAX_BLOCK: Final = 16 << 20
+"""The longest block read (16 MiB): far above any chunk of a serial line (a read at 115200 baud
+that waited a whole minute holds 700 KB); a longer length field is damage, refused unread."""
 
 _SHB: Final = 0x0A0D0D0A
 _IDB: Final = 0x00000001
@@ -263,6 +270,13 @@ class _Reader:
         self.capture.packets.append(Packet(0, Direction.UNKNOWN, data, 0, original))
 
 
+def _check_length(at: int, length: int) -> None:
+    if length < 12 or length % 4:
+        raise PcapngError(f"block at offset {at} has an impossible length {length}")
+    if length > MAX_BLOCK:
+        raise PcapngError(f"block at offset {at} claims {length} bytes, more than the {MAX_BLOCK >> 20} MiB allowed")
+
+
 class IncrementalReader:
     """A pcapng file block by block, as its bytes arrive (a file that is still being written, a
     pipe, a large file read in chunks): `feed(data)` returns the packets of the blocks it
@@ -305,8 +319,7 @@ class IncrementalReader:
                     raise PcapngError(f"section header at offset {at} has no byte-order magic")
                 reader.order = "<" if magic == struct.pack("<I", _MAGIC) else ">"
             kind, length = struct.unpack_from(reader.order + "II", buffer, pos)
-            if length < 12 or length % 4:
-                raise PcapngError(f"block at offset {at} has an impossible length {length}")
+            _check_length(at, length)
             if pos + length > len(buffer):
                 break
             (trailer,) = struct.unpack_from(reader.order + "I", buffer, pos + length - 4)
@@ -355,8 +368,7 @@ def read(stream: BinaryIO, *, partial: bool = False) -> Capture:
                 raise PcapngError(f"section header at offset {pos} has no byte-order magic")
             reader.order = "<" if magic == struct.pack("<I", _MAGIC) else ">"
         kind, length = struct.unpack_from(reader.order + "II", data, pos)
-        if length < 12 or length % 4:
-            raise PcapngError(f"block at offset {pos} has an impossible length {length}")
+        _check_length(pos, length)
         if pos + length > len(data):
             if partial:
                 reader.capture.truncated = True

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -13,9 +13,27 @@ from typing import Final
 from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a"
+SPEC_SHA256: Final = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74"
 ICD_DATE: Final = (2014, 3, 11)
 """The date of Inertial Labs AHRS Interface Control Document, rev 1.7: (year, month, day)."""
+UNIT_SYMBOLS: Final[Mapping[str, str]] = MappingProxyType(
+    {
+        "deg": "deg",
+        "deg_per_s": "deg/s",
+        "g": "g",
+        "nT": "nT",
+        "V": "V",
+        "degC": "degC",
+        "one": "",
+        "Hz": "Hz",
+        "s": "s",
+        "m": "m",
+        "adc": "ADC",
+        "percent": "%",
+        "year": "year",
+    }
+)
+"""Each unit of the spec (a field's `unit`) -> the symbol shown after its values: "" for a dimensionless number."""
 
 
 class ErrorKind(StrEnum):
@@ -96,6 +114,25 @@ STRICT_RESERVED: Final[Mapping[int, int]] = MappingProxyType({1: 0})
 """Strict decoding (E42): message type -> the reserved byte the AHRS
 writes in such frames. A decoder asked to be strict refuses a frame of such a type with another reserved
 byte (BAD_RESERVED); without the option any value is accepted."""
+
+UNITS: Final[Mapping[str, str]] = MappingProxyType(
+    {
+        "deg": "degrees",
+        "deg_per_s": "degrees per second",
+        "g": "standard gravity",
+        "nT": "nanotesla",
+        "V": "volts DC",
+        "degC": "degrees Celsius",
+        "one": "dimensionless",
+        "Hz": "hertz",
+        "s": "seconds",
+        "m": "metres",
+        "adc": "ADC codes (no physical scale given by the ICD)",
+        "percent": "percent",
+        "year": "fractional year, see encoding `date`",
+    }
+)
+"""Unit name (a field's `unit`) -> what it measures, as the spec says."""
 
 SERIAL_LINE: Final[Mapping[str, int | str]] = MappingProxyType(
     {"baud_rate": 115200, "data_bits": 8, "parity": "none", "stop_bits": 1}

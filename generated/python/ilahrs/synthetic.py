@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/synthetic.py for spec/ilahrs.yaml,
-# spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the runtime source and run `make generate`.
 """Which synthetic quantity the virtual AHRS puts in which field, stated once, by the field's unit
 and name (the spec's units and field names).

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+// Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 #![doc = include_str!("../README.md")]
@@ -39,7 +39,7 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a";
+pub const SPEC_HASH: &str = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74";
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
 /// How long the line may be quiet inside a message, in byte times at 115200 baud and

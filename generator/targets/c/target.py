@@ -240,6 +240,10 @@ def frame_constants(spec: Spec) -> list[tuple[str, int, str]]:
     ]
 
 
+# Folders that carry the licence texts (render.LICENCE_FILES).
+LICENSED = ("c",)
+
+
 def outputs(spec: Spec) -> list[Output | Runtime]:
     if spec.byte_order != "little":
         raise ValueError(f"the C target implements little-endian wire values, not {spec.byte_order!r}")

@@ -34,7 +34,18 @@ CODEC = ("compat", "errors", "frame", "valuecodec", "codec", "sentence", "comman
 # device model and the host session (sans-I/O), then the edge: the virtual device on a pty or loopback
 # socket, the serial client, the command line.
 BEHAVIOUR_TABLES = ("statemachine", "roles")
-BEHAVIOUR = ("diagram", "machine", "synthetic", "motion", "device", "host", "simulate", "serial", "__main__")
+BEHAVIOUR = (
+    "diagram",
+    "machine",
+    "synthetic",
+    "motion",
+    "device",
+    "host",
+    "anystate",
+    "simulate",
+    "serial",
+    "__main__",
+)
 # The subcommands of the `ilahrs` command besides simulate and diagram (record, decode, send, params,
 # monitor, calibrate, plot).
 CLI = ("cli_common", "cli_capture", "cli_decode", "cli_device", "cli_monitor", "cli_plot", "cli")
@@ -49,6 +60,10 @@ REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibr
 
 LINE_LENGTH = 120
 """The package's line length (the repository's ruff setting)."""
+
+
+# Folders that carry the licence texts (render.LICENCE_FILES).
+LICENSED = ("python",)
 
 
 def outputs(spec: Spec) -> list[Output | Runtime]:

@@ -55,6 +55,10 @@ _RUNTIME = (
 )
 
 
+# Folders that carry the licence texts (render.LICENCE_FILES).
+LICENSED = ("rust",)
+
+
 def outputs(spec: Spec) -> list[Output | Runtime]:
     filters.check_supported(spec)
     files: list[Output | Runtime] = [Output(path, template) for path, template in _TEMPLATES]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from generator.model import TIMER_EVENTS, Command, Field, NmeaField, Spec, StatusWord
@@ -35,6 +35,8 @@ FIELD_TYPES = {
     "reserved": "bytes",
 }
 ENGINEERING_TYPE = "double"
+# The unit of the predicted accuracy the calibration success byte carries (x accuracy_divisor).
+ACCURACY_UNIT = "deg"
 
 _LUA_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 # Lua's reserved words: never a bare record key.
@@ -106,12 +108,21 @@ def _lua_key(key: object) -> str:
     return f"[{lua(key)}]"
 
 
-def field_row(f: Field) -> dict[str, Any]:
-    """What the dissector needs of a payload or frame field."""
+def field_label(f: Field, fields: Sequence[Field] = ()) -> str:
+    """A field's title for Wireshark's tree: the ICD's name, with the last part of the field's name
+    ("Ugyro X", "Matrix for soft iron correction 11") when other fields of its table share it."""
+    if sum(1 for g in fields if g.icd_name == f.icd_name) > 1:
+        return f"{f.icd_name} {f.name.rsplit('_', 1)[-1].upper()}"
+    return f.icd_name
+
+
+def field_row(f: Field, fields: Sequence[Field] = ()) -> dict[str, Any]:
+    """What the dissector needs of a payload or frame field (`fields`: its table's, for its label)."""
     scale = f.scale
     return {
         "name": f.name,
         "icd_name": f.icd_name,
+        "label": field_label(f, fields),
         "type": f.type.name,
         "offset": f.offset,
         "size": f.size,
@@ -126,11 +137,21 @@ def field_row(f: Field) -> dict[str, Any]:
     }
 
 
-def nmea_row(f: NmeaField) -> dict[str, Any]:
+def nmea_label(f: NmeaField, spec: Spec) -> str:
+    """A $PAHR field's title: that of the payload field of the same name (Roll, USW), else its name."""
+    for p in spec.payloads:
+        for g in p.fields:
+            if g.name == f.name:
+                return g.icd_name
+    return f.name.replace("_", " ").capitalize()
+
+
+def nmea_row(f: NmeaField, spec: Spec) -> dict[str, Any]:
     """A $PAHR field; its hex field is the Unit Status Word (the only one the sentence has)."""
     return {
         "name": f.name,
         "icd_name": f.icd_name,
+        "label": nmea_label(f, spec),
         "format": f.format,
         "width": f.width,
         "decimals": f.decimals,
@@ -176,6 +197,7 @@ def encodings(spec: Spec) -> dict[str, Any]:
             "failed": c.failed,
             "no_estimate": c.no_estimate,
             "accuracy_divisor": c.accuracy_divisor,
+            "accuracy_unit": ACCURACY_UNIT,
         }
     return result
 
@@ -248,12 +270,21 @@ GENERIC_FIELDS = (
     ("checksum.computed", "uint16", "The checksum computed over the received bytes (damaged messages)."),
     ("checksum.status", "uint8", "0: bad, 1: good (frames and sentences)."),
     ("discarded", "bytes", "Bytes that belong to no valid frame or sentence."),
-    ("damaged", "string", "Why a frame or sentence was rejected."),
+    (
+        "damaged",
+        "string",
+        "Why a frame or sentence was rejected: bad checksum, truncated, or the sentence check it failed.",
+    ),
     ("undecoded", "bytes", "A payload no context explains (which table it follows is never guessed)."),
     ("candidates", "string", "The payload tables of an undecoded payload's size."),
     ("usw.mode", "string", "The mode the USW mode bits say."),
     ("expert.bad_checksum", "expert", "Warning: a frame or sentence whose checksum does not match."),
-    ("expert.damaged", "expert", "Warning: a $-sentence that failed a check other than its checksum."),
+    (
+        "expert.damaged",
+        "expert",
+        "Warning: a truncated frame or sentence (the next message starts inside it), or a $-sentence that "
+        "failed a check other than its checksum.",
+    ),
     ("expert.discarded", "expert", "Note: bytes discarded."),
     ("expert.unexpected", "expert", "Warning: a device message nothing in the context explains."),
     ("expert.wrong_ack", "expert", "Warning: an acknowledgement that carries another checksum."),
@@ -261,6 +292,11 @@ GENERIC_FIELDS = (
     ("expert.ignored", "expert", "Note: a host message the device ignores in its state (no transition)."),
     ("expert.unknown_command", "expert", "Warning: a command code no command has."),
     ("expert.late", "expert", "Chat: output from the state the device has just left."),
+    (
+        "expert.no_start",
+        "expert",
+        "Note: output with no start command before it; names the preference for a capture begun mid-stream.",
+    ),
 )
 
 
@@ -298,6 +334,8 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "output_formats": output_formats,
     "to_dict": to_dict,
     "nmea_row": nmea_row,
+    "field_label": field_label,
+    "nmea_label": nmea_label,
     "usw_modes": usw_modes,
     "field_type": field_type,
     "scaled": scaled,
@@ -307,6 +345,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
 
 GLOBALS: dict[str, Any] = {
     "ENGINEERING_TYPE": ENGINEERING_TYPE,
+    "ACCURACY_UNIT": ACCURACY_UNIT,
     "TIMER_EVENTS": TIMER_EVENTS,
     "generic_fields": generic_fields,
     "shared_codes": shared_codes,

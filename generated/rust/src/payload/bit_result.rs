@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 78b1daeba1b7bf7f76f1a5c04fb54e25a73744c609525a6a8c577ce8f2cf2b4a.
+// Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! Table 6.12, Built-in test answer (4 bytes).

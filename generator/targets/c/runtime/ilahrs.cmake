@@ -45,3 +45,5 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ilahrsConfigVersion.cmake
 
 configure_file(ilahrs.pc.in ${CMAKE_CURRENT_BINARY_DIR}/ilahrs.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ilahrs.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+# MIT OR Apache-2.0, at the user's option: both texts go with the library.
+install(FILES LICENSE-MIT LICENSE-APACHE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/ilahrs)

@@ -4,11 +4,13 @@ diagram` (the state machine as a Mermaid diagram). Run `ilahrs simulate --help` 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
 
 from .cli import COMMANDS_RUN, OneLineParser, add_subcommands, run
+from .cli_common import CliError, variant_named
 from .conformance import add_arguments as conformance_arguments
 from .conformance import run as run_conformance
 from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
@@ -37,12 +39,24 @@ def _parser() -> argparse.ArgumentParser:
     sim = commands.add_parser(
         "simulate",
         help="run a virtual AHRS on a pseudo-terminal (default) or a loopback TCP port",
-        description="Run a virtual AHRS. The first line of output is the device path (or HOST:PORT with --tcp); "
-        f"connect at {BAUDRATE} baud 8N1. Stop with Ctrl-C or SIGTERM.",
+        description="Run a virtual AHRS. The first line of output is the port a client opens: the device path, "
+        f"or socket://HOST:PORT with --tcp; connect at {BAUDRATE} baud 8N1. Stop with Ctrl-C or SIGTERM.",
+        epilog="With --tcp, clients are served one at a time, one after another, until the simulator is "
+        "stopped; the device carries on between them (state, parameters and clock; its output is lost "
+        "while nobody is connected).",
     )
-    sim.add_argument("--tcp", metavar="HOST:PORT", help="serve one client on a loopback address (port 0: any port)")
+    sim.add_argument(
+        "--tcp",
+        metavar="HOST:PORT",
+        help="serve a loopback address instead of a pty (port 0: any free port), one client at a time",
+    )
     sim.add_argument("--seed", type=int, default=0, help="seed of the motion, noise, calibration and faults")
-    sim.add_argument("--variant", choices=sorted(VARIANTS), default=DEFAULT_VARIANT, help="device variant (KG, KA)")
+    sim.add_argument(
+        "--variant",
+        metavar="NAME",
+        default=DEFAULT_VARIANT,
+        help=f"device variant, its scale factors KG and KA ({', '.join(VARIANTS)}; default {DEFAULT_VARIANT})",
+    )
     sim.add_argument("--firmware", default=DEFAULT_FIRMWARE, help=f"firmware version (default {DEFAULT_FIRMWARE})")
     sim.add_argument("--firmware-text", help=f"the {FIRMWARE} answer")
     sim.add_argument("--device-id", default=DEFAULT_DEVICE_ID, help=f"the device id of {READ_PARAMETERS}")
@@ -60,7 +74,13 @@ def _parser() -> argparse.ArgumentParser:
     )
     sim.add_argument("--log", metavar="FILE", help="write every message sent (meant and written) as JSON lines")
     sim.add_argument("--record", metavar="FILE.pcapng", help="record both directions with timestamps as pcapng")
-    commands.add_parser("diagram", help="print the device state machine as a Mermaid diagram")
+    commands.add_parser(
+        "diagram",
+        help="print the device state machine as a Mermaid diagram",
+        description="Print the device's state machine (ilahrs.statemachine, from the spec) as a Mermaid "
+        "stateDiagram on standard output: every state, and every transition with the event and what "
+        "the AHRS sends.",
+    )
     add_subcommands(commands)
     conformance = commands.add_parser(
         "conformance",
@@ -89,6 +109,24 @@ def _device(args: argparse.Namespace) -> Device:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run `ilahrs`: its exit status. A closed standard output (`ilahrs params PORT | head -1`)
+    ends the command with one line on stderr and status 2, never a traceback."""
+    try:
+        status = _main(argv)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to write at exit
+        print(f"ilahrs: {_command(argv)}standard output closed", file=sys.stderr)
+        return 2
+    return status
+
+
+def _command(argv: Sequence[str] | None) -> str:
+    words = list(sys.argv[1:] if argv is None else argv)
+    return next((f"{word}: " for word in words if not word.startswith("-")), "")
+
+
+def _main(argv: Sequence[str] | None) -> int:
     args = _parser().parse_args(argv)
     if args.command in COMMANDS_RUN:
         return run(args)
@@ -98,8 +136,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         sys.stdout.write(mermaid())
         return 0
     try:
+        args.variant = variant_named(args.variant).name
         device = _device(args)
-    except IlahrsError as exc:
+    except (CliError, IlahrsError) as exc:
         print(f"ilahrs simulate: {exc}", file=sys.stderr)
         return 2
     faults = Faults(args.corrupt_rate, args.drop_rate, args.garbage_rate, args.seed)

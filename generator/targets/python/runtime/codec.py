@@ -8,12 +8,13 @@ fields, and its fields as dataclass fields in wire order; everything else is her
 from __future__ import annotations
 
 import math
+import re
 import struct
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, Final, Protocol, TypeVar
 
-from .encodings import VARIANTS, Variant, declination_is_valid
+from .encodings import VARIANTS, Variant, declination_is_valid, decode_date, encode_date
 from .errors import ErrorKind, IlahrsError, brief, require_bytes, suggest
 from .valuecodec import FLOAT32_MAX
 
@@ -24,7 +25,11 @@ __all__ = [
     "JsonValue",
     "Payload",
     "PayloadBase",
+    "date_from_text",
+    "date_text",
     "field_kind",
+    "field_text",
+    "float32_text",
     "maker",
     "required_variant",
     "variant_of",
@@ -85,6 +90,57 @@ def field_kind(info: FieldInfo) -> str:
     if info.type in ("char", "reserved"):
         return info.type
     return "float" if info.type == "f32" else "integer"
+
+
+_FLOAT32: Final = struct.Struct("<f")
+_ISO_DATE: Final = re.compile(r"([0-9]{4})-([0-9]{2})-([0-9]{2})")
+
+
+def float32_text(value: float) -> str:
+    """The shortest decimal text that reads back as the same float32 as `value` (3.3 for the
+    float32 nearest 3.3, 3.299999952316284 as a float64)."""
+    if not math.isfinite(value) or abs(value) > FLOAT32_MAX:
+        return repr(float(value))
+    wire = _FLOAT32.pack(value)
+    for digits in range(1, 10):
+        text = f"{value:.{digits}g}"
+        if _FLOAT32.pack(float(text)) == wire:
+            return repr(float(text))
+    return repr(float(value))  # pragma: no cover - 9 digits always round-trip a float32
+
+
+def field_text(info: FieldInfo, value: object) -> str:
+    """A raw field value as a user reads and writes it: a field in the date encoding as its
+    calendar date (YYYY-MM-DD, the raw number if it is no date), a float32 as its shortest text
+    (float32_text), anything else as str()."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return str(value)
+    if info.encoding == "date":
+        date = date_text(value)
+        return float32_text(value) if date is None else date
+    if info.type == "f32":
+        return float32_text(value)
+    return str(value)
+
+
+def date_text(value: float) -> str | None:
+    """The calendar date of a float in the date encoding, YYYY-MM-DD (the nearest valid date,
+    E15); None when no date encodes near it."""
+    try:
+        year, month, day = decode_date(value)
+    except IlahrsError:
+        return None
+    return f"{year:04d}-{month:02d}-{day:02d}"
+
+
+def date_from_text(text: str) -> float:
+    """The date float (the ICD's date encoding) of a calendar date written YYYY-MM-DD;
+    IlahrsError(OUT_OF_RANGE) for other text or an invalid date."""
+    match = _ISO_DATE.fullmatch(text.strip()) if isinstance(text, str) else None
+    if match is None:
+        raise IlahrsError(ErrorKind.OUT_OF_RANGE, None, "date", f"{brief(text)} is not a date YYYY-MM-DD")
+    year, month, day = (int(part) for part in match.groups())
+    return encode_date(year, month, day)
 
 
 class Payload(Protocol):

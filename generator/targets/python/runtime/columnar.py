@@ -162,7 +162,7 @@ def numpy_for(backend: str) -> ModuleType | None:
         import numpy  # optional: the `columns` extra
     except ImportError:
         if backend == "numpy":
-            detail = "numpy is not installed (the ilahrs[columns] extra)"
+            detail = "numpy is not installed (the columns extra: pip install 'numpy>=1.22')"
             raise IlahrsError(ErrorKind.MALFORMED, None, "backend", detail) from None
         return None
     return numpy

@@ -670,6 +670,10 @@ class Binding:
     kinds: list[str] | None  # None: an ad-hoc runner, its own `unsupported` answers decide
     build: str | None
     options: list[str] | None = None  # the vector options it knows; None: every one (OPTIONS)
+    root: Path | None = None
+    """Where its command runs and relative paths in it resolve: a registration's "root", relative to
+    the registration's folder (that folder when absent); None (an ad-hoc runner): --root or the
+    current directory."""
 
 
 def _binding(path: Path) -> Binding:
@@ -693,7 +697,11 @@ def _binding(path: Path) -> Binding:
     options = doc.get("options")
     if options is not None and (not isinstance(options, list) or any(o not in OPTIONS for o in options)):
         raise BindingError(f"{path}: options must be a list of {', '.join(OPTIONS)}")
-    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options)
+    root = doc.get("root", ".")
+    if not isinstance(root, str):
+        raise BindingError(f"{path}: root must be a directory relative to the registration, such as ../..")
+    base = (path.parent / root).resolve()
+    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options, base)
 
 
 def load_bindings(directory: Path, only: list[str] | None) -> list[Binding]:
@@ -793,12 +801,13 @@ class Runner:
 
 
 def resolve_command(binding: Binding, root: Path) -> list[str] | None:
-    """The command with {python} replaced by this interpreter; None when its program does not exist."""
+    """The command with {python} replaced by this interpreter and a program path relative to
+    `root` made absolute; None when its program does not exist."""
     command = [sys.executable if part == "{python}" else part for part in binding.command]
     program = command[0]
     if "/" in program:
         path = Path(program) if Path(program).is_absolute() else root / program
-        return command if path.exists() else None
+        return [str(path), *command[1:]] if path.exists() else None
     return command if shutil.which(program) else None
 
 
@@ -933,8 +942,8 @@ class _BindingRun:
 def run_binding(binding: Binding, suites: list[Suite], root: Path, timeout: float, result: Result) -> None:
     command = resolve_command(binding, root)
     if command is None:
-        build = f"; build it with `{binding.build}`" if binding.build else ""
-        problem = f"{binding.name}: runner {binding.command[0]} not found{build}"
+        build = f"; build it with `{binding.build}` there" if binding.build else ""
+        problem = f"{binding.name}: runner {binding.command[0]} not found in {root}{build}"
         result.problems.append(problem)
         for suite in suites:
             result.cells[(binding.name, suite.name)] = Cell(failed=len(suite.vectors))
@@ -1102,7 +1111,11 @@ def add_arguments(
         help="where NAME.json registrations are" + (f"; default {bindings_dir}" if bindings_dir else ""),
     )
     parser.add_argument(
-        "--root", type=Path, default=root, help="where runner commands run (default: the current directory)"
+        "--root",
+        type=Path,
+        default=root,
+        help="where runner commands run (default: a registration's own root, see conformance/README.md; "
+        "the current directory for --command)",
     )
     parser.add_argument("--suites", help="comma-separated suites to run (default: all)")
     parser.add_argument("--suite", action="append", help="one suite to run (repeatable)")
@@ -1128,7 +1141,13 @@ def add_arguments(
         "--allow-calibration", action="store_true", help="also run flows that change the stored calibration"
     )
     live.add_argument("--quiet", type=float, default=0.25, help="seconds of silence that show nothing more comes")
-    live.add_argument("--alignment-time", type=int, default=2, help="alignment time for the run, s (default 2)")
+    live.add_argument(
+        "--alignment-time",
+        type=int,
+        default=2,
+        help="alignment time loaded for the run, s (default 2; the commands flows send while the device "
+        "aligns must fit in it)",
+    )
     live.add_argument("--accumulation-time", type=int, default=2, help="accumulation time for the run, s (default 2)")
 
 
@@ -1195,7 +1214,8 @@ def run(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
     )
     try:
         for binding in bindings:
-            run_binding(binding, suites, root, args.timeout, result)
+            base = root if args.root is not None or binding.root is None else binding.root
+            run_binding(binding, suites, base, args.timeout, result)
     except SuiteError as err:
         print(f"ilahrs conformance: {err}", file=sys.stderr)
         return 2

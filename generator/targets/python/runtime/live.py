@@ -16,11 +16,13 @@ from the vector, so a device on older firmware is held to the rows of its own ve
 - nothing comes where the model sends nothing (a pause of `--quiet` seconds after each step;
   output already on the line when a command leaves continuous mode is allowed for LATE_S).
 
-The run first reads the device's parameters (Table 6.10) and loads them back with a shorter
-alignment time (`--alignment-time`); calibration runs use `--accumulation-time`. At the end, also
+The run first reads the device's parameters (Table 6.10) and loads them back with the alignment
+time `--alignment-time`, the time the model waits for too (also when the device was set to align
+faster: the commands a flow sends during an alignment must fit in it, and a run whose
+`--alignment-time` is too short for them is refused); calibration runs use `--accumulation-time`. At the end, also
 after a failure, Ctrl-C or SIGTERM, it loads the original parameters and reads them back, so a run
 changes nothing on the unit. Flows that would change the stored calibration (AcceptClb after a
-result, ClearClb) are skipped unless `--allow-calibration`. pyserial is needed (`ilahrs[serial]`).
+result, ClearClb) are skipped unless `--allow-calibration`. pyserial is needed (the `serial` extra).
 """
 
 from __future__ import annotations
@@ -68,7 +70,7 @@ from .statemachine import (
 )
 from .stream import StreamDecoder, StreamEvent
 
-__all__ = ["RATE_SLACK", "RATE_TOLERANCE", "Plan", "plan_flow", "run_live"]
+__all__ = ["RATE_SLACK", "RATE_TOLERANCE", "Plan", "alignment_needed", "plan_flow", "run_live"]
 
 RATE_TOLERANCE: Final = 0.10
 """Continuous output: the count of blocks may differ from rate x time by this fraction ..."""
@@ -91,6 +93,10 @@ _FIRMWARE_TABLE: Final = COMMANDS[FIRMWARE].response_payloads[0]
 
 class MismatchError(Exception):
     """The device did not do what the model says."""
+
+
+class UsageError(Exception):
+    """The run's options cannot work (exit status 2)."""
 
 
 # --- the plan: a flow's steps on the model -------------------------------------------------------
@@ -191,7 +197,7 @@ class Link:
         try:
             serial = importlib.import_module("serial")
         except ImportError as exc:  # pragma: no cover - depends on the environment
-            raise ImportError("the live mode needs pyserial: pip install 'ilahrs[serial]'") from exc
+            raise ImportError("the live mode needs pyserial: pip install 'pyserial>=3.5'") from exc
         parity = {"none": "N", "even": "E", "odd": "O"}[str(SERIAL_LINE["parity"])]
         self._port = serial.serial_for_url(
             port,
@@ -529,9 +535,15 @@ def _version(text: str) -> str | None:
     return found.group() if found else None
 
 
+def _number(value: object) -> float:
+    assert isinstance(value, (int, float))
+    return float(value)
+
+
 def _settings(args: argparse.Namespace, run_values: Mapping[str, object], firmware: str | None) -> Settings:
-    rate = run_values[TIMER_FIELDS["output"][1]]
-    assert isinstance(rate, (int, float))
+    """The run's timing: what the device was loaded with (`run_values`), so the model waits as
+    long as the device does."""
+    rate = _number(run_values[TIMER_FIELDS["output"][1]])
     blocks: dict[str, bytes] = {}
     for name, cls in PAYLOADS.items():
         if cls.DIRECTION == "host_to_device" and name != COMMAND_SET.acknowledgement.NAME:
@@ -542,12 +554,33 @@ def _settings(args: argparse.Namespace, run_values: Mapping[str, object], firmwa
             names = {f.name for f in cls.FIELDS}
             blocks[name] = cls.from_raw({k: v for k, v in values.items() if k in names}).build()
     durations = {
-        "alignment": float(args.alignment_time),
+        "alignment": float(_number(run_values[TIMER_FIELDS["alignment"][1]])),
         "accumulation": float(args.accumulation_time),
         "output": 1.0 / rate,
         BLOCK_TIMEOUT: PARAMETER_BLOCK_TIMEOUT_S,
     }
     return Settings(args.quiet, firmware, float(rate), durations, blocks)
+
+
+ALIGNMENT_MARGIN_S: Final = 0.5
+"""Time an alignment needs besides the quiet pauses of the commands sent during it."""
+
+
+def alignment_needed(plans: list[Plan], quiet: float) -> tuple[float, str]:
+    """The shortest alignment time (s) in which every plan's commands during an alignment fit (each
+    is followed by `quiet` seconds in which nothing may come), and the plan that needs it."""
+    needed, worst = 0.0, ""
+    for plan in plans:
+        during = 0
+        for step in plan.steps:
+            if STATES[step.before].timer == "alignment" and step.wait is None:
+                during += 1
+                seconds = during * quiet + ALIGNMENT_MARGIN_S
+                if seconds > needed:
+                    needed, worst = seconds, plan.id
+            elif STATES[step.after].timer != "alignment":
+                during = 0
+    return needed, worst
 
 
 def _flow_case(link: Link, settings: Settings, plan: Plan) -> Case:
@@ -571,13 +604,20 @@ class LiveReport:
     plans: dict[str, Plan] = field(default_factory=dict)
     restored: str | None = "not started"
     interrupted: bool = False
+    error: str | None = None
+    """Why the run stopped before its flows ended (the device, the suites or the options)."""
     touched: bool = False
     """Whether the run read the parameters (and so may have changed them)."""
     seconds: float = 0.0
 
     @property
     def ok(self) -> bool:
-        return not self.interrupted and self.restored is None and all(c.status != "failed" for c in self.cases)
+        return (
+            not self.interrupted
+            and self.error is None
+            and self.restored is None
+            and all(c.status != "failed" for c in self.cases)
+        )
 
     def as_json(self) -> dict[str, Any]:
         return {
@@ -589,6 +629,7 @@ class LiveReport:
             "interrupted": self.interrupted,
             "restored": self.restored is None,
             "restore_problem": self.restored,
+            "error": self.error,
             "flows": [
                 {
                     "id": c.name,
@@ -611,13 +652,17 @@ def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport,
     original = device.read()
     report.firmware_text = device.firmware()
     report.firmware = _version(report.firmware_text)
+    plans = [plan_flow(v, report.firmware) for v in flows]
+    needed, worst = alignment_needed(plans, args.quiet)
+    if args.alignment_time < needed:
+        raise UsageError(
+            f"--alignment-time {args.alignment_time} is too short: {worst} sends its commands during an "
+            f"alignment of at least {needed:g} s at --quiet {args.quiet:g}"
+        )
     device.original = original
     report.touched = True
     run_values = dict(original)
-    alignment = TIMER_FIELDS["alignment"][1]
-    current = original[alignment]
-    assert isinstance(current, int)
-    run_values[alignment] = min(current, args.alignment_time)
+    run_values[TIMER_FIELDS["alignment"][1]] = args.alignment_time
     if run_values != original:
         problems = device.load(run_values)
         if device.read() != run_values:
@@ -629,8 +674,7 @@ def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport,
         f"{settings.durations['alignment']:g} s, accumulation {settings.durations['accumulation']:g} s\n"
     )
     out.flush()
-    for v in flows:
-        plan = plan_flow(v, report.firmware)
+    for v, plan in zip(flows, plans, strict=True):
         report.plans[v.id] = plan
         if plan.changes_calibration and not args.allow_calibration:
             case = Case("live.sessions", v.id, "skipped", "changes the stored calibration (--allow-calibration)")
@@ -678,9 +722,10 @@ def run_live(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
             except KeyboardInterrupt:
                 report.interrupted = True
                 print("ilahrs conformance: interrupted; restoring the parameters", file=sys.stderr)
-            except (SuiteError, MismatchError) as exc:
+            except (SuiteError, MismatchError, UsageError) as exc:
                 print(f"ilahrs conformance: {exc}", file=sys.stderr)
-                status = 2 if isinstance(exc, SuiteError) else 1
+                report.error = str(exc)
+                status = 1 if isinstance(exc, MismatchError) else 2
             finally:
                 report.restored = device.restore()
     finally:

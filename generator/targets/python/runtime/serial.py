@@ -1,6 +1,6 @@
 """A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
 
-pyserial is the optional dependency (`pip install ilahrs[serial]`) and is imported only when a
+pyserial is the optional dependency (the `serial` extra, or `pip install 'pyserial>=3.5'`) and is imported only when a
 client is opened, so the rest of the package stays standard-library only. `port` is anything
 `serial.serial_for_url` opens: a device path (/dev/ttyUSB0, the pty `ilahrs simulate` prints) or
 `socket://127.0.0.1:PORT` for `ilahrs simulate --tcp`.
@@ -25,18 +25,24 @@ never came) are given up once reads have returned nothing for IDLE_TIMEOUT. The 
 until a read finds bytes, never past them: an answer that begins after a pause of any length, the
 caller's included, is read whole (`Host.receive(data, within=...)`).
 `strict`: refuse data frames whose reserved byte is not the AHRS's (E42; they count as discarded).
+
+A device path is opened for this client alone (POSIX: pyserial's `exclusive`, an flock on the
+port): while it is open, opening the same port again, from this process or another, raises
+`serial.SerialException` with errno EAGAIN. A socket:// URL is not locked.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import importlib
+import os
 import time
 from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from types import TracebackType
 from typing import Any, Final, TypeVar
 
+from .anystate import AnyStateRequest, Reply
 from .commands import COMMAND_SET, COMMANDS, build_command
 from .encodings import CalibrationType
 from .errors import ErrorKind, IlahrsError, brief, require_int, require_seconds, suggest
@@ -105,7 +111,7 @@ def _pyserial() -> Any:
     try:
         return importlib.import_module("serial")
     except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("ilahrs.serial needs pyserial: pip install 'ilahrs[serial]'") from exc
+        raise ImportError("ilahrs.serial needs pyserial: pip install 'pyserial>=3.5'") from exc
 
 
 def _as_block(table: str | None, block: Payload | Mapping[str, object]) -> Payload:
@@ -160,6 +166,8 @@ class AhrsClient:
             line["baudrate"] = require_int(baud, "baud", 1, 10_000_000)
         self.baud = int(str(line["baudrate"]))
         """The line's baud rate (default: the spec's)."""
+        if os.name == "posix" and "://" not in port:
+            line["exclusive"] = True  # flock: a second process is refused the port, not given half its bytes
         self._port = _pyserial().serial_for_url(port, timeout=_POLL, write_timeout=5.0, **line)
 
     # --- Lifetime ----------------------------------------------------------------------------
@@ -192,32 +200,40 @@ class AhrsClient:
                 return new
 
     def _read(self, *, wait: bool) -> list[HostEvent]:
-        """One read: what has come, or (`wait`) the first bytes within one poll interval."""
-        events: list[HostEvent] = []
+        """One read (see `_read_line`) through the host; the new events, stamped and recorded."""
+        quiet, data, within = self._read_line(wait=wait)
+        events = self.host.advance(quiet) + self.host.receive(data, within=within)
+        now = self._last
+        stamped = [dataclasses.replace(event, at=now) for event in events]
+        for event in stamped:
+            self._record(event)
+        return stamped
+
+    def _read_line(self, *, wait: bool) -> tuple[float, bytes, float]:
+        """One read of the line: `(quiet, data, within)`. When nothing had come since the last
+        read, the line was quiet until now: `quiet` seconds, which can end a message held from
+        before (E41), never the bytes that come after it; then (`wait`) the first bytes within one
+        poll interval, with the rest that came with them. `data` came at some moment of the
+        `within` seconds after that (answers among them count before a deadline in that time,
+        and the idle rule counts from its end: `Host.receive(data, within=...)`)."""
+        quiet = 0.0
         data = b""
         if self._port.in_waiting:
             data = self._port.read(self._port.in_waiting)
         else:
-            # Nothing came since the last read, so the line has been quiet until now: the host's
-            # clock catches up first. The quiet time can end a message held from before it (E41),
-            # never the bytes that come after it.
-            events += self.host.advance(max(0.0, self._clock() - self._last))
-            self._last = max(self._last, self._clock())
+            start = self._clock()
+            quiet = max(0.0, start - self._last)
+            self._last = max(self._last, start)
             if wait:
                 data = self._port.read(1)
                 if data and self._port.in_waiting:
                     data += self._port.read(self._port.in_waiting)
         now = self._clock()
+        within = max(0.0, now - self._last)
+        self._last = max(self._last, now)
         if data and self.tap is not None:
             self.tap(data, False)
-        # The bytes came at some moment since the last read: matched before any deadline in that
-        # time, and the idle rule counts from now.
-        events += self.host.receive(data, within=max(0.0, now - self._last))
-        self._last = now
-        stamped = [dataclasses.replace(event, at=now) for event in events]
-        for event in stamped:
-            self._record(event)
-        return stamped
+        return quiet, data, within
 
     def _record(self, event: HostEvent) -> None:
         self.events.append(event)
@@ -265,6 +281,13 @@ class AhrsClient:
         result: list[HostEvent] = self._retry(command, lambda: self._request(command, block))
         return result
 
+    def send(self, command: str, block: Payload | Mapping[str, object] | None = None) -> None:
+        """Send `command` (and its parameter block) without waiting: its answers come as events from
+        `poll()` (an answer that does not come, as a ProtocolError). Refused (IlahrsError, nothing
+        sent) while answers to the last command are owed or when the device ignores the command in
+        its state (Host.send). For a steady request rate, as `ilahrs monitor` polls GET_DATA."""
+        self._write(self.host.send(command, block))
+
     def _request(self, command: str, block: Payload | Mapping[str, object] | None) -> list[HostEvent]:
         info = COMMANDS.get(command) if isinstance(command, str) else None
         if info is None:
@@ -308,6 +331,39 @@ class AhrsClient:
                     raise
                 self.stop()
         raise AssertionError("unreachable")
+
+    def request_any_state(
+        self, command: str, block: Payload | Mapping[str, object] | None = None, *, output: str | None = None
+    ) -> Reply:
+        """Send `command` (and its parameter block) to a device whose state the client does not
+        know, and wait until its answers show the state it was in (`ilahrs.anystate`): the
+        decoded answers, or no answer after the reply timeout. Nothing is retried and no Stop
+        is sent, so the device stays in its state. The client then follows the device from the
+        state the answers show (unchanged when none fits). `output`: the output format the device
+        uses, or the command that started it (default: the one this client started, if any)."""
+        host = self.host
+        output = output if output is not None else host.output_format
+        request = AnyStateRequest(
+            command, block, firmware=host.firmware, reply_timeout=host.reply_timeout, output=output
+        )
+        self._read(wait=False)  # what came before the command, and the host's clock brought up to now
+        self._queue.clear()
+        self._write(request.data)
+        while not request.done:
+            quiet, data, within = self._read_line(wait=True)
+            request.advance(quiet)
+            request.receive(data, within=within)
+        reply = request.reply()
+        answers = tuple(dataclasses.replace(event, at=self._last) for event in reply.answers)
+        reply = dataclasses.replace(reply, answers=answers)
+        for event in answers:
+            self.events.append(event)
+            raw = getattr(event, "raw", None)
+            if raw:
+                self.received.append(raw)
+        if reply.host is not None:
+            self.host = reply.host
+        return reply
 
     def wait_for(self, predicate: Callable[[HostEvent], bool], timeout: float) -> HostEvent:
         """The first queued or new event that satisfies `predicate`; ClientError after `timeout`

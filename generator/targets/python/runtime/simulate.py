@@ -3,11 +3,15 @@ socket, in real time.
 
 `run_pty()` opens a pty whose device end is set to the AHRS line (BAUDRATE, 8N1, raw), prints
 its path as the first line of output, and serves the device model there; any serial client
-(pyserial, `screen`) can talk to it. `run_tcp()` serves one client on a loopback address instead
-(never another address) and prints `HOST:PORT` first. Output is paced by the device model's own
-clock, advanced with the wall clock. A `Faults` object corrupts and drops bytes and puts garbage
-between messages at given rates (seeded), and the log (JSON lines) says what was meant and what
-was written for every message, so a test can check that each intact message arrived.
+(pyserial, `screen`) can talk to it. `run_tcp()` serves a loopback address instead (never another
+address) and prints the URL a client opens, `socket://HOST:PORT`, first; it serves one connection
+at a time, one after another, until stopped. The device carries on between connections, as a
+real AHRS does when a program closes its port: its state, parameters and calibration stay, its
+clock runs, and what it sends while no client is connected is lost (counted in `Line.lost`).
+Output is paced by the device model's own clock, advanced with the wall clock. A `Faults` object
+corrupts and drops bytes and puts garbage between messages at given rates (seeded), and the log
+(JSON lines) says what was meant and what was written for every message, so a test can check that
+each intact message arrived.
 
 This module is the edge of the package: it uses os, select, socket and termios (POSIX).
 """
@@ -33,7 +37,7 @@ from .pcapng import Direction, PcapngWriter
 from .spec import SERIAL_LINE
 from .stream import StreamDecoder
 
-__all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "recorder", "run_pty", "run_tcp"]
+__all__ = ["BAUDRATE", "Faults", "Line", "loopback_address", "recorder", "run_pty", "run_tcp", "socket_url"]
 
 BAUDRATE: Final = int(SERIAL_LINE["baud_rate"])
 """The baud rate of the AHRS serial line (section 6; 8 data bits, no parity, 1 stop bit: `ilahrs.spec`)."""
@@ -161,6 +165,11 @@ def loopback_address(text: str) -> tuple[str, int]:
     return host, int(port)
 
 
+def socket_url(host: str, port: int) -> str:
+    """The pyserial URL of a TCP port: socket://HOST:PORT (an IPv6 host in brackets)."""
+    return f"socket://[{host}]:{port}" if ":" in host else f"socket://{host}:{port}"
+
+
 class _Stop:
     """Set by SIGINT / SIGTERM."""
 
@@ -251,8 +260,9 @@ def run_pty(line: Line, out: TextIO = sys.stdout) -> int:
 
 
 def run_tcp(line: Line, address: str, out: TextIO = sys.stdout) -> int:
-    """Serve `line` to one client on a loopback address (port 0: any free port); print HOST:PORT
-    first. Returns when the client closes the connection or on SIGINT / SIGTERM."""
+    """Serve `line` on a loopback address (port 0: any free port); print socket://HOST:PORT first.
+    One connection at a time, one after another, until SIGINT / SIGTERM; between connections the
+    device carries on and what it sends is lost. Returns an exit status."""
     host, port = loopback_address(address)
     family = socket.AF_INET6 if ":" in host else socket.AF_INET
     stop = _Stop()
@@ -260,15 +270,39 @@ def run_tcp(line: Line, address: str, out: TextIO = sys.stdout) -> int:
         server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         server.bind((host, port))
         server.listen(1)
-        bound = server.getsockname()
-        print(f"{host}:{bound[1]}", file=out, flush=True)
+        server.setblocking(False)
+        print(socket_url(host, server.getsockname()[1]), file=out, flush=True)
         while not stop.requested:
-            ready, _, _ = select.select([server], [], [], _TICK)
+            connection = _accept(line, server, stop)
+            if connection is not None:
+                _serve_connection(line, connection, stop)
+    return 0
+
+
+def _accept(line: Line, server: socket.socket, stop: _Stop) -> socket.socket | None:
+    """Wait for the next client while the device runs on (its output lost, and not recorded: no
+    host saw it); None when stopped."""
+    recording, line.recorder = line.recorder, None
+    try:
+        while not stop.requested:
+            wait = line.device.next_event_in
+            timeout = _TICK if wait is None else max(0.0005, min(_TICK, wait))
+            ready, _, _ = select.select([server], [], [], timeout)
+            out = line.step(b"", time.monotonic())
+            if out:
+                line.lose(out)
             if ready:
-                break
-        if stop.requested:
-            return 0
-        connection, _peer = server.accept()
+                try:
+                    connection, _peer = server.accept()
+                except (BlockingIOError, ConnectionAbortedError):
+                    continue
+                return connection
+        return None
+    finally:
+        line.recorder = recording
+
+
+def _serve_connection(line: Line, connection: socket.socket, stop: _Stop) -> None:
     with connection:
         connection.setblocking(False)
         connection.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
@@ -283,4 +317,3 @@ def run_tcp(line: Line, address: str, out: TextIO = sys.stdout) -> int:
             return data or None  # b"": the peer closed
 
         _serve(line, connection.fileno(), stop, read, connection.send)
-    return 0

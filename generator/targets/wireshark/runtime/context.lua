@@ -5,21 +5,44 @@
 -- what is owed, then against what the current state's timer sends (alignment blocks, output,
 -- calibration results), then against output still in flight from the previous state. A message
 -- nothing explains is shown as such, never guessed. Owed answers that do not come within the
--- answer timeout are reported missing on the request.
+-- answer timeout are reported missing on the request; only those: an answer owed to a retry sent
+-- before that timeout is still owed. A capture begun mid-stream starts, as `Host.mid_stream`
+-- does, in the state where the output of the start command of the preferences flows.
 
 local Context = {}
 Context.__index = Context
 
 local MACHINE = SPEC.machine
 
--- settings: { firmware = version text or "", timeout = seconds }
+-- The state in which the output a start command chose flows: the command's transition from the
+-- initial state, then the timers' transitions (the alignment) to the state that sends output.
+function Context.streaming_state(command, firmware)
+  local first = P.lookup(MACHINE.initial, command, firmware)
+  local state = first and first.to or MACHINE.initial
+  for _ = 1, #MACHINE.states do
+    local _, timed = P.timer_transition(state)
+    if timed == nil or timed.to == state then
+      break
+    end
+    state = timed.to
+  end
+  return state
+end
+
+-- settings: { firmware = version text or "", timeout = seconds, start = the command whose output
+-- the capture begins in, or nil }
 function Context.new(settings)
+  local state, output = MACHINE.initial, nil
+  if settings.start then
+    state = Context.streaming_state(settings.start, settings.firmware)
+    output = P.commands[settings.start].starts_output
+  end
   return setmetatable({
     settings = settings,
-    state = MACHINE.initial, -- what the host has seen of the device's state
-    target = MACHINE.initial, -- the state once every owed answer has come
+    state = state, -- what the host has seen of the device's state
+    target = state, -- the state once every owed answer has come
     owed = {},
-    output = nil, -- the output format the last start command chose
+    output = output, -- the output format the last start command (or the preferences) chose
     timer_index = 0,
     late_state = nil,
     late_until = 0,
@@ -50,12 +73,16 @@ function Context:timer_done(state, time)
   end
 end
 
--- Owed answers past their deadline: reported on their request, forgotten.
+-- Owed answers past their deadline: reported on their request (the first one each), forgotten.
+-- What is owed to a later request (a retry) keeps its own deadline.
 function Context:expire(time)
-  local owed = self.owed[1]
-  if owed and time > owed.deadline then
-    owed.request.missing = owed.item
-    self.owed = {}
+  local expired = false
+  while self.owed[1] and time > self.owed[1].deadline do
+    local owed = table.remove(self.owed, 1)
+    owed.request.missing = owed.request.missing or owed.item
+    expired = true
+  end
+  if expired and #self.owed == 0 then
     self:enter(self.target, time)
   end
 end
@@ -218,5 +245,24 @@ function Context:explain(msg, time)
       end
     end
   end
-  return { kind = "unexpected", expected = owed and owed.item, source = owed and owed.source }
+  return { kind = "unexpected", expected = owed and owed.item, source = owed and owed.source,
+    no_start = self.output == nil and Context.looks_like_output(msg) }
+end
+
+-- A $ sentence, or a data frame of the size of an output format's table: what output would be,
+-- had a start command (or the preferences) chosen its format.
+function Context.looks_like_output(msg)
+  if msg.sentence then
+    return true
+  end
+  local kind, payload = Context.frame_parts(msg.raw)
+  if kind ~= SPEC.frame.data_type then
+    return false
+  end
+  for _, name in pairs(MACHINE.output_formats) do
+    if name and P.payloads[name].size == #payload then
+      return true
+    end
+  end
+  return false
 end

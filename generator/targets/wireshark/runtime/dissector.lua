@@ -30,7 +30,8 @@ local function process(tvb, pinfo)
   local key, from_host = conversation(pinfo)
   local conv = conversations[key]
   if conv == nil then
-    local settings = { firmware = proto.prefs.firmware, timeout = proto.prefs.timeout / 1000 }
+    local settings = { firmware = proto.prefs.firmware, timeout = proto.prefs.timeout / 1000,
+      start = STARTERS[proto.prefs.output_format] }
     conv = { host = Stream.new(), device = Stream.new(), context = Context.new(settings) }
     conversations[key] = conv
   end
@@ -81,9 +82,15 @@ local function printable(text)
   end))
 end
 
-local function usw_tree(item, range, value)
+-- The flags of a status word: from the bytes of a frame, from the parsed value of a sentence
+-- (whose bytes are hex digits).
+local function usw_tree(item, range, value, text)
   for _, flag in ipairs(SPEC.status_word.flags) do
-    add_wire(item, USW.flags[flag.name], range)
+    if text then
+      item:add(USW.flags[flag.name], range, value)
+    else
+      add_wire(item, USW.flags[flag.name], range)
+    end
   end
   item:add(USW.mode, range, P.usw_mode(value)):set_generated()
 end
@@ -91,10 +98,7 @@ end
 -- What an encoding, an enum or multiplexing adds to a value's text.
 local function annotate(item, f, raw)
   local encodings = SPEC.encodings
-  if f.encoding == "date" then
-    local date = P.decode_date(raw)
-    item:append_text(date and " (" .. date .. ")" or " (not a date)")
-  elseif f.encoding == "declination" and raw > encodings.declination.compute_above then
+  if f.encoding == "declination" and raw > encodings.declination.compute_above then
     item:append_text(" (the device computes it)")
   elseif f.encoding == "calibration_success" then
     local c = encodings.calibration_success
@@ -103,7 +107,7 @@ local function annotate(item, f, raw)
     elseif raw == c.no_estimate then
       item:append_text(" (succeeded, no estimate)")
     else
-      item:append_text(string.format(" (succeeded, estimate %g)", raw / c.accuracy_divisor))
+      item:append_text(string.format(" (succeeded, %g %s)", raw / c.accuracy_divisor, c.accuracy_unit))
     end
   end
   local enum = f.enum and SPEC.enums[f.enum]
@@ -139,6 +143,16 @@ local function payload_tree(tree, mtvb, offset, name)
     local item
     if f.type == "reserved" then
       item = sub:add(entry.value, range)
+    elseif f.encoding == "date" then
+      -- The calendar date, the float as sent beside it; a float no date is near: the float only.
+      local date = P.decode_date(raw)
+      if date then
+        item = sub:add(entry.value, range, date)
+        item:add(entry.raw, range, raw)
+      else
+        item = sub:add(entry.raw, range, raw)
+        item:append_text(" (not a date)")
+      end
     elseif entry.raw then
       item = sub:add(entry.value, range, P.engineering(f, raw, variant))
       item:append_text(unit)
@@ -147,11 +161,20 @@ local function payload_tree(tree, mtvb, offset, name)
       item = sub:add(entry.value, range, raw)
       item:append_text(unit)
     end
-    if type(raw) == "number" then
+    if type(raw) == "number" and f.encoding ~= "date" then
       annotate(item, f, raw)
     end
     if f.encoding == "usw" then
       usw_tree(item, range, raw)
+    end
+    if entry.outcome then
+      local c = SPEC.encodings.calibration_success
+      sub:add(entry.outcome, range, raw == c.failed and "failed" or "succeeded"):set_generated()
+      if raw ~= c.failed and raw ~= c.no_estimate then
+        local accuracy = sub:add(entry.accuracy, range, raw / c.accuracy_divisor)
+        accuracy:append_text(" " .. c.accuracy_unit)
+        accuracy:set_generated()
+      end
     end
   end
   return sub
@@ -171,7 +194,7 @@ local function sentence_tree(tree, mtvb, offset, raw, values)
       item:append_text(f.unit and " " .. f.unit or "")
       item:add(entry.raw, range, value)
     else
-      usw_tree(tree:add(entry.value, range, value), range, value)
+      usw_tree(tree:add(entry.value, range, value), range, value, true)
     end
     pos = pos + #part + 1
   end
@@ -238,6 +261,11 @@ local function device_body(sub, payload_range, mtvb, info)
     end
     local text = "Nothing in state " .. info.state .. " explains this message"
     sub:add_proto_expert_info(E.unexpected, text .. (info.expected and " (expected " .. info.expected .. ")" or ""))
+    if info.no_start then
+      sub:add_proto_expert_info(E.no_start, "Output with no start command before it: if the capture began "
+        .. "mid-stream, set the preference \"Output format (capture begun mid-stream)\" (-o " .. SPEC.name
+        .. ".output_format:COMMAND) to the command that started it")
+    end
   elseif info.table and payload_range then
     payload_tree(sub, mtvb, payload_range:offset(), info.table)
   end
@@ -295,12 +323,43 @@ local function draw_message(tree, tvb, pinfo, item, from_host)
   end
 end
 
+-- A frame or sentence given up because the next message starts inside it: the bytes that came.
+local function draw_truncated(sub, mtvb, offset, item)
+  local raw = item.raw
+  if item.sentence then
+    sub:add(F.sentence, mtvb(offset, #raw), printable((raw:gsub("[\r\n]+$", ""))))
+  else
+    local frame = SPEC.frame
+    sub:add(F.header, mtvb(offset, math.min(#P.header, #raw)))
+    for _, f in ipairs(frame.fields) do
+      if f.offset + f.size <= #raw then
+        add_wire(sub, frame_fields[f.name], mtvb(offset + f.offset, f.size))
+      end
+    end
+    if #raw > frame.payload_offset then
+      sub:add(F.payload, mtvb(offset + frame.payload_offset, #raw - frame.payload_offset))
+    end
+  end
+  local what = item.sentence and "sentence" or "frame"
+  local why = item.sentence and "no CR LF before it"
+    or string.format("its length field announces %d bytes", item.truncated_from)
+  sub:add_proto_expert_info(E.damaged, string.format("Truncated %s: %d bytes, then the next message (%s)", what,
+    #raw, why))
+end
+
+local function damage_text(item)
+  return "damaged " .. (item.sentence and "sentence" or "frame") .. ": " .. printable(item.reason)
+end
+
 local function draw_damaged(tree, tvb, pinfo, item)
   local mtvb, offset = locate(tvb, pinfo, item, "Damaged message")
   local reason = printable(item.reason)
-  local sub = tree:add(proto, mtvb(offset, #item.raw), LABEL .. ", damaged " .. (item.sentence and "sentence"
-    or "frame") .. ": " .. reason)
+  local sub = tree:add(proto, mtvb(offset, #item.raw), LABEL .. ", " .. damage_text(item))
   generated(sub, F.damaged, reason)
+  if item.truncated_from then
+    draw_truncated(sub, mtvb, offset, item)
+    return
+  end
   local checksum_range
   if item.sentence then
     checksum_range = mtvb(offset + #item.raw - 4, 2)
@@ -351,7 +410,7 @@ function proto.dissector(tvb, pinfo, tree)
       table.insert(texts, summary(item, record.from_host))
     elseif item.kind == "damaged" then
       draw_damaged(tree, tvb, pinfo, item)
-      table.insert(texts, "damaged " .. (item.sentence and "sentence" or "frame"))
+      table.insert(texts, damage_text(item))
     else
       draw_discarded(tree, tvb, pinfo, item)
       discarded = discarded + #item.raw

@@ -1,6 +1,9 @@
 -- The protocol, its preferences and display-filter fields, registered from SPEC: one field per
 -- frame field, per payload field (the engineering value, with the raw value beside it when a scale
--- applies), per $PAHR field and per Unit Status Word flag; the rest is the dissector's own.
+-- applies; a date as YYYY-MM-DD with the float beside it; the calibration success byte with its
+-- outcome and predicted accuracy), per $PAHR field and per Unit Status Word flag; the rest is the
+-- dissector's own. Labels are the spec's titles (the ICD's names); the filter names are the
+-- spec's field names.
 
 local proto = Proto(SPEC.name, SPEC.icd)
 local NAME = SPEC.name
@@ -94,19 +97,34 @@ for _, p in ipairs(SPEC.payloads) do
   for _, f in ipairs(p.fields) do
     local abbrev = NAME .. "." .. p.name .. "." .. f.name
     local names = f.enum and SPEC.enums[f.enum].values or nil
-    local display = (f.encoding == "usw") and base.HEX or base.DEC
+    -- Checksums (an acknowledgement's) in hex, as the frame's own checksum.
+    local hex = f.encoding == "usw" or p.name == SPEC.ack_payload
+    local display = hex and base.HEX or base.DEC
+    local label = f.label
     local entry = {}
-    if f.type == "char" then
-      entry.value = ProtoField.string(abbrev, f.name, base.ASCII, describe(f))
+    if f.encoding == "date" then
+      entry.value = ProtoField.string(abbrev, label, base.ASCII,
+        "The calendar date whose encoding is nearest the float (YYYY-MM-DD). " .. describe(f))
+      entry.raw = ProtoField.double(abbrev .. ".raw", label .. " (float)", nil,
+        "The date float as sent, every digit of its value")
+    elseif f.type == "char" then
+      entry.value = ProtoField.string(abbrev, label, base.ASCII, describe(f))
     elseif f.type == "reserved" then
-      entry.value = ProtoField.bytes(abbrev, f.name, base.NONE, describe(f))
+      entry.value = ProtoField.bytes(abbrev, label, base.NONE, describe(f))
     elseif f.type == "f32" then
-      entry.value = ProtoField.float(abbrev, f.name, nil, describe(f))
+      entry.value = ProtoField.float(abbrev, label, nil, describe(f))
     elseif f.multiplier ~= nil then
-      entry.value = ProtoField.double(abbrev, f.name, nil, describe(f))
-      entry.raw = WIRE[f.type](abbrev .. ".raw", "raw", base.DEC, nil, nil, "The value as sent")
+      entry.value = ProtoField.double(abbrev, label, nil, describe(f))
+      entry.raw = WIRE[f.type](abbrev .. ".raw", label .. " (raw)", base.DEC, nil, nil, "The value as sent")
     else
-      entry.value = WIRE[f.type](abbrev, f.name, display, names, nil, describe(f))
+      entry.value = WIRE[f.type](abbrev, label, display, names, nil, describe(f))
+    end
+    if f.encoding == "calibration_success" then
+      entry.outcome = ProtoField.string(abbrev .. ".outcome", "Calibration outcome", base.ASCII,
+        "succeeded or failed, as the success byte says")
+      entry.accuracy = ProtoField.double(abbrev .. ".accuracy", "Predicted heading accuracy", nil,
+        "The predicted 3-sigma heading error in " .. SPEC.encodings.calibration_success.accuracy_unit
+        .. "; absent when the calibration failed or gave no estimate")
     end
     PAYLOAD_FIELDS[p.name][f.name] = entry
   end
@@ -119,10 +137,10 @@ for _, f in ipairs(SPEC.nmea.fields) do
   local abbrev = SENTENCE .. "." .. f.name
   local entry = {}
   if f.format == "hex" then
-    entry.value = ProtoField.uint16(abbrev, f.name, base.HEX, nil, nil, describe(f))
+    entry.value = ProtoField.uint16(abbrev, f.label, base.HEX, nil, nil, describe(f))
   else
-    entry.value = ProtoField.double(abbrev, f.name, nil, describe(f))
-    entry.raw = ProtoField.int32(abbrev .. ".raw", "raw", base.DEC, nil, nil,
+    entry.value = ProtoField.double(abbrev, f.label, nil, describe(f))
+    entry.raw = ProtoField.int32(abbrev .. ".raw", f.label .. " (raw)", base.DEC, nil, nil,
       string.format("The value x %d, as the sentence carries it", 10 ^ f.decimals))
   end
   NMEA_FIELDS[f.name] = entry
@@ -143,6 +161,8 @@ for _, entries in pairs(PAYLOAD_FIELDS) do
   for _, entry in pairs(entries) do
     table.insert(all, entry.value)
     all[#all + 1] = entry.raw
+    all[#all + 1] = entry.outcome
+    all[#all + 1] = entry.accuracy
   end
 end
 for _, entry in pairs(NMEA_FIELDS) do
@@ -154,7 +174,7 @@ proto.fields = all
 local E = {
   checksum = ProtoExpert.new(NAME .. ".expert.bad_checksum", "Bad checksum",
     expert.group.CHECKSUM, expert.severity.WARN),
-  damaged = ProtoExpert.new(NAME .. ".expert.damaged", "Damaged sentence",
+  damaged = ProtoExpert.new(NAME .. ".expert.damaged", "Damaged message",
     expert.group.MALFORMED, expert.severity.WARN),
   discarded = ProtoExpert.new(NAME .. ".expert.discarded", "Bytes discarded",
     expert.group.UNDECODED, expert.severity.NOTE),
@@ -170,9 +190,11 @@ local E = {
     expert.group.PROTOCOL, expert.severity.WARN),
   late = ProtoExpert.new(NAME .. ".expert.late", "Output from the previous state",
     expert.group.SEQUENCE, expert.severity.CHAT),
+  no_start = ProtoExpert.new(NAME .. ".expert.no_start", "Output with no start command",
+    expert.group.SEQUENCE, expert.severity.NOTE),
 }
 proto.experts = { E.checksum, E.damaged, E.discarded, E.unexpected, E.wrong_ack, E.missing, E.ignored, E.unknown,
-  E.late }
+  E.late, E.no_start }
 
 -- Preferences.
 local variants = {}
@@ -194,3 +216,17 @@ proto.prefs.firmware = Pref.string("Firmware version", "",
   "The device's firmware; before some versions some transitions differ. Empty: current firmware")
 proto.prefs.timeout = Pref.uint("Answer timeout (ms)", 1000,
   "How long an answer the device owes may take before it is reported missing")
+
+-- The commands that start output: a capture begun mid-stream is read as their output.
+local STARTERS = {}
+local starter_choices = { { "none", "none: the capture holds the start command", 0 } }
+for _, c in ipairs(SPEC.commands) do
+  if c.starts_output then
+    table.insert(STARTERS, c.name)
+    table.insert(starter_choices, { c.name, c.name .. " (" .. c.starts_output .. ")", #STARTERS })
+  end
+end
+proto.prefs.output_format = Pref.enum("Output format (capture begun mid-stream)", 0,
+  "For a capture that begins while the device is already sending output: the command that started it ("
+  .. table.concat(STARTERS, ", ") .. "). The capture is read from the state where that output flows, "
+  .. "in its format. none: the capture holds the start command", starter_choices, false)

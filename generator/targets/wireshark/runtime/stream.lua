@@ -2,12 +2,17 @@
 -- direction of a conversation; bytes are fed packet by packet, in capture order. Each held byte
 -- remembers the packet it came in and its offset there, so that a message or a run of discarded
 -- bytes can be shown where it lies, or reassembled when it spans packets.
+--
+-- A candidate that fails its checksum is shown as damaged, but only once the scan has passed its
+-- bytes: if a valid message, or another damaged candidate, starts inside them, the candidate was
+-- truncated (its rest never came, and the bytes after it are the next message's) and is shown
+-- as such, up to where that message starts, never reaching into it.
 
 local Stream = {}
 Stream.__index = Stream
 
 function Stream.new()
-  return setmetatable({ buffer = "", frames = {}, offsets = {}, discarded = 0 }, Stream)
+  return setmetatable({ buffer = "", frames = {}, offsets = {}, discarded = 0, suspect = nil }, Stream)
 end
 
 -- A piece of the held bytes, first to last (1-based): its bytes and where its first byte came from.
@@ -40,11 +45,23 @@ local function damaged(s, pos, reason, sent, computed, size)
     sentence = sentence }
 end
 
+-- The damaged candidate held until the scan has passed its bytes, cut to its first `size` bytes
+-- when it was truncated.
+local function settle(suspect, size)
+  local bad = suspect.item
+  if size < #bad.raw then
+    bad.truncated_from, bad.reason, bad.sent, bad.computed = #bad.raw, "truncated", nil, nil
+    bad.raw = bad.raw:sub(1, size)
+    bad.contiguous = suspect.frames[size] == bad.frame
+  end
+  return bad
+end
+
 -- Add the bytes of packet `frame`; return what they complete, in order: messages
 -- ({ kind = "message", raw, frame, offset, contiguous, sentence = values or nil }), runs of
 -- discarded bytes ({ kind = "discard", ... }) and damaged frames and sentences, whose bytes are
--- discarded too ({ kind = "damaged", reason, sent, computed, ... }). A candidate that needs bytes
--- not yet received waits for the next packet.
+-- discarded too ({ kind = "damaged", reason, sent, computed, truncated_from, ... }). A candidate
+-- that needs bytes not yet received waits for the next packet.
 function Stream:feed(data, frame)
   local base = #self.buffer
   self.buffer = self.buffer .. data
@@ -64,8 +81,17 @@ function Stream:feed(data, frame)
       run = nil
     end
   end
+  -- Show the suspect once the scan is past it, or cut where a message starts inside it.
+  local function decide(pos, starts)
+    local suspect = self.suspect
+    if suspect and (pos > suspect.last or starts) then
+      table.insert(out, settle(suspect, math.min(pos - suspect.first, #suspect.item.raw)))
+      self.suspect = nil
+    end
+  end
   local pos = 1
   while pos <= #s do
+    decide(pos, false)
     local first = s:byte(pos)
     if first ~= P.header:byte(1) and first ~= P.SENTENCE_START then
       run = run or pos
@@ -82,13 +108,19 @@ function Stream:feed(data, frame)
       elseif used == P.INVALID then
         local bad = damaged(s, pos, extra, sent, computed, size)
         if bad then
+          decide(pos, true)
           local piece = self:piece(pos, pos + size - 1)
           bad.raw, bad.frame, bad.offset, bad.contiguous = piece.raw, piece.frame, piece.offset, piece.contiguous
-          table.insert(out, bad)
+          local frames = {}
+          for i = pos, pos + size - 1 do
+            frames[i - pos + 1] = self.frames[i]
+          end
+          self.suspect = { item = bad, first = pos, last = pos + size - 1, frames = frames }
         end
         run = run or pos
         pos = pos + 1
       else
+        decide(pos, true)
         close(pos)
         local piece = self:piece(pos, pos + used - 1)
         piece.kind = "message"
@@ -98,7 +130,11 @@ function Stream:feed(data, frame)
       end
     end
   end
+  decide(pos, false)
   close(pos)
+  if self.suspect then
+    self.suspect.first, self.suspect.last = self.suspect.first - pos + 1, self.suspect.last - pos + 1
+  end
   self.buffer = s:sub(pos)
   local frames, offsets = {}, {}
   for i = pos, #s do
