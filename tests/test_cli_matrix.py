@@ -199,7 +199,9 @@ def _argv(case: Case, port: str, folder: Path) -> list[str]:
     if sub == "send":
         table = COMMANDS[arg].parameter_block
         values = [] if table is None else [f"{k}={v}" for k, v in _block_values(table).items()]
-        return ["send", port, arg, *values]
+        started = [step.command for step in PATHS[state] if step.command in STARTS]
+        output = ["--output-format", started[-1]] if started else []  # the user knows what they started
+        return ["send", port, arg, *values, *output]
     if sub == "params":
         return ["params", port]
     if sub == "record":
@@ -302,41 +304,7 @@ def _one_clear_outcome(result: Result) -> None:
         assert len(lines) == 1, result.stderr
 
 
-# `send` cases that fail on the code of today: the answer is predicted from the first state with a
-# transition for the command, not from the state the device is in.
-SEND_TODAY: Final = {
-    ("continuous", "LowPowerOn"),  # the last block, with the sleep mode bits (E35)
-    ("on_request", "GetDataReq"),
-    ("calibration_awaiting_parameters", "ExitClb"),
-    ("calibration_aligning", "ExitClb"),
-    ("calibration_accumulating", "StopClbRun"),
-    ("calibration_accumulating", "ExitClb"),
-    ("calibration_deciding", "AcceptClb"),
-    ("calibration_deciding", "ExitClb"),
-    ("runs_awaiting_parameters", "ExitClb"),
-    ("runs_ready", "StartClbRun"),
-    ("runs_ready", "FinishClb"),
-    ("runs_ready", "ExitClb"),
-    ("run_awaiting_parameters", "ExitClb"),
-    ("run_aligning", "ExitClb"),
-    ("run_accumulating", "StopClbRun"),
-    ("run_accumulating", "ExitClb"),
-}
-"""(state, command): today `send` prints "sent (the command has no answer)" or refuses the command."""
-
-
-def _send_params() -> list[object]:
-    params: list[object] = []
-    for state in STATES:
-        for command in COMMANDS:
-            marks = []
-            if (state, command) in SEND_TODAY:
-                marks.append(pytest.mark.xfail(strict=True, reason="send predicts the answer from another state"))
-            params.append(pytest.param(state, command, marks=marks, id=f"{state}-{command}"))
-    return params
-
-
-@pytest.mark.parametrize(("state", "command"), _send_params())
+@pytest.mark.parametrize(("state", "command"), [(s, c) for s in STATES for c in COMMANDS])
 def test_send(results: dict[Case, Result], state: str, command: str) -> None:
     result = results[("send", state, command)]
     _one_clear_outcome(result)
