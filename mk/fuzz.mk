@@ -11,6 +11,9 @@
 #   make test-fuzz      (in make test) C, Rust and Python on the same seeded inputs, compared three
 #                       ways (fuzz/differential.py)
 #   make lint-fuzz      (in make check) ruff and mypy on fuzz/*.py
+#   make fuzz-stateful  (in make fuzz) the stateful client test (tests/test_client_stateful.py) with
+#                       STATEFUL_EXAMPLES examples of up to STATEFUL_STEPS steps, new ones each run;
+#                       prints the (state, command, pause) combinations it explored
 #
 # make test-c also runs each C fuzzer FUZZ_RUNS times from these seeds and fails unless libFuzzer's
 # coverage report shows the functions its source names on `fuzz-must-reach:` lines (fuzz/run.py check).
@@ -35,7 +38,7 @@ FUZZ_RUN = $(PY) fuzz/run.py fuzz --plateau $(FUZZ_PLATEAU) --plateau-python $(F
            --jobs $(FUZZ_JOBS)
 FUZZ_PY_FILES := fuzz/seeds.py fuzz/run.py fuzz/differential.py fuzz/python/records.py fuzz/python/targets.py
 
-.PHONY: fuzz-seeds fuzz-all fuzz-c fuzz-rust fuzz-python fuzz-rust-build test-fuzz lint-fuzz
+.PHONY: fuzz-stateful fuzz-seeds fuzz-all fuzz-c fuzz-rust fuzz-python fuzz-rust-build test-fuzz lint-fuzz
 
 $(FUZZ_SEEDS): fuzz/seeds.py fuzz/python/records.py $(wildcard generated/python/ilahrs/*.py) | setup
 	$(PY) fuzz/seeds.py $(FUZZ_OUT)
@@ -77,6 +80,13 @@ lint-fuzz: setup
 	$(VENV)/bin/ruff format --check $(FUZZ_PY_FILES)
 	$(VENV)/bin/mypy $(FUZZ_PY_FILES)
 
-FUZZ_TARGETS += fuzz-all
+# The client against the device model on a pty, in real time (mostly sleeping: ~10 min, little CPU).
+STATEFUL_EXAMPLES ?= 40
+STATEFUL_STEPS ?= 40
+fuzz-stateful: setup
+	ILAHRS_STATEFUL_EXAMPLES=$(STATEFUL_EXAMPLES) ILAHRS_STATEFUL_STEPS=$(STATEFUL_STEPS) ILAHRS_STATEFUL_RANDOM=1 \
+	  $(PY) -m pytest -q -s tests/test_client_stateful.py
+
+FUZZ_TARGETS += fuzz-all fuzz-stateful
 LINT_TARGETS += lint-fuzz
 TEST_TARGETS += test-fuzz

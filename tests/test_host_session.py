@@ -234,3 +234,20 @@ def test_an_answer_read_after_its_deadline_counts_when_it_came() -> None:
     assert isinstance(missing, ProtocolError) and missing.problem == "missing"
     with pytest.raises(ilahrs.IlahrsError):
         host.receive(b"", within=-1.0)
+
+
+@pytest.mark.parametrize(("start", "leave"), [("Start2DClb", "ExitClb"), ("AHRScont3", "Stop"), ("AHRSreq3", "Stop")])
+def test_a_timer_block_in_flight_when_a_command_goes_out_keeps_the_command_s_state(start: str, leave: str) -> None:
+    """The alignment block the device sent while the host was not reading arrives with the answer
+    to the command the host sent meanwhile: the host follows the block's transition, then the
+    command's (found by the stateful client test: the host was left in calibration_deciding,
+    the device idle)."""
+    pair = Pair(seed=SEED)
+    table = ilahrs.COMMANDS[start].parameter_block
+    pair.send(start, None if table is None else ilahrs.CalibrationParameters(accumulation_time=2))
+    in_flight = pair.device.advance(1.2)  # the alignment block: not read yet
+    assert in_flight
+    answer = pair.device.receive(pair.host.send(leave))
+    pair.host.receive(in_flight + answer)
+    pair.host.advance(3.0)
+    assert pair.host.state == pair.device.state == "idle"

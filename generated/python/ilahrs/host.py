@@ -502,7 +502,9 @@ class Host:
         old = self._state
         if state != old:
             self._late_state, self._late_until = old, self._now + round(self.reply_timeout * _NS)
-        self._state = self._target = state
+        self._state = state
+        if not self._owed:  # a timed block that was in flight keeps the target of the command sent since
+            self._target = state
         if state != old:
             self._arm_timer()
 
