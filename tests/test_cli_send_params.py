@@ -362,3 +362,27 @@ def test_every_subcommand_shows_a_value_the_same_way() -> None:
     read = PAYLOADS["ahrs_parameters_read"].from_raw({"date": date_from_text("2024-06-15")})
     date = next(info for info in read.FIELDS if info.name == "date")
     assert row_fields(read, variant)["date"] == field_text(date, read.raw()["date"]) == "2024-06-15"
+
+
+@pytest.mark.parametrize("to", ["text", "csv"])
+def test_decode_into_a_closed_pipe_is_the_same_one_line(tmp_path: Path, to: str) -> None:
+    """decode (message by message and columnar) ends a closed pipe as every subcommand does."""
+    capture = tmp_path / "s.pcapng"
+    with simulator(tmp_path) as sim:
+        recorded = ilahrs("record", sim.port, "-o", str(capture), "--start", "AHRScont3", "--count", "300")
+        assert recorded.returncode == 0, recorded.stderr
+    read, write = os.pipe()
+    os.close(read)
+    try:
+        closed = subprocess.run(
+            [*ILAHRS, "decode", str(capture), "--to", to],
+            stdout=write,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+            check=False,
+        )
+    finally:
+        os.close(write)
+    assert closed.returncode == 2, closed.stderr
+    assert closed.stderr.strip().splitlines() == ["ilahrs: decode: standard output closed"]

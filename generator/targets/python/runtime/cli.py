@@ -7,7 +7,6 @@ from __future__ import annotations
 import argparse
 import difflib
 import math
-import os
 import re
 import sys
 from collections.abc import Callable, Iterable
@@ -340,9 +339,9 @@ def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str
 def _drive(
     source: Source, feed: Callable[[Chunk], None], finish: Callable[[], None], *, follow: bool
 ) -> CliError | None:
-    """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input, a
-    closed pipe ends the output quietly. Returns the error that cut the capture short, if any (the
-    messages before it are written)."""
+    """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input; a
+    closed pipe (BrokenPipeError) goes on to `ilahrs.__main__.main`, as in every subcommand. Returns
+    the error that cut the capture short, if any (the messages before it are written)."""
     progress = Progress(source)
     failure: CliError | None = None
     try:
@@ -358,8 +357,6 @@ def _drive(
             failure = exc
         finish()
         sys.stdout.flush()
-    except BrokenPipeError:
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
     finally:
         progress.done()
         source.close()
