@@ -19,7 +19,11 @@ length, sum, struct.unpack_from: the reference), what a user writes with the str
 256 MiB capture fed at once to `StreamDecoder.feed_iter` adds (ru_maxrss, in a subprocess), and
 what `ilahrs.columns` (numpy) adds for the same capture beyond the columns it returns.
 
-    .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R] [--rss-mib M]
+Last, `ilahrs decode` of a two-direction pcapng capture to CSV (commands, answers and --two-way
+output frames, the device model's): messages/s message by message and with the output decoded
+as columns (ColumnarCapture).
+
+    .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R] [--rss-mib M] [--two-way N]
 """
 
 from __future__ import annotations
@@ -225,11 +229,87 @@ def capture_section(frame_count: int, repeat: int, rss_mib: int) -> None:
         )
 
 
+TARGET_TWO_WAY_RATIO = 10.0
+
+
+def two_way_capture(count: int) -> bytes:
+    """A pcapng capture of both directions: Stop, AHRScont1, `count` output frames (one packet
+    each, 10 ms apart), Stop, ReadAHRSPar and the output again, the device model answering."""
+    device = ilahrs.Device(seed=1)
+    out = io.BytesIO()
+    writer = ilahrs.pcapng.PcapngWriter(out, port="/dev/ttyUSB0", baud=115200)
+    now = 1_700_000_000_000_000
+    inbound, outbound = ilahrs.pcapng.Direction.INBOUND, ilahrs.pcapng.Direction.OUTBOUND
+    for part, commands in enumerate((("Stop", "AHRScont1"), ("Stop", "ReadAHRSPar", "AHRScont1"))):
+        for name in commands:
+            data = ilahrs.build_command(name)
+            writer.write(data, now, outbound)
+            answer = device.receive(data)
+            now += 4500
+            device.advance(0.0045)
+            if answer:
+                writer.write(answer, now, inbound)
+        got = 0
+        while got < (count // 2 if part == 0 else count - count // 2):
+            data = device.advance(0.01)
+            now += 10_000
+            if data:
+                writer.write(data, now, inbound)
+                got += 1
+    return out.getvalue()
+
+
+def two_way_section(count: int) -> None:
+    """`ilahrs decode CAPTURE.pcapng --to csv` (output as columns) against message by message."""
+    import ilahrs.cli_capture as capture
+    import ilahrs.cli_decode as decode
+
+    data = two_way_capture(count)
+    path = Path(subprocess.check_output(["mktemp", "--suffix=.pcapng"], text=True).strip())
+    try:
+        path.write_bytes(data)
+        variant = next(iter(ilahrs.VARIANTS.values()))
+        kinds = decode.kinds()
+
+        def messages() -> int:
+            decoder = decode.CaptureDecoder(context=True)
+            writer = decode.RowWriter(io.StringIO(), "csv", kinds, variant, raw=False)
+            for chunk in capture.open_source(str(path)).chunks():
+                for message in decoder.feed(chunk):
+                    writer.write(message)
+            for message in decoder.finish():
+                writer.write(message)
+            return sum(decoder.counts.values())
+
+        def columnar() -> int:
+            decoder = decode.ColumnarCapture(io.StringIO(), kinds, variant, raw=False)
+            for chunk in capture.open_source(str(path)).chunks():
+                decoder.feed(chunk)
+            decoder.finish()
+            return sum(decoder.counts.values())
+
+        print(f"\ntwo-direction pcapng: {count} output frames, {len(data)} bytes, decode --to csv")
+        found: dict[str, float] = {}
+        for name, run in (("message by message", messages), ("columns", columnar)):
+            start = time.perf_counter()
+            total = run()
+            found[name] = total / (time.perf_counter() - start)
+            print(f"{name}: {found[name]:.0f} messages/s ({total} messages)")
+        ratio = found["columns"] / found["message by message"]
+        verdict = "met" if ratio >= TARGET_TWO_WAY_RATIO else "NOT met"
+        print(f"columns / message by message: {ratio:.1f}x (target >= {TARGET_TWO_WAY_RATIO:.0f}x: {verdict})")
+    finally:
+        path.unlink()
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--frames", type=int, default=20000, help="frames to decode (default 20000)")
     parser.add_argument("--repeat", type=int, default=3, help="runs per engine; the best counts (default 3)")
     parser.add_argument("--rss-mib", type=int, default=256, help="capture size for the RSS figure (0: skip)")
+    parser.add_argument(
+        "--two-way", type=int, default=100_000, help="output frames in the two-direction capture (default 100000)"
+    )
     parser.add_argument("--rss-child", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--rss-columns-child", type=int, default=0, help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -258,6 +338,7 @@ def main() -> int:
     print(f"ratio ilahrs/kaitai: {ratio:.1f}x (target >= {TARGET_RATIO:.0f}x: {verdict})")
     print(f"ratio ilahrs/construct: {rates['ilahrs'] / rates['construct']:.1f}x")
     capture_section(args.frames * 5, args.repeat, args.rss_mib)
+    two_way_section(args.two_way)
     return 0
 
 

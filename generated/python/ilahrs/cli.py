@@ -17,7 +17,17 @@ from typing import Final, NoReturn
 
 from .cli_capture import Chunk, Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
-from .cli_decode import FORMATS, CaptureDecoder, ColumnarCsv, Progress, RowWriter, kinds, output_table, summary
+from .cli_decode import (
+    FORMATS,
+    CaptureDecoder,
+    ColumnarCapture,
+    ColumnarCsv,
+    Progress,
+    RowWriter,
+    kinds,
+    output_table,
+    summary,
+)
 from .cli_device import DEFAULT_ACCUMULATION_S
 from .cli_plot import plottable
 from .commands import COMMANDS
@@ -296,6 +306,8 @@ def _decode(args: argparse.Namespace) -> int:
     source = open_source(args.file)
     if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
         return _decode_columns(args, source, selected, table)
+    if args.to == "csv" and source.kind == "pcapng" and not args.follow:
+        return _decode_capture_columns(args, source, selected, table)
     return _decode_messages(args, source, selected, table)
 
 
@@ -332,6 +344,28 @@ def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str
     only: `--strict` goes message by message)."""
     decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
     failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, follow=False)
+    if failure is not None:
+        raise failure
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    return 0
+
+
+def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` of a pcapng capture to CSV: the commands and every other message one by one, the
+    device's continuous output a stretch at a time through ilahrs.columnar (ColumnarCapture)."""
+    known = args.output_format is not None
+    decoder = ColumnarCapture(
+        sys.stdout,
+        selected,
+        variant_named(args.variant),
+        raw=args.raw,
+        output=table,
+        output_known=known,
+        strict=args.strict,
+        start=args.output_format if known else None,
+    )
+    failure = _drive(source, decoder.feed, decoder.finish, follow=False)
     if failure is not None:
         raise failure
     for line in summary(decoder, "ilahrs decode"):

@@ -69,6 +69,8 @@ from .frame import (
     MESSAGE_TYPE_OFFSET,
     MIN_MESSAGE_LENGTH,
     PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    STRICT_RESERVED,
     MessageType,
 )
 from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
@@ -83,6 +85,7 @@ __all__ = [
     "FORMATS",
     "UNDETERMINED",
     "CaptureDecoder",
+    "ColumnarCapture",
     "ColumnarCsv",
     "Message",
     "RowWriter",
@@ -401,6 +404,13 @@ class _Splitter:
         self.base += decided
         return located
 
+    def note(self, before: int, data: bytes, when: float | None, packet: int | None) -> None:
+        """`before` bytes, then `data` (a packet), decoded elsewhere as whole messages."""
+        self.fed += before
+        self._packets.append((self.fed, when, packet))
+        self.fed += len(data)
+        self.last = when
+
     def packet_of(self, offset: int) -> tuple[float | None, int | None]:
         """The time and number of the packet holding the byte at `offset`."""
         index = bisect_right(self._packets, offset, key=lambda entry: entry[0]) - 1
@@ -481,6 +491,71 @@ class CaptureDecoder:
         for at, event in self._out.feed(b"", final=True):
             self._outbound(at, event)
         return self._take()
+
+    # --- Output decoded as columns (ColumnarCapture) ---------------------------------------------
+
+    @property
+    def start(self) -> float | None:
+        """The time of the capture's first chunk (None before it)."""
+        return self._start
+
+    @property
+    def inbound_bytes(self) -> int:
+        """Bytes from the device fed so far."""
+        return self._in.fed
+
+    def in_idle(self, now: float | None) -> bool:
+        """Whether the device's line has been idle (E41) before a chunk at `now`."""
+        side = self._in
+        if now is None or self._start is None or side.last is None:
+            return False
+        return now - self._start - side.last >= IDLE_TIMEOUT
+
+    def streaming(self) -> str | None:
+        """The table of the output the host waits for and nothing else (`Host.streaming`), while
+        no bytes of either direction are held undecided; None otherwise."""
+        host = self._host
+        if host is None or self._start is None or self._command is not None:
+            return None
+        for side in (self._in, self._out):
+            if side.buffer or side.decoder.pending or side.damage.held:
+                return None
+        return host.streaming()
+
+    def stream(self, chunks: list[Chunk], outputs: list[int], *, apply: bool) -> int:
+        """The host's clock through `chunks` from the device, outputs[i] output frames completed
+        by chunks[i] (`Host.streamed`): how many chunks pass with no deadline passing. `apply`:
+        move the clocks (the caller then gives the same chunks to `streamed`)."""
+        host = self._host
+        assert host is not None and self._last is not None
+        last = self._last
+        steps: list[int] = []
+        for chunk in chunks:
+            now = chunk.time
+            assert now is not None
+            steps.append(round((now - last) * 1_000_000_000) if now > last else 0)
+            last = max(last, now)
+        done = host.streamed(steps, outputs[: len(steps)], apply=apply)
+        if apply:
+            self._last = last
+        return done
+
+    def streamed(self, chunks: list[Chunk], table: str, count: int, size: int) -> None:
+        """`chunks` from the device were `count` whole output frames of `table` (`size` bytes),
+        decoded elsewhere: count them and move on as `feed` would have."""
+        start = self._start
+        assert start is not None
+        side, out = self._in, self._out
+        latest = max(chunk.time for chunk in chunks if chunk.time is not None)
+        if out.last is not None and latest - start - out.last >= IDLE_TIMEOUT:
+            out.last = None  # nothing held: the idle line releases nothing
+        last = next(chunk for chunk in reversed(chunks) if chunk.data)
+        assert last.time is not None
+        side.note(size - len(last.data), last.data, last.time - start, last.packet)
+        assert side.fed == side.base + size
+        side.base += size
+        side.forget(side.base)
+        self.counts[table] += count
 
     def _take(self) -> list[Message]:
         rows, self._rows = self._rows, []
@@ -747,7 +822,7 @@ class ColumnarCsv:
         """Damaged rows by reason."""
         self.regions = _Regions()
         self.errors: list[str] = []
-        self._known: dict[Callable[[Any], object], dict[Any, object]] = {}
+        self._values = _Values(self._numpy, variant, raw)
 
     def feed(self, data: bytes) -> None:
         buffer = self._pending + data if self._pending else data
@@ -864,19 +939,33 @@ class ColumnarCsv:
         return zip(*base, *(values.get(c, blank) for c in self._columns[len(BASE_COLUMNS) :]), strict=True)
 
     def _table_values(self, window: Window, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
-        """Each column's CSV values, as row_fields gives them."""
+        return self._values.of(window.data, window.base, cls, starts)
+
+
+class _Values:
+    """The CSV values of the fields of frames of one table, decoded as columns, as row_fields
+    gives them (each distinct USW or calibration byte turned into text once)."""
+
+    def __init__(self, numpy: Any, variant: Variant, raw: bool) -> None:
+        self._numpy = numpy
+        self._variant = variant
+        self._raw = raw
+        self._known: dict[Callable[[Any], object], dict[Any, object]] = {}
+
+    def of(self, data: bytes | bytearray, base: int, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
+        """Each column's values for the frames of table `cls` at `starts` (`data` starts at `base`)."""
         simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
         if not simple or any(info.encoding not in (None, "usw", "calibration_success") for info in cls.FIELDS):
-            here = [at - window.base + PAYLOAD_OFFSET for at in starts]
-            blocks = [cls.parse(window.data[at : at + cls.SIZE]) for at in here]
+            here = [at - base + PAYLOAD_OFFSET for at in starts]
+            blocks = [cls.parse(data[at : at + cls.SIZE]) for at in here]
             made = [row_fields(block, self._variant, raw=self._raw) for block in blocks]
             return {column: [row[column] for row in made] for column in made[0]} if made else {}
         fields = scales(cls, None if self._raw else self._variant)
         if self._raw:
             fields = [(info, 1, None) for info, _, _ in fields]
-        local = [at - window.base for at in starts]
+        local = [at - base for at in starts]
         offsets = self._numpy.array(local, dtype=self._numpy.int64) if self._numpy is not None else local
-        columns = table_columns(self._numpy, window.data, offsets, cls, fields)
+        columns = table_columns(self._numpy, data, offsets, cls, fields)
         values: dict[str, list[Any]] = {}
         for info, _, _ in fields:
             column = columns[info.name].tolist()
@@ -894,6 +983,206 @@ class ColumnarCsv:
         known = self._known.setdefault(function, {})
         known.update((value, function(value)) for value in set(column).difference(known))
         return list(map(known.__getitem__, column))
+
+
+class ColumnarCapture:
+    """The CSV rows of a pcapng capture (both directions) as RowWriter writes those of
+    CaptureDecoder(context=True), and its summary, with the device's continuous output decoded as
+    columns. The CaptureDecoder follows the commands and every other message; while its host
+    waits for nothing but the output its state streams (`Host.streaming`), the device's chunks
+    are held (up to _STRETCH bytes, until a chunk from the host or an idle line) and decoded at
+    once: the longest run of them whose bytes are whole output frames, back to back, ending with a
+    chunk, and in which no deadline passes (`Host.streamed`). Whatever else the run holds (damage,
+    another message, a frame across its end, a late output) goes message by message: the rows are
+    those of CaptureDecoder either way. Needs numpy (else every chunk goes message by message)."""
+
+    def __init__(
+        self,
+        out: TextIO,
+        selected: Iterable[str],
+        variant: Variant,
+        *,
+        raw: bool,
+        output: str | None = None,
+        output_known: bool = False,
+        strict: bool = False,
+        start: str | None = None,
+    ) -> None:
+        self.decoder = CaptureDecoder(
+            context=True, output=output, output_known=output_known, strict=strict, start=start
+        )
+        self._numpy = numpy_for("auto")
+        self._strict = strict
+        self._wanted = set(selected)
+        self._writer = RowWriter(out, "csv", self._wanted, variant, raw=raw)
+        self._columns = [*BASE_COLUMNS, *decode_columns(self._wanted)]
+        self._csv = csv.writer(out, lineterminator="\n")
+        self._values = _Values(self._numpy, variant, raw)
+        self._held: list[Chunk] = []
+        self._size = 0
+        self._last_in: float | None = None
+        self._misses = 0
+
+    @property
+    def counts(self) -> Counter[str]:
+        return self.decoder.counts
+
+    @property
+    def damage(self) -> Counter[str]:
+        return self.decoder.damage
+
+    @property
+    def regions(self) -> _Regions:
+        return self.decoder.regions
+
+    @property
+    def errors(self) -> list[str]:
+        return self.decoder.errors
+
+    @property
+    def discarded(self) -> int:
+        return self.decoder.discarded
+
+    def feed(self, chunk: Chunk) -> None:
+        inbound = chunk.direction == Direction.INBOUND and chunk.time is not None
+        if self._held:
+            if inbound and self._size < _STRETCH and not self._idle(chunk):
+                self._hold(chunk)
+                return
+            self._flush()
+        if inbound and self._numpy is not None and self._streaming() is not None and not self._idle(chunk):
+            self._hold(chunk)
+            return
+        self._write(self.decoder.feed(chunk))
+
+    def finish(self) -> None:
+        self._flush()
+        self._write(self.decoder.finish())
+
+    def _hold(self, chunk: Chunk) -> None:
+        self._held.append(chunk)
+        self._size += len(chunk.data)
+        if chunk.data:
+            self._last_in = chunk.time
+
+    def _idle(self, chunk: Chunk) -> bool:
+        """Whether the device's line was idle before `chunk` (E41): a message cannot span it."""
+        decoder = self.decoder
+        last = self._last_in if self._held else None
+        if last is None or decoder.start is None:
+            return decoder.in_idle(chunk.time)
+        assert chunk.time is not None
+        return (chunk.time - decoder.start) - (last - decoder.start) >= IDLE_TIMEOUT
+
+    def _write(self, messages: list[Message]) -> None:
+        wanted = self._wanted
+        for message in messages:
+            if message.kind in wanted:
+                self._writer.write(message)
+
+    def _streaming(self) -> str | None:
+        return self.decoder.streaming()
+
+    def _flush(self) -> None:
+        held, self._held, self._size, self._last_in = self._held, [], 0, None
+        while held:
+            done = self._columnar(held)
+            if done:
+                self._misses = 0
+                held = held[done:]
+                continue
+            self._misses += 1
+            slow = min(len(held), 1 << min(self._misses, 12))  # damage: fewer rescans of the same bytes
+            for chunk in held[:slow]:
+                self._write(self.decoder.feed(chunk))
+            held = held[slow:]
+
+    def _columnar(self, held: list[Chunk]) -> int:
+        """Decode the leading chunks of `held` as columns, if they are whole output frames that
+        arrive in time; how many chunks were decoded (0: none)."""
+        decoder = self.decoder
+        numpy = self._numpy
+        table = decoder.streaming()
+        if table is None or numpy is None:
+            return 0
+        cls = PAYLOADS[table]
+        data = b"".join(chunk.data for chunk in held)
+        scanner = Scanner(numpy, sentences=False, output=table)
+        windows = scanner.scan(data, final=True)
+        if not windows:
+            return 0
+        starts = numpy.concatenate([w.starts for w in windows])
+        lengths = numpy.concatenate([w.lengths for w in windows])
+        types = numpy.concatenate([w.types for w in windows])
+        ends = starts + lengths
+        kinds = numpy.concatenate([w.kinds for w in windows])
+        good = (types == int(MessageType.DATA)) & (kinds == KINDS.index(table))
+        if self._strict:
+            buf = numpy.frombuffer(data, dtype=numpy.uint8)
+            for kind, reserved in STRICT_RESERVED.items():
+                good &= (types != kind) | (buf[starts + RESERVED_OFFSET] == reserved)
+        good[1:] &= starts[1:] == ends[:-1]
+        if len(starts):
+            good[0] &= int(starts[0]) == 0
+        bad = numpy.flatnonzero(~good)
+        count = int(bad[0]) if len(bad) else len(starts)
+        if not count:
+            return 0
+        sizes = [len(chunk.data) for chunk in held]
+        chunk_ends = numpy.cumsum(numpy.array(sizes, dtype=numpy.int64))
+        aligned = numpy.flatnonzero(numpy.isin(chunk_ends, ends[:count]) & (chunk_ends > 0))
+        if not len(aligned):
+            return 0
+        used = int(aligned[-1]) + 1
+        arrived = numpy.searchsorted(chunk_ends, ends[:count] - 1, side="right")
+        per_chunk = numpy.bincount(arrived, minlength=used)[:used].tolist()
+        used = decoder.stream(held[:used], per_chunk, apply=False)
+        aligned = aligned[aligned < used]
+        if not len(aligned):
+            return 0
+        used = int(aligned[-1]) + 1
+        total = int(chunk_ends[used - 1])
+        count = int(numpy.searchsorted(ends[:count], total, side="right"))
+        taken = held[:used]
+        base = decoder.inbound_bytes
+        decoder.stream(taken, per_chunk[:used], apply=True)
+        decoder.streamed(taken, table, count, total)
+        if table in self._wanted:
+            found = {"starts": starts[:count], "lengths": lengths[:count], "arrived": arrived[:count]}
+            self._rows(data, taken, **found, cls=cls, base=base)
+        return used
+
+    def _rows(
+        self, data: bytes, taken: list[Chunk], *, starts: Any, lengths: Any, arrived: Any, cls: type[Any], base: int
+    ) -> None:
+        """The CSV rows of the output frames at `starts` in `data` (the bytes of `taken`, from
+        `base` in the device's bytes), each in the chunk `arrived` says."""
+        start = self.decoder.start
+        assert start is not None
+        stamps = [f"{round(chunk.time - start, 6):.6f}" for chunk in taken if chunk.time is not None]
+        packets = [chunk.packet for chunk in taken]
+        at = arrived.tolist()
+        local = starts.tolist()
+        count = len(local)
+        values = self._values.of(data, 0, cls, local)
+        blank = [""] * count
+        name = cls.NAME
+        base_columns = [
+            [stamps[i] for i in at],
+            ["in"] * count,
+            [name] * count,
+            [base + offset for offset in local],
+            [packets[i] for i in at],
+            lengths.tolist(),
+            blank,
+            blank,
+        ]
+        fields = (values.get(c, blank) for c in self._columns[len(BASE_COLUMNS) :])
+        self._csv.writerows(zip(*base_columns, *fields, strict=True))
+
+
+_STRETCH: Final = 1 << 20
+"""Bytes of the device's output held before they are decoded as columns."""
 
 
 class _Regions:
@@ -935,7 +1224,7 @@ class Progress:
             self._stream.flush()
 
 
-def summary(decoder: CaptureDecoder | ColumnarCsv, prog: str) -> list[str]:
+def summary(decoder: CaptureDecoder | ColumnarCsv | ColumnarCapture, prog: str) -> list[str]:
     """The lines of the summary: messages per kind, discarded bytes in damaged regions (the first
     with their offsets and reasons), damaged rows per reason, errors."""
     total = sum(decoder.counts.values())

@@ -407,6 +407,43 @@ class Host:
             self._timer_done(transition.to)
         return self._stamped(events)
 
+    def streaming(self) -> str | None:
+        """The payload table of the output the device sends as time passes in the current state,
+        when that is all the host waits for (nothing owed, the state's timer expects one output
+        block at a time and stays in the state, no bytes held): then `streamed` stands for
+        `advance` and `receive`. None otherwise (also for $PAHR output)."""
+        timed = timer_transition(self._state)
+        if self._owed or timed is None or self._output is None or self._decoder.pending or self._idle_at is not None:
+            return None
+        _event, transition = timed
+        if tuple(transition.send) != (OUTPUT,) or transition.to != self._state or self._timer_index:
+            return None
+        return OUTPUT_FORMATS.get(self._output)
+
+    def streamed(self, steps: list[int], outputs: list[int], *, apply: bool = True) -> int:
+        """What `advance` and `receive` do while `streaming()` holds: at each step the clock moves
+        on by steps[i] nanoseconds, then outputs[i] whole blocks of the output table arrive. The
+        steps are applied up to the first at which a deadline would pass (where `advance` reports
+        a missing output); returns how many were applied (all of them: nothing was reported).
+        `apply` False: only count them, the session unchanged."""
+        now, deadline, index = self._now, self._timer_deadline, self._timer_index
+        self._arm_timer()
+        span = None if self._timer_deadline is None else self._timer_deadline - self._now
+        self._timer_deadline = clock_deadline = deadline
+        clock = now
+        done = 0
+        for step, count in zip(steps, outputs, strict=True):
+            if step and clock_deadline is not None and clock_deadline < clock + step:
+                break
+            clock += step
+            if count and span is not None:
+                clock_deadline = clock + span
+            done += 1
+        self._now, self._timer_deadline = clock, clock_deadline
+        if not apply:
+            self._now, self._timer_deadline, self._timer_index = now, deadline, index
+        return done
+
     # --- Matching messages against what is owed --------------------------------------------------
 
     def _message(self, message: StreamEvent) -> list[HostEvent]:

@@ -1,0 +1,172 @@
+"""`ilahrs decode CAPTURE.pcapng --to csv` decodes the device's continuous output as columns
+(ColumnarCapture): the rows and the summary must be those of the message-by-message path
+(CaptureDecoder + RowWriter), byte for byte, on clean and damaged two-direction captures."""
+
+from __future__ import annotations
+
+import io
+import random
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+from test_decode_captures import ANSWER_US, Line, flipped, on_request
+
+import ilahrs
+from ilahrs import cli_decode
+from ilahrs.cli_capture import open_source
+from ilahrs.cli_decode import CaptureDecoder, ColumnarCapture, RowWriter, kinds, summary
+from ilahrs.statemachine import DEFAULT_ALIGNMENT_TIME_S
+
+pytest.importorskip("numpy")
+VARIANT = ilahrs.VARIANTS["AHRS-10"] if "AHRS-10" in ilahrs.VARIANTS else next(iter(ilahrs.VARIANTS.values()))
+
+
+def message_csv(path: Path, selected: list[str], **options: object) -> tuple[str, list[str]]:
+    out = io.StringIO()
+    decoder = CaptureDecoder(context=True, **options)  # type: ignore[arg-type]
+    writer = RowWriter(out, "csv", selected, VARIANT, raw=False)
+    wanted = set(selected)
+    for chunk in open_source(str(path)).chunks():
+        for m in decoder.feed(chunk):
+            if m.kind in wanted:
+                writer.write(m)
+    for m in decoder.finish():
+        if m.kind in wanted:
+            writer.write(m)
+    return out.getvalue(), summary(decoder, "ilahrs decode")
+
+
+def columnar_csv(path: Path, selected: list[str], **options: object) -> tuple[str, list[str]]:
+    out = io.StringIO()
+    decoder = ColumnarCapture(out, selected, VARIANT, raw=False, **options)  # type: ignore[arg-type]
+    for chunk in open_source(str(path)).chunks():
+        decoder.feed(chunk)
+    decoder.finish()
+    return out.getvalue(), summary(decoder, "ilahrs decode")
+
+
+def stream(line: Line, seconds: float, damage: Callable[[int, bytes], bytes] | None = None) -> None:
+    """Record the device's output for `seconds`, a packet every 10 ms (split across two packets
+    now and then), each changed by `damage(i, data)`."""
+    rng = random.Random(7)
+    for i in range(round(seconds / 0.01)):
+        data = line.wait(0.01)
+        if damage is not None:
+            data = damage(i, data)
+        if data and rng.random() < 0.1:
+            cut = rng.randrange(len(data))
+            line.inbound(data[:cut], after=0)
+            line.inbound(data[cut:], after=0.001)
+        else:
+            line.inbound(data, after=0)
+
+
+def continuous(damage: Callable[[int, bytes], bytes] | None = None, command: str = "AHRScont1") -> Line:
+    line = Line()
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    line.inbound(line.send(ilahrs.build_command(command)))
+    stream(line, DEFAULT_ALIGNMENT_TIME_S + 3, damage)
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    line.inbound(line.send(ilahrs.build_command("ReadAHRSPar")))
+    line.inbound(line.send(ilahrs.build_command(command)))
+    stream(line, DEFAULT_ALIGNMENT_TIME_S + 2, damage)
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    return line
+
+
+def bad_checksum(i: int, data: bytes) -> bytes:
+    return flipped(data) if i % 97 == 5 and len(data) > 12 else data
+
+
+def truncated(i: int, data: bytes) -> bytes:
+    return data[:20] if i % 89 == 7 else data
+
+
+def garbage(i: int, data: bytes) -> bytes:
+    return b"\x01\xaa\x55\x02" + data if i % 83 == 3 else data
+
+
+def lost(i: int, data: bytes) -> bytes:
+    return b"" if 3000 < i < 3200 else data  # 2 s without output: a missing output block
+
+
+def all_damage(i: int, data: bytes) -> bytes:
+    return lost(i, garbage(i, truncated(i, bad_checksum(i, data))))
+
+
+CAPTURES: dict[str, Callable[[], Line]] = {
+    "clean": continuous,
+    "sentences": lambda: continuous(command="NMEAcont"),
+    "bad_checksum": lambda: continuous(bad_checksum),
+    "truncated": lambda: continuous(truncated),
+    "garbage": lambda: continuous(garbage),
+    "lost": lambda: continuous(lost),
+    "all_damage": lambda: continuous(all_damage),
+}
+
+
+def retry() -> Line:
+    line = Line()
+    on_request(line)
+    answer = line.send(ilahrs.build_command("GetDataReq"))
+    line.inbound(flipped(answer))
+    line.wait(1.0 - ANSWER_US / 1e6)
+    line.inbound(line.send(ilahrs.build_command("GetDataReq")))
+    line.inbound(line.send(ilahrs.build_command("AHRScont1")))
+    stream(line, DEFAULT_ALIGNMENT_TIME_S + 2)
+    return line
+
+
+CAPTURES["retry"] = retry
+
+
+@pytest.mark.parametrize("strict", [False, True], ids=["lenient", "strict"])
+@pytest.mark.parametrize("stretch", [1 << 20, 700], ids=["1MiB", "700B"])
+@pytest.mark.parametrize("name", list(CAPTURES))
+def test_columns_give_the_rows_and_summary_of_the_messages(
+    name: str, stretch: int, strict: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(cli_decode, "_STRETCH", stretch)
+    path = CAPTURES[name]().save(tmp_path / f"{name}.pcapng")
+    for selected in (kinds(), ["full_output", "damaged", "Stop"]):
+        expected = message_csv(path, selected, strict=strict)
+        got = columnar_csv(path, selected, strict=strict)
+        assert got[0].count("\n") > (10 if selected == kinds() else 2)
+        assert got == expected
+
+
+def test_a_capture_begun_mid_stream_with_output_format(tmp_path: Path) -> None:
+    line = Line()
+    line.device.receive(ilahrs.build_command("AHRScont1"))
+    line.wait(DEFAULT_ALIGNMENT_TIME_S + 0.5)
+    stream(line, 3.0, all_damage)
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    path = line.save(tmp_path / "mid.pcapng")
+    options = {"output": "full_output", "output_known": True, "start": "AHRScont1"}
+    expected = message_csv(path, kinds(), **options)
+    assert expected[0].count("full_output") > 200
+    assert columnar_csv(path, kinds(), **options) == expected
+    result = subprocess.run(
+        [sys.executable, "-m", "ilahrs", "decode", str(path), "--to", "csv", "--output-format", "AHRScont1"],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert (result.stdout, result.stderr.splitlines()) == expected
+
+
+def test_continuous_output_goes_the_columnar_way(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    path = continuous().save(tmp_path / "clean.pcapng")
+    calls: list[int] = []
+    original = ColumnarCapture._rows
+
+    def counted(self: ColumnarCapture, *args: object, **options: object) -> None:
+        calls.append(1)
+        original(self, *args, **options)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(ColumnarCapture, "_rows", counted)
+    text, _ = columnar_csv(path, kinds())
+    assert calls and text.count("full_output") >= 500
