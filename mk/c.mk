@@ -69,11 +69,11 @@ C_BINS := $(C_OUT)/ilahrs_conformance $(C_OUT)/clang/ilahrs_conformance \
 
 build-c: $(C_BINS)
 
-$(C_OUT)/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/clang/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/clang/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -116,7 +116,7 @@ $(C_OUT)/san/test_ilahrs_clang: tests/c/test_ilahrs.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -125,7 +125,7 @@ $(C_OUT)/san/test_ilahrs_small: tests/c/test_ilahrs.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) $(C_SAN) $(C_SIZE) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_small: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_SIZE) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -133,11 +133,11 @@ $(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
 # tests/c/frames_only.py checks it against the full decoder's vectors and captures.
 C_FRAMES := -DILAHRS_STREAM_SENTENCES=0
 
-$(C_OUT)/san/ilahrs_conformance_frames: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_frames: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance_frames_small: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_frames_small: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) $(C_SAN) $(C_SIZE) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -263,7 +263,7 @@ $(C_BE)/test_date: tests/c/test_date.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static $(C_SIZE) -I$(C_DIR) $< -o $@
 
-$(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB) | setup-c-be
+$(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: conformance/runners/c/conformance_runner.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static $(if $(findstring _small,$@),$(C_SIZE)) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -296,7 +296,7 @@ $(C_M4)/test_ilahrs.elf: tests/c/test_ilahrs.c $(M4_DEPS) | setup-c-m4
 	@mkdir -p $(@D)
 	$(ARM_CC) $(M4_FLAGS) -I$(C_DIR) tests/c/m4/startup.c $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf: tests/c/conformance_runner.c $(M4_DEPS) | setup-c-m4
+$(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf: conformance/runners/c/conformance_runner.c $(M4_DEPS) | setup-c-m4
 	@mkdir -p $(@D)
 	$(ARM_CC) $(M4_FLAGS) $(if $(findstring _frames,$@),$(C_FRAMES)) -I$(C_DIR) tests/c/m4/startup.c $< \
 		$(C_DIR)/ilahrs.c -lm -o $@
