@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the tables. ilahrs.c holds it without this include. */
+#include "ilahrs_internal.h"
+
 /* ---- Helpers --------------------------------------------------------------------------- */
 
 /* NOINLINE keeps a small helper called from many places out of line: one call is smaller than
