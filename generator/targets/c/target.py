@@ -15,7 +15,7 @@ from generator.render import Output, Runtime, runtime_text
 
 from . import filters, machine, tables
 
-__all__ = ["FILTERS", "GLOBALS", "format", "fragment", "outputs"]
+__all__ = ["FILTERS", "GLOBALS", "format", "fragment", "header_part", "outputs"]
 
 # The #include lines that open a runtime .c file (after an optional comment), and the blank lines
 # after them: what lets the file compile on its own, and what ilahrs.c leaves out.
@@ -32,6 +32,26 @@ def fragment(source: str) -> str:
     return text[found.end() :]
 
 
+# A banner of the header (filters.banner()): the runtime's api*.h files are cut at theirs.
+BANNER = re.compile(r"^/\* =+ \*/\n/\* (.*?) *\*/\n/\* =+ \*/\n", re.MULTILINE)
+
+
+def header_part(source: str, title: str | None = None) -> str:
+    """The declarations under banner `title` of the runtime header `source`, without the banner,
+    or those of its only banner: ilahrs.h.j2 puts each after the spec's types of its topic."""
+    text = runtime_text("c", source)
+    cuts = list(BANNER.finditer(text))
+    if not cuts or text[: cuts[0].start()].strip():
+        raise ValueError(f"runtime/{source} does not start with a banner")
+    ends = [c.start() for c in cuts[1:]] + [len(text)]
+    parts = {m.group(1): text[m.end() : end] for m, end in zip(cuts, ends, strict=True)}
+    if title is None and len(parts) == 1:
+        return next(iter(parts.values()))
+    if title not in parts:
+        raise ValueError(f"runtime/{source} has no banner {title!r} (it has {', '.join(parts)})")
+    return parts[title]
+
+
 FILTERS = filters.FILTERS
 GLOBALS = {
     "kinds": tables.KINDS,
@@ -44,6 +64,7 @@ GLOBALS = {
     "response_doc": filters.response_doc,
     "banner": filters.banner,
     "fragment": fragment,
+    "header_part": header_part,
 }
 
 # The committed clang-format configuration the generated C is formatted with (and the runtime
