@@ -34,7 +34,7 @@ from generator.targets.kaitai.filters import (
     variant_scaled,
 )
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 KSY = ROOT / "generated" / "kaitai" / "ilahrs.ksy"
 KAITAI_BUILD = ROOT / "build" / "kaitai"
 

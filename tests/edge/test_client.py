@@ -11,7 +11,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from test_simulator_e2e import Simulator, simulator
+from simulators import Simulator, simulator
 
 import ilahrs
 from ilahrs.host import Acknowledged, DataBlock, Output

@@ -16,8 +16,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from test_cli import ILAHRS, Simulator, decoded, ilahrs, simulator
-from test_device_support import Pair
+from device_support import Pair
+from simulators import ILAHRS, Simulator, ilahrs
+from test_cli import decoded, simulator
 
 import ilahrs as package
 from ilahrs import anystate

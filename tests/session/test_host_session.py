@@ -6,7 +6,7 @@ from __future__ import annotations
 import random
 
 import pytest
-from test_device_support import Pair
+from device_support import Pair
 
 import ilahrs
 from ilahrs.host import Acknowledged, DataBlock, Discarded, Host, Output, ProtocolError

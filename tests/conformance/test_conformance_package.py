@@ -28,7 +28,7 @@ from ilahrs.serial import AhrsClient
 
 pytest.importorskip("serial")
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 BINDINGS = sorted((ROOT / "conformance" / "bindings").glob("*.json"))
 # Live runs: short timers, a short pause after each step (the simulator answers within a tick).
 FAST = ("--quiet", "0.1", "--alignment-time", "1", "--accumulation-time", "1")

@@ -11,15 +11,14 @@ import sys
 from pathlib import Path
 
 import pytest
-from test_cli import ILAHRS, ilahrs
-from test_simulator_e2e import simulator
+from simulators import ILAHRS, ilahrs, simulator
 
 from ilahrs.serial import AhrsClient
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")
 
-REPOSITORY = Path(__file__).resolve().parent.parent
+REPOSITORY = Path(__file__).resolve().parents[2]
 
 
 # --- simulate -----------------------------------------------------------------------------------------

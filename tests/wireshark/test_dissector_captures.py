@@ -22,10 +22,10 @@ import pytest
 import ilahrs
 from ilahrs.pcapng import Direction, PcapngWriter
 
-sys.path.insert(0, str(Path(__file__).resolve().parent / "wireshark"))
-import tshark  # type: ignore[import-not-found]  # tests/wireshark/tshark.py
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import tshark  # tests/wireshark/tshark.py
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 LUA = ROOT / "generated" / "wireshark" / "ilahrs.lua"
 P = tshark.PROTO
 EPOCH_US = 1_700_000_000_000_000

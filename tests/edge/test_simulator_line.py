@@ -7,7 +7,7 @@ import io
 import json
 
 import pytest
-from test_device_support import quick_parameters
+from device_support import quick_parameters
 
 import ilahrs
 from ilahrs.device import Device

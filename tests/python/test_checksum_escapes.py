@@ -8,7 +8,7 @@ import importlib.util
 import sys
 from pathlib import Path
 
-TOOL = Path(__file__).resolve().parent.parent / "tools" / "checksum_escapes.py"
+TOOL = Path(__file__).resolve().parents[2] / "tools" / "checksum_escapes.py"
 _spec = importlib.util.spec_from_file_location("checksum_escapes", TOOL)
 assert _spec is not None and _spec.loader is not None
 escapes = importlib.util.module_from_spec(_spec)

@@ -17,7 +17,7 @@ from typing import Any
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _load(name: str, path: Path) -> ModuleType:
@@ -32,7 +32,7 @@ def _load(name: str, path: Path) -> ModuleType:
 
 
 H = _load("conformance_harness", ROOT / "conformance" / "harness.py")
-RUNNER = _load("conformance_python_runner", ROOT / "conformance" / "runners" / "python_runner.py")
+RUNNER = _load("conformance_python_runner", ROOT / "conformance" / "runners" / "python" / "python_runner.py")
 
 SCRIPTED_RUNNER = """\
 import json, sys, time

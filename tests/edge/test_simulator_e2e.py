@@ -4,7 +4,6 @@ fault injection. Timing bounds are generous; the simulator is always stopped."""
 
 from __future__ import annotations
 
-import json
 import os
 import select
 import signal
@@ -13,11 +12,10 @@ import subprocess
 import sys
 import termios
 import time
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
+from simulators import simulator
 
 import ilahrs
 from ilahrs.host import Output
@@ -25,53 +23,6 @@ from ilahrs.serial import AhrsClient
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")
-
-STARTUP_TIMEOUT = 20.0
-
-
-class Simulator:
-    def __init__(self, process: subprocess.Popen[str], first_line: str, log: Path) -> None:
-        self.process = process
-        self.first_line = first_line
-        self.log = log
-
-    def stop(self, sig: int = signal.SIGTERM) -> int:
-        if self.process.poll() is None:
-            self.process.send_signal(sig)
-        try:
-            return self.process.wait(10)
-        except subprocess.TimeoutExpired:
-            self.process.kill()
-            return self.process.wait(10)
-
-    def entries(self) -> list[dict[str, object]]:
-        return [json.loads(line) for line in self.log.read_text().splitlines()]
-
-
-@contextmanager
-def simulator(tmp_path: Path, *args: str) -> Iterator[Simulator]:
-    log = tmp_path / "simulator.jsonl"
-    command = [sys.executable, "-m", "ilahrs", "simulate", "--log", str(log), *args]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert process.stdout is not None
-        ready, _, _ = select.select([process.stdout], [], [], STARTUP_TIMEOUT)
-        assert ready, "the simulator printed nothing"
-        first = process.stdout.readline().strip()
-        assert first, process.stderr.read() if process.stderr else ""
-        yield Simulator(process, first, log)
-    finally:
-        if process.poll() is None:
-            process.send_signal(signal.SIGTERM)
-            try:
-                process.wait(10)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait(10)
-        for stream in (process.stdout, process.stderr):
-            if stream is not None:
-                stream.close()
-
 
 def count_outputs(client: AhrsClient, seconds: float) -> int:
     return sum(1 for e in client.poll(seconds) if isinstance(e, Output) and not e.late)

@@ -32,8 +32,15 @@ def quick_parameters(alignment_time: int = 1, update_rate: int = 100) -> ilahrs.
 class Pair:
     """A host and a device wired back to back; every byte either sends reaches the other."""
 
-    def __init__(self, *, firmware: str | None = None, seed: int = 1, alignment_time: int = 1,
-                 update_rate: int = 100, **options: object) -> None:
+    def __init__(
+        self,
+        *,
+        firmware: str | None = None,
+        seed: int = 1,
+        alignment_time: int = 1,
+        update_rate: int = 100,
+        **options: object,
+    ) -> None:
         kwargs: dict[str, object] = {"seed": seed, "parameters": quick_parameters(alignment_time, update_rate)}
         if firmware is not None:
             kwargs["firmware"] = firmware
@@ -61,6 +68,7 @@ class Pair:
 
 
 # --- Reaching every state ------------------------------------------------------------------------
+
 
 def apply(device: Device, event: str) -> bytes:
     """Make `event` happen to the device; return what it sends."""

@@ -16,7 +16,8 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
-from test_cli import ILAHRS, simulator
+from simulators import ILAHRS
+from test_cli import simulator
 
 from ilahrs import cli_monitor
 from ilahrs.cli_common import variant_named

@@ -22,7 +22,7 @@ import pytest
 
 from generator import build_spec
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 CONFORMANCE = ROOT / "conformance"
 VECTORS = CONFORMANCE / "vectors"
 TOOLS = CONFORMANCE / "tools"

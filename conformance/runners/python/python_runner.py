@@ -13,7 +13,7 @@ import traceback
 from collections.abc import Callable
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent.parent / "generated" / "python"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "generated" / "python"))
 
 import ilahrs
 from ilahrs import statemachine

@@ -4,7 +4,7 @@ and `monitor` (a real subprocess on a terminal, briefly). Each ends in a decoded
 clear line on stderr with exit status 2, never a traceback; `send` prints the decoded answer of
 every command in every state where the device answers it (the table in `ilahrs.statemachine`).
 
-The device is `ilahrs.Device` on a pseudo-terminal, served by a thread (tests/test_client_stateful.py,
+The device is `ilahrs.Device` on a pseudo-terminal, served by a thread (tests/session/test_client_stateful.py,
 PtyDevice); before each case it is power-cycled and driven into the state with the serial client,
 along the shortest path the table gives (a command alone, without its parameter block, leaves it
 waiting for the block). Alignment and accumulation are ended at once on the way (the device's clock
@@ -31,7 +31,7 @@ from pathlib import Path
 from typing import Final, TextIO
 
 import pytest
-from test_client_stateful import PtyDevice
+from pty_device import PtyDevice
 
 from ilahrs import build_command
 from ilahrs.__main__ import main

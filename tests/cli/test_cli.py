@@ -8,7 +8,6 @@ import csv
 import io
 import json
 import os
-import select
 import shutil
 import signal
 import subprocess
@@ -19,6 +18,8 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
+import simulators
+from simulators import ILAHRS, Simulator, ilahrs
 
 from ilahrs import Frame, build_command
 from ilahrs.cli_common import field_columns
@@ -28,54 +29,11 @@ from ilahrs.pcapng import Direction, read
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")
 
-ILAHRS = [sys.executable, "-m", "ilahrs"]
-STARTUP_TIMEOUT = 20.0
-
-
-def ilahrs(*args: str, timeout: float = 60.0) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([*ILAHRS, *args], capture_output=True, text=True, timeout=timeout, check=False)
-
-
-class Simulator:
-    def __init__(self, process: subprocess.Popen[str], port: str, log: Path) -> None:
-        self.process = process
-        self.port = port
-        self.log = log
-
-    def entries(self) -> list[dict[str, object]]:
-        return [json.loads(line) for line in self.log.read_text().splitlines()]
-
-    def stop(self) -> None:
-        if self.process.poll() is None:
-            self.process.send_signal(signal.SIGTERM)
-            try:
-                self.process.wait(10)
-            except subprocess.TimeoutExpired:
-                self.process.kill()
-                self.process.wait(10)
-
-
 @contextmanager
 def simulator(tmp_path: Path, *args: str) -> Iterator[Simulator]:
-    log = tmp_path / "simulator.jsonl"
-    command = [*ILAHRS, "simulate", "--seed", "1", "--alignment-time", "1", "--log", str(log), *args]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    sim = None
-    try:
-        assert process.stdout is not None
-        ready, _, _ = select.select([process.stdout], [], [], STARTUP_TIMEOUT)
-        assert ready, "the simulator printed nothing"
-        sim = Simulator(process, process.stdout.readline().strip(), log)
+    """The simulator the command-line tests drive: seeded, with a one-second alignment."""
+    with simulators.simulator(tmp_path, "--seed", "1", "--alignment-time", "1", *args) as sim:
         yield sim
-    finally:
-        if sim is not None:
-            sim.stop()
-        else:
-            process.kill()
-            process.wait(10)
-        for stream in (process.stdout, process.stderr):
-            if stream is not None:
-                stream.close()
 
 
 def decoded(path: Path, *options: str) -> list[dict[str, object]]:

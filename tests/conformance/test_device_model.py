@@ -13,7 +13,7 @@ import math
 import random
 
 import pytest
-from test_device_support import Pair, apply, kinds, messages, quick_parameters, reachable
+from device_support import Pair, apply, kinds, messages, quick_parameters, reachable
 
 import ilahrs
 from generator import build_spec

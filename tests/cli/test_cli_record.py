@@ -15,7 +15,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from test_cli import ILAHRS, Simulator, assert_stopped, decoded, ilahrs, simulator, written_intact
+from simulators import ILAHRS, Simulator, ilahrs
+from test_cli import assert_stopped, decoded, simulator, written_intact
 
 from ilahrs import PAYLOADS, StreamDecoder
 from ilahrs.commands import COMMANDS
