@@ -311,3 +311,19 @@ def test_fingerprint_ignores_docs_and_names_but_not_bytes(tmp_path: Path) -> Non
     assert wire_fingerprint(build_spec(_mutated(tmp_path, docs_and_names))) == base
     assert wire_fingerprint(build_spec(_mutated(tmp_path, m_field_scale))) != base
     assert wire_fingerprint(build_spec(_mutated(tmp_path, m_answer))) != base
+
+
+def test_every_binding_exports_the_fingerprint() -> None:
+    value = wire_fingerprint(_base_spec())
+    hex16 = f"{value:016x}"
+    c = (ROOT / "generated/c/ilahrs.h").read_text(encoding="utf-8")
+    assert f"#define ILAHRS_WIRE_FINGERPRINT UINT64_C(0x{hex16})" in c
+    rust = (ROOT / "generated/rust/src/lib.rs").read_text(encoding="utf-8")
+    assert f"pub const WIRE_FINGERPRINT: u64 = 0x{hex16};" in rust
+    from ilahrs import spec as py_spec
+
+    assert value == py_spec.WIRE_FINGERPRINT
+    run = subprocess.run(
+        [sys.executable, "-m", "ilahrs", "--version"], capture_output=True, text=True, timeout=60, check=True
+    )
+    assert f"wire fingerprint {hex16}" in run.stdout
