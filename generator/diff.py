@@ -81,7 +81,7 @@ RULES: dict[str, tuple[str, str]] = {
     "NAME_RENAMED": (API, "a name a binding exports is spelt differently; the bytes are the same"),
     "FIELD_TYPE_CHANGED": (API, "a field's type, unit, enum or accepted range changed without changing its bytes"),
     "FIELD_DEFAULT_CHANGED": (API, "a builder fills a field with another value when none is given"),
-    "UNIT_CHANGED": (API, "a unit's suffix (part of accessor names) or symbol changed"),
+    "UNIT_CHANGED": (API, "a unit's suffix (part of accessor names) changed"),
     "ENUM_CHANGED": (API, "an enum's range of external values changed"),
     # additive
     "COMMAND_ADDED": (ADDITIVE, "a new command on a new code"),
@@ -114,6 +114,7 @@ DOC_ATTRS = frozenset(
         "erratum",
         "group",
         "until_firmware",
+        "symbol",  # a unit's symbol: what follows a value shown to a person
     }
 )
 # Never compared: where a value sits in the file, and what the version says (checked on its own).
@@ -161,7 +162,9 @@ def _show(value: Any) -> str:
         return json.dumps(shown, sort_keys=True, default=str)
     if isinstance(value, tuple):
         return "[" + ", ".join(_show(v) for v in value) + "]"
-    return str(value) if not isinstance(value, str) else repr(value)
+    if isinstance(value, str):
+        return repr(value if len(value) <= 60 else value[:57] + "...")
+    return str(value)
 
 
 def _plain(value: Any) -> Any:
@@ -196,6 +199,11 @@ class _Differ:
 
     def add(self, rule: str, where: str, old: Any = None, new: Any = None) -> None:
         assert rule in RULES, rule
+        if isinstance(old, str) and isinstance(new, str) and max(len(old), len(new)) > 60:
+            # Long text: from a little before the first difference.
+            start = next((i for i, (a, b) in enumerate(zip(old, new, strict=False)) if a != b), min(len(old), len(new)))
+            start = max(0, start - 20)
+            old, new = ("..." if start else "") + old[start:], ("..." if start else "") + new[start:]
         self.changes.append(Change(rule, where, "" if old is None else _show(old), "" if new is None else _show(new)))
 
     def run(self) -> list[Change]:
