@@ -61,6 +61,12 @@ def test_dist_holds_each_artifact_named_with_the_version(dist: Path) -> None:
         assert hashlib.sha256((dist / name).read_bytes()).hexdigest() == digest, name
 
 
+def test_the_changelog_has_an_entry_for_the_spec_version() -> None:
+    text = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    assert "https://keepachangelog.com" in text
+    assert re.search(rf"^## \[{re.escape(VERSION)}\] - ", text, re.MULTILINE)
+
+
 def test_every_artifact_carries_the_licence(dist: Path) -> None:
     root_licence = (ROOT / "LICENSE").read_text(encoding="utf-8")
     assert f"SPDX-License-Identifier: {LICENCE}" in root_licence
