@@ -804,9 +804,7 @@ def main(argv: list[str] | None = None, build: Callable[[Path], Spec] | None = N
         epilog="example: python -m generator diff --against v1.0.0 --check-version --junit build/spec-diff.xml",
         formatter_class=argparse.ArgumentDefaultsHelpFormatter,
     )
-    parser.add_argument(
-        "--against", required=True, metavar="REV_OR_FILE", help="the older spec: a spec file or a git revision"
-    )
+    parser.add_argument("--against", metavar="REV_OR_FILE", help="the older spec: a spec file or a git revision")
     parser.add_argument("--spec", type=Path, default=DEFAULT_SPEC, help="the newer spec file")
     parser.add_argument(
         "--check-version", action="store_true", help="exit 1 if the spec's version does not bump enough"
@@ -818,6 +816,8 @@ def main(argv: list[str] | None = None, build: Callable[[Path], Spec] | None = N
         for name, (cls, what) in RULES.items():
             print(f"{cls:<13}  {name:<28}  {what}")
         return 0
+    if args.against is None:
+        parser.error("--against REV_OR_FILE is required")
     try:
         with tempfile.TemporaryDirectory(prefix="ilahrs-diff-") as tmp:
             old = build(_spec_at(args.against, args.spec, Path(tmp)))
@@ -840,7 +840,11 @@ def main(argv: list[str] | None = None, build: Callable[[Path], Spec] | None = N
         + ("" if enough else ": NOT ENOUGH")
     )
     if args.junit is not None:
-        write_junit(args.junit, changes, required, enough, args.check_version)
+        try:
+            write_junit(args.junit, changes, required, enough, args.check_version)
+        except OSError as exc:
+            print(f"error: cannot write {args.junit}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
     if args.check_version and not enough:
         print(
             f"error: spec version {new.version} must be at least a {required} bump over {old.version}", file=sys.stderr

@@ -299,6 +299,14 @@ def test_against_a_git_revision_and_a_bad_one() -> None:
     assert len(lines) == 1 and "no-such-revision-anywhere" in lines[0] and "Traceback" not in run.stderr
 
 
+def test_rules_are_listed_and_an_unwritable_report_is_one_line(tmp_path: Path) -> None:
+    run = _diff("--rules")
+    assert run.returncode == 0 and [line.split()[1] for line in run.stdout.splitlines()] == list(RULES)
+    (tmp_path / "blocker").write_text("", encoding="utf-8")
+    run = _diff("--against", DEFAULT_SPEC, "--junit", tmp_path / "blocker" / "x.xml")
+    assert run.returncode == 2 and run.stderr.startswith("error: cannot write") and len(run.stderr.splitlines()) == 1
+
+
 def test_fingerprint_ignores_docs_and_names_but_not_bytes(tmp_path: Path) -> None:
     base = wire_fingerprint(_base_spec())
     assert 0 < base < 1 << 64
