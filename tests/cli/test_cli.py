@@ -254,4 +254,5 @@ def test_version() -> None:
     import ilahrs as package
 
     result = ilahrs("--version")
-    assert result.returncode == 0 and result.stdout.strip() == f"ilahrs {package.__version__}"
+    expected = f"ilahrs {package.__version__} (wire fingerprint {package.WIRE_FINGERPRINT:016x})"
+    assert result.returncode == 0 and result.stdout.strip() == expected
