@@ -17,6 +17,10 @@ RUST_RUNNER_CRATE := generated/rust-conformance/Cargo.toml
 RUST_RUNNER := $(RUST_BUILD)/target/release/ilahrs-conformance
 RUST_FOOTPRINT_TARGET := thumbv7em-none-eabihf
 
+# rustdoc warnings are errors, a link that resolves to nothing among them; lint-rust also refuses
+# a link escaped into literal text (`\[` before a backquote), which rustdoc cannot see.
+RUSTDOC_STRICT := -D warnings -D rustdoc::broken_intra_doc_links -D rustdoc::private_intra_doc_links
+
 .PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust format-rust-runtime
 
 setup-rust:
@@ -44,8 +48,10 @@ lint-rust: setup-rust
 	$(CARGO) clippy --quiet --manifest-path $(RUST_RUNNER_CRATE) -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path tests/rust/Cargo.toml --all-targets -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path bench/rust/Cargo.toml -- -D warnings
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --manifest-path $(RUST_LIB)
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --all-features --manifest-path $(RUST_LIB)
+	RUSTDOCFLAGS="$(RUSTDOC_STRICT)" $(CARGO) doc --quiet --no-deps --manifest-path $(RUST_LIB)
+	RUSTDOCFLAGS="$(RUSTDOC_STRICT)" $(CARGO) doc --quiet --no-deps --all-features --manifest-path $(RUST_LIB)
+	@if grep -rn '\\\[`' generated/rust/src; then \
+	  echo "lint-rust: an intra-doc link escaped into literal text (above); escape only spec prose" >&2; exit 1; fi
 
 # The differential test runs the Rust and Python runners on the same seeded, mutated inputs
 # (tests/rust/differential.py) and checks sessions against the spec model. A spec with one more
