@@ -3,8 +3,10 @@
 # footprint; the fuzz targets (fuzz/rust) are run by mk/fuzz.mk.
 #
 # The crates are hand-written runtime modules (generator/targets/rust/runtime/, copied) next to
-# modules generated from the spec (generator/targets/rust/templates/); rustfmt lays both out, so
-# `cargo fmt --check` holds by construction and lint-rust checks the runtime through the crates.
+# modules generated from the spec (generator/targets/rust/templates/); the runner's hand-written
+# sources live with the other runners, in conformance/runners/rust/, and are copied the same way.
+# rustfmt lays all of them out, so `cargo fmt --check` holds by construction and lint-rust checks
+# the runtime and the runner sources through the crates.
 #
 # The generated crates build in place; build products go to build/rust/target, and the Cargo.lock
 # cargo writes beside a generated manifest is ignored (by git and by the drift check).
@@ -29,8 +31,9 @@ setup-rust:
 	@cargo fmt --version >/dev/null 2>&1 || rustup component add rustfmt >/dev/null 2>&1 || true
 
 # The hand-written runtime (generator/targets/rust/runtime/) must be laid out as rustfmt writes it:
-# `make generate` refuses it otherwise. This rewrites it so (inside a crate rendered from the spec,
-# since rustfmt follows `mod` declarations).
+# `make generate` refuses it otherwise. This rewrites it so, and the runner's sources in
+# conformance/runners/rust/ too (inside crates rendered from the spec, since rustfmt follows
+# `mod` declarations).
 format-rust-runtime: setup
 	$(PY) -c 'from generator.targets.rust.target import format_runtime; format_runtime()'
 
