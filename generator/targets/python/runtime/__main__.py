@@ -19,7 +19,7 @@ from .errors import IlahrsError
 from .misbehave import MISBEHAVIOURS, device_class
 from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
 from .simulate import BAUDRATE, Faults, Line, recorder, run_pty, run_tcp
-from .spec import SPEC_VERSION
+from .spec import SPEC_VERSION, WIRE_FINGERPRINT
 from .statemachine import DEFAULT_FIRMWARE, TIMER_FIELDS, mermaid
 
 __all__ = ["main"]
@@ -34,7 +34,9 @@ def _rate(text: str) -> float:
 
 def _parser() -> argparse.ArgumentParser:
     parser = OneLineParser(prog="ilahrs", description=f"ilahrs {SPEC_VERSION}: Inertial Labs AHRS tools")
-    parser.add_argument("--version", action="version", version=f"ilahrs {SPEC_VERSION}")
+    parser.add_argument(
+        "--version", action="version", version=f"ilahrs {SPEC_VERSION} (wire fingerprint {WIRE_FINGERPRINT:016x})"
+    )
     commands = parser.add_subparsers(dest="command", required=True)
     sim = commands.add_parser(
         "simulate",
