@@ -13,9 +13,9 @@ import re
 from pathlib import Path
 
 from generator import DEFAULT_SPEC, build_spec, render
-from generator.formatting import FormatterError, run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
+from generator.targets.formatting import FormatterError, run_formatter, tool
 
 from . import filters
 

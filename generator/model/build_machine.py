@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from .model_machine import Answer, SmEvent, SmState, SmTimer, StateMachine, Transition, answer_kind
-from .naming import prose
+from .machine import Answer, SmEvent, SmState, SmTimer, StateMachine, Transition, answer_kind
+from .text import prose
 
 
 def _transition(state: str, event: str, row: dict[str, Any], wildcard: bool) -> Transition:

@@ -5,15 +5,15 @@ unknown types, names and codes used twice, references to things that do not exis
 scales on non-numeric fields, ranges outside what a type holds. Sizes and offsets are
 checked by the layout step, which computes them. Every error names file, line and path.
 
-The checks live beside this module, one per part of the spec, and run in the order below
-(the first problem found is the one reported):
+The checks live in this package's modules, one per part of the spec, and run in the order
+below (the first problem found is the one reported):
 
-    validate_sections.py  errata, error kinds, modes, variants, enums, frame, payloads,
-                          acknowledgement, status word, $PAHR sentence
-    validate_fields.py    one field of the frame or a payload
-    validate_commands.py  the commands
-    validate_machine.py   the state machine
-    validate_common.py    unique names, and the names the parts refer to
+    sections.py  errata, error kinds, modes, variants, enums, frame, payloads,
+                 acknowledgement, status word, $PAHR sentence
+    fields.py    one field of the frame or a payload
+    commands.py  the commands
+    machine.py   the state machine
+    common.py    unique names, and the names the parts refer to
 """
 
 from __future__ import annotations
@@ -24,12 +24,12 @@ from typing import Any
 
 import jsonschema
 
-from .load import LoadedSpec, PathKey
-from .model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
-from .validate_commands import check_commands
-from .validate_fields import ENCODING_TYPES
-from .validate_machine import check_state_machine
-from .validate_sections import (
+from ..load import LoadedSpec, PathKey
+from ..model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
+from .commands import check_commands
+from .fields import ENCODING_TYPES
+from .machine import check_state_machine
+from .sections import (
     REQUIRED_FRAME_FIELDS,
     check_acknowledgement,
     check_frame,
@@ -50,7 +50,7 @@ __all__ = [
     "validate",
 ]
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "spec" / "schema.json"
+SCHEMA_PATH = Path(__file__).resolve().parents[2] / "spec" / "schema.json"
 
 
 def _schema() -> dict[str, Any]:

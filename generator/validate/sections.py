@@ -6,10 +6,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .model_fields import PRIMITIVES
-from .validate_common import Names, duplicates, unique
-from .validate_fields import check_field
+from ..load import LoadedSpec, PathKey
+from ..model.fields import PRIMITIVES
+from .common import Names, duplicates, unique
+from .fields import check_field
 
 # The frame fields the bindings rely on, by name and type.
 REQUIRED_FRAME_FIELDS = {"message_type": "u8", "reserved": "u8", "message_length": "u16"}
