@@ -14,11 +14,13 @@ below (the first problem found is the one reported):
     commands.py  the commands
     machine.py   the state machine
     common.py    unique names, and the names the parts refer to
+    names.py     names a target cannot take (generator/targets/*/reserved.txt)
 """
 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +31,7 @@ from ..model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
 from .commands import check_commands
 from .fields import ENCODING_TYPES
 from .machine import check_state_machine
+from .names import check_reserved
 from .sections import (
     REQUIRED_FRAME_FIELDS,
     check_acknowledgement,
@@ -58,19 +61,27 @@ def _schema() -> dict[str, Any]:
     return result
 
 
-def _check_schema(spec: LoadedSpec) -> None:
-    validator = jsonschema.Draft202012Validator(_schema())
+def _check_schema(spec: LoadedSpec, schema: dict[str, Any]) -> None:
+    validator = jsonschema.Draft202012Validator(schema)
     errors = sorted(validator.iter_errors(spec.data), key=lambda e: (len(e.absolute_path), str(e.absolute_path)))
     if errors:
         # Report the most specific error first: the deepest path.
         error = max(errors, key=lambda e: len(e.absolute_path))
         path: PathKey = tuple(error.absolute_path)
+        if error.validator == "additionalProperties" and isinstance(error.instance, dict):
+            # Name the first key the schema does not know, at its own line.
+            allowed = set(error.schema.get("properties", {}))
+            patterns = list(error.schema.get("patternProperties", {}))
+            extra = [k for k in error.instance if k not in allowed and not any(re.search(p, k) for p in patterns)]
+            if extra:
+                raise spec.key_error((*path, extra[0]), f"unknown key {extra[0]!r} ({error.message})")
         raise spec.error(path, error.message)
 
 
 def validate(spec: LoadedSpec) -> None:
     """Raise SpecError for the first problem found; return quietly for a usable spec."""
-    _check_schema(spec)
+    schema = _schema()
+    _check_schema(spec, schema)
     d = spec.data
     names = check_names(spec)
     check_frame(spec, d["frame"], names)
@@ -83,3 +94,4 @@ def validate(spec: LoadedSpec) -> None:
         check_nmea(spec, d["nmea"])
     if d.get("state_machine") is not None:
         check_state_machine(spec, d["state_machine"], names)
+    check_reserved(spec, schema)
