@@ -1,4 +1,4 @@
-"""The build of the state machine (part of the model build, generator/model_build.py): the spec's
+"""The build of the state machine (part of the model build, generator/model/build.py): the spec's
 rows expanded into one transition per (state, event), and the answers the table sends."""
 
 from __future__ import annotations
