@@ -11,9 +11,9 @@ import sys
 from pathlib import Path
 
 from . import DEFAULT_SPEC, ROOT, build_spec
-from .formatting import FormatterError
 from .load import SpecError
 from .render import derived_files, render, target_names, writers
+from .targets.formatting import FormatterError
 
 # Build products that may sit inside generated/ without being generated.
 IGNORED_PARTS = {

@@ -17,8 +17,8 @@ from typing import Any, Protocol
 
 import jinja2
 
-from . import naming
 from .model import Spec
+from .targets import naming
 
 TARGETS_DIR = Path(__file__).resolve().parent / "targets"
 ROOT = TARGETS_DIR.parent.parent
@@ -26,7 +26,6 @@ ROOT = TARGETS_DIR.parent.parent
 # The licence texts at the repository root, copied as they are into every folder a target names
 # in LICENSED (a package or library that leaves the repository: the Python package, the crate, ...).
 LICENCE_FILES = ("LICENSE-MIT", "LICENSE-APACHE")
-COMMON_TEMPLATES = Path(__file__).resolve().parent / "templates"
 
 
 @dataclass(frozen=True)
@@ -100,7 +99,7 @@ COMMON_FILTERS: dict[str, Callable[..., Any]] = {
 
 def _environment(target: str, module: Any) -> jinja2.Environment:
     env = jinja2.Environment(
-        loader=jinja2.FileSystemLoader([str(TARGETS_DIR / target / "templates"), str(COMMON_TEMPLATES)]),
+        loader=jinja2.FileSystemLoader(str(TARGETS_DIR / target / "templates")),
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
         trim_blocks=True,

@@ -10,9 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from generator import ROOT, build_spec, naming
+from generator import ROOT, build_spec
 from generator.load import SpecError
 from generator.render import render, target_names
+from generator.targets import naming
 from generator.targets.python import filters as py_filters
 
 INVALID = sorted((ROOT / "spec" / "invalid").glob("*.yaml"))

@@ -21,8 +21,8 @@ import yaml
 import ilahrs
 from generator import build_spec
 from generator.model import Payload
-from generator.naming import pascal
 from generator.render import render
+from generator.targets.naming import pascal
 
 SEED = 20140311
 SPEC = ks.spec()

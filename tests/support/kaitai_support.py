@@ -25,7 +25,6 @@ from kaitaistruct import EndOfStreamError, KaitaiStream, ValidationFailedError
 
 from generator import build_spec
 from generator.model import Field, Payload, Spec, Variant
-from generator.naming import pascal
 from generator.targets.kaitai.filters import (
     constant_scaled,
     engineering_id,
@@ -33,6 +32,7 @@ from generator.targets.kaitai.filters import (
     variant_parameters,
     variant_scaled,
 )
+from generator.targets.naming import pascal
 
 ROOT = Path(__file__).resolve().parents[2]
 KSY = ROOT / "generated" / "kaitai" / "ilahrs.ksy"

@@ -7,8 +7,8 @@ import struct
 from collections.abc import Callable
 from typing import Any
 
-from generator import naming
 from generator.model import Field, Nmea, NmeaField, Spec
+from generator.targets import naming
 
 _UNSIGNED = ((0xFF, "uint8_t"), (0xFFFF, "uint16_t"), (0xFFFFFFFF, "uint32_t"))
 _SIGNED = ((0x7F, "int8_t"), (0x7FFF, "int16_t"), (0x7FFFFFFF, "int32_t"))

@@ -175,7 +175,7 @@ def field_bounds(f: Field) -> Bounds | None:
 
 
 def builder_default(f: Field) -> float | None:
-    """The builders' default of a numeric field (generator/model.py), or None for zero."""
+    """The builders' default of a numeric field (generator/model/fields.py), or None for zero."""
     value = f.default_value
     if value is None or isinstance(value, str) or value == 0:
         return None

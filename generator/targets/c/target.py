@@ -9,9 +9,9 @@ import struct
 from dataclasses import dataclass
 from pathlib import Path
 
-from generator.formatting import run_formatter, tool
 from generator.model import TIMER_EVENTS, Frame, Nmea, Spec
 from generator.render import Output, Runtime, runtime_text
+from generator.targets.formatting import run_formatter, tool
 
 from . import filters, machine, tables
 

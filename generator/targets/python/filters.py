@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from generator import naming
 from generator.model import FLOAT32_MAX, Field, Payload, StatusWord
+from generator.targets import naming
 
 _STRUCT_CODES = {"u8": "B", "s8": "b", "u16": "H", "s16": "h", "u32": "I", "s32": "i", "f32": "f"}
 

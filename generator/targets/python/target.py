@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from generator.formatting import run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
+from generator.targets.formatting import run_formatter, tool
 
 from .filters import ENCODING_PROPERTIES
 from .filters import FILTERS as CODEC_FILTERS

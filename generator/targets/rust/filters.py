@@ -11,8 +11,8 @@ from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
-from generator import naming
 from generator.model import FLOAT32_MAX, Field, NmeaField, Payload, Spec
+from generator.targets import naming
 
 from . import machine
 

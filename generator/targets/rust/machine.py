@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from generator import naming
 from generator.model import TIMER_EVENTS, Spec, StateMachine, Transition
+from generator.targets import naming
 
 UNKNOWN_EVENT = "unknown"
 

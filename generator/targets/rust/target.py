@@ -15,9 +15,9 @@ import re
 from pathlib import Path
 
 from generator import DEFAULT_SPEC, ROOT, build_spec, render
-from generator.formatting import FormatterError, run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
+from generator.targets.formatting import FormatterError, run_formatter, tool
 
 from . import filters
 

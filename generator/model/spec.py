@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .model_encodings import (
+from .encodings import (
     CalibrationSuccessEncoding,
     DateEncoding,
     DeclinationEncoding,
@@ -13,9 +13,9 @@ from .model_encodings import (
     Nmea,
     StatusWord,
 )
-from .model_fields import Payload, Unit
-from .model_frame import Command, Frame
-from .model_machine import StateMachine
+from .fields import Payload, Unit
+from .frame import Command, Frame
+from .machine import StateMachine
 
 
 @dataclass(frozen=True)

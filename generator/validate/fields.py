@@ -6,9 +6,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .model_fields import FLOAT32_MAX, PRIMITIVES, Primitive
-from .validate_common import Names
+from ..load import LoadedSpec, PathKey
+from ..model.fields import FLOAT32_MAX, PRIMITIVES, Primitive
+from .common import Names
 
 # The field types each encoding may have.
 ENCODING_TYPES = {"usw": ("u16",), "date": ("f32",), "declination": ("f32",), "calibration_success": ("u8",)}

@@ -5,23 +5,23 @@ derived from declaration order are the layout step's (generator/layout.py), whic
 the same objects with `offset` filled in. Templates read the laid-out model and never
 change it.
 
-This module is the model's one import point; the objects live beside it, one module per
-part of the spec:
+This package is the model's one import point (`from generator.model import ...`); the objects
+live in its modules, one per part of the spec:
 
-    model_fields.py     wire types, units, scales, fields, payload tables
-    model_frame.py      the frame and the commands
-    model_encodings.py  enums, value encodings, the unit status word, the $PAHR sentence
-    model_machine.py    the state machine and its protocol words (timer events, answers)
-    model_spec.py       Spec, the root, and the small sections it holds directly
-    model_build.py      the build: validated data into these objects (model_build_machine.py:
-                        the state machine's rows expanded into its table)
+    fields.py     wire types, units, scales, fields, payload tables
+    frame.py      the frame and the commands
+    encodings.py  enums, value encodings, the unit status word, the $PAHR sentence
+    machine.py    the state machine and its protocol words (timer events, answers)
+    spec.py       Spec, the root, and the small sections it holds directly
+    build.py      the build: validated data into these objects (build_machine.py: the state
+                  machine's rows expanded into its table; text.py: spec prose on one line)
 """
 
 from __future__ import annotations
 
-from .load import LoadedSpec, PathKey
-from .model_build import build
-from .model_encodings import (
+from ..load import LoadedSpec, PathKey
+from .build import build
+from .encodings import (
     CalibrationSuccessEncoding,
     DateEncoding,
     DateTerm,
@@ -34,9 +34,9 @@ from .model_encodings import (
     StatusMode,
     StatusWord,
 )
-from .model_fields import FLOAT32_MAX, PRIMITIVES, Field, Payload, Primitive, Scale, Unit
-from .model_frame import Command, FormerName, Frame, MessageType, Strict
-from .model_machine import (
+from .fields import FLOAT32_MAX, PRIMITIVES, Field, Payload, Primitive, Scale, Unit
+from .frame import Command, FormerName, Frame, MessageType, Strict
+from .machine import (
     ANSWER_ACK,
     ANSWER_OUTPUT,
     OUTPUT_MODE_PREFIX,
@@ -49,7 +49,7 @@ from .model_machine import (
     Transition,
     answer_kind,
 )
-from .model_spec import Erratum, ErrorKind, Mode, SerialLine, Spec, Variant, VariantParameter
+from .spec import Erratum, ErrorKind, Mode, SerialLine, Spec, Variant, VariantParameter
 
 __all__ = [
     "ANSWER_ACK",

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .load import PathKey
+from ..load import PathKey
 
 
 @dataclass(frozen=True)

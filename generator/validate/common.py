@@ -7,7 +7,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
-from .load import LoadedSpec, PathKey
+from ..load import LoadedSpec, PathKey
 
 
 def duplicates(items: Iterable[tuple[PathKey, Any]], what: str, spec: LoadedSpec) -> None:

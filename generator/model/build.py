@@ -10,9 +10,9 @@ from __future__ import annotations
 import struct
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .model_build_machine import state_machine
-from .model_encodings import (
+from ..load import LoadedSpec, PathKey
+from .build_machine import state_machine
+from .encodings import (
     CalibrationSuccessEncoding,
     DateEncoding,
     DateTerm,
@@ -25,10 +25,10 @@ from .model_encodings import (
     StatusMode,
     StatusWord,
 )
-from .model_fields import PRIMITIVES, Field, Payload, Scale, Unit
-from .model_frame import Command, FormerName, Frame, MessageType, Strict
-from .model_spec import Erratum, ErrorKind, Mode, SerialLine, Spec, Variant, VariantParameter
-from .naming import prose
+from .fields import PRIMITIVES, Field, Payload, Scale, Unit
+from .frame import Command, FormerName, Frame, MessageType, Strict
+from .spec import Erratum, ErrorKind, Mode, SerialLine, Spec, Variant, VariantParameter
+from .text import prose
 
 
 def build(loaded: LoadedSpec) -> Spec:

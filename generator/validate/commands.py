@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .validate_common import Names, duplicates, unique
+from ..load import LoadedSpec, PathKey
+from .common import Names, duplicates, unique
 
 
 def check_commands(spec: LoadedSpec, names: Names) -> None:

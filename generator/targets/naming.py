@@ -42,9 +42,3 @@ def wrap(text: str, width: int = 88) -> list[str]:
     if current:
         lines.append(current)
     return lines
-
-
-def prose(value: object) -> str:
-    """Spec prose on one line: the line breaks and indentation of a YAML block become single spaces
-    (None becomes empty)."""
-    return " ".join(str(value or "").split())

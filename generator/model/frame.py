@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .load import PathKey
-from .model_fields import Field
+from ..load import PathKey
+from .fields import Field
 
 
 @dataclass(frozen=True)

@@ -7,9 +7,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .model_machine import TIMER_EVENTS, answer_kind
-from .validate_common import Names, unique
+from ..load import LoadedSpec, PathKey
+from ..model.machine import TIMER_EVENTS, answer_kind
+from .common import Names, unique
 
 BASE: PathKey = ("state_machine",)
 

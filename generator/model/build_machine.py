@@ -1,12 +1,12 @@
-"""The build of the state machine (part of the model build, generator/model_build.py): the spec's
+"""The build of the state machine (part of the model build, generator/model/build.py): the spec's
 rows expanded into one transition per (state, event), and the answers the table sends."""
 
 from __future__ import annotations
 
 from typing import Any
 
-from .model_machine import Answer, SmEvent, SmState, SmTimer, StateMachine, Transition, answer_kind
-from .naming import prose
+from .machine import Answer, SmEvent, SmState, SmTimer, StateMachine, Transition, answer_kind
+from .text import prose
 
 
 def _transition(state: str, event: str, row: dict[str, Any], wildcard: bool) -> Transition:

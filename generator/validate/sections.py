@@ -6,14 +6,18 @@ from __future__ import annotations
 
 from typing import Any
 
-from .load import LoadedSpec, PathKey
-from .model_fields import PRIMITIVES
-from .validate_common import Names, duplicates, unique
-from .validate_fields import check_field
+from ..load import LoadedSpec, PathKey
+from ..model.fields import PRIMITIVES
+from .common import Names, duplicates, unique
+from .fields import check_field
 
 # The frame fields the bindings rely on, by name and type.
 REQUIRED_FRAME_FIELDS = {"message_type": "u8", "reserved": "u8", "message_length": "u16"}
 MESSAGE_LENGTH_MAX = 0xFFFF  # what message_length, a u16, holds
+# The longest frame the C runtime holds: its stream decoder keeps the bytes of an incomplete frame
+# with a uint8_t start and count (ilahrs_stream_t, generator/targets/c/runtime/api_stream.h), and
+# stream.c asserts ILAHRS_FRAME_MAX_SIZE <= 255 at compile time. Python and Rust hold any u16 length.
+C_FRAME_MAX_SIZE = 0xFF
 
 
 def check_names(spec: LoadedSpec) -> Names:
@@ -88,6 +92,13 @@ def check_frame(spec: LoadedSpec, frame: dict[str, Any], names: Names) -> None:
         raise spec.error(("frame", "message_length"), f"min {lengths['min']} is above max {lengths['max']}")
     if lengths["max"] > MESSAGE_LENGTH_MAX:
         raise spec.error(("frame", "message_length", "max"), "the message length is a u16")
+    c_limit = C_FRAME_MAX_SIZE - len(frame["header"])
+    if lengths["max"] > c_limit:
+        raise spec.error(
+            ("frame", "message_length", "max"),
+            f"{lengths['max']} is above {c_limit}: the C runtime holds frames of at most {C_FRAME_MAX_SIZE} bytes "
+            f"(header {len(frame['header'])} + message length; ilahrs_stream_t counts held bytes in a uint8_t)",
+        )
     strict = frame.get("strict")
     if strict is not None and strict["message_type"] not in {t["name"] for t in frame["message_types"]}:
         raise spec.error(("frame", "strict", "message_type"), f"unknown message type {strict['message_type']!r}")

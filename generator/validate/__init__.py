@@ -5,31 +5,34 @@ unknown types, names and codes used twice, references to things that do not exis
 scales on non-numeric fields, ranges outside what a type holds. Sizes and offsets are
 checked by the layout step, which computes them. Every error names file, line and path.
 
-The checks live beside this module, one per part of the spec, and run in the order below
-(the first problem found is the one reported):
+The checks live in this package's modules, one per part of the spec, and run in the order
+below (the first problem found is the one reported):
 
-    validate_sections.py  errata, error kinds, modes, variants, enums, frame, payloads,
-                          acknowledgement, status word, $PAHR sentence
-    validate_fields.py    one field of the frame or a payload
-    validate_commands.py  the commands
-    validate_machine.py   the state machine
-    validate_common.py    unique names, and the names the parts refer to
+    sections.py  errata, error kinds, modes, variants, enums, frame, payloads,
+                 acknowledgement, status word, $PAHR sentence
+    fields.py    one field of the frame or a payload
+    commands.py  the commands
+    machine.py   the state machine
+    common.py    unique names, and the names the parts refer to
+    names.py     names a target cannot take (generator/targets/*/reserved.txt)
 """
 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
 import jsonschema
 
-from .load import LoadedSpec, PathKey
-from .model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
-from .validate_commands import check_commands
-from .validate_fields import ENCODING_TYPES
-from .validate_machine import check_state_machine
-from .validate_sections import (
+from ..load import LoadedSpec, PathKey
+from ..model import FLOAT32_MAX, PRIMITIVES, TIMER_EVENTS, answer_kind
+from .commands import check_commands
+from .fields import ENCODING_TYPES
+from .machine import check_state_machine
+from .names import check_reserved
+from .sections import (
     REQUIRED_FRAME_FIELDS,
     check_acknowledgement,
     check_frame,
@@ -50,7 +53,7 @@ __all__ = [
     "validate",
 ]
 
-SCHEMA_PATH = Path(__file__).resolve().parent.parent / "spec" / "schema.json"
+SCHEMA_PATH = Path(__file__).resolve().parents[2] / "spec" / "schema.json"
 
 
 def _schema() -> dict[str, Any]:
@@ -58,19 +61,27 @@ def _schema() -> dict[str, Any]:
     return result
 
 
-def _check_schema(spec: LoadedSpec) -> None:
-    validator = jsonschema.Draft202012Validator(_schema())
+def _check_schema(spec: LoadedSpec, schema: dict[str, Any]) -> None:
+    validator = jsonschema.Draft202012Validator(schema)
     errors = sorted(validator.iter_errors(spec.data), key=lambda e: (len(e.absolute_path), str(e.absolute_path)))
     if errors:
         # Report the most specific error first: the deepest path.
         error = max(errors, key=lambda e: len(e.absolute_path))
         path: PathKey = tuple(error.absolute_path)
+        if error.validator == "additionalProperties" and isinstance(error.instance, dict):
+            # Name the first key the schema does not know, at its own line.
+            allowed = set(error.schema.get("properties", {}))
+            patterns = list(error.schema.get("patternProperties", {}))
+            extra = [k for k in error.instance if k not in allowed and not any(re.search(p, k) for p in patterns)]
+            if extra:
+                raise spec.key_error((*path, extra[0]), f"unknown key {extra[0]!r} ({error.message})")
         raise spec.error(path, error.message)
 
 
 def validate(spec: LoadedSpec) -> None:
     """Raise SpecError for the first problem found; return quietly for a usable spec."""
-    _check_schema(spec)
+    schema = _schema()
+    _check_schema(spec, schema)
     d = spec.data
     names = check_names(spec)
     check_frame(spec, d["frame"], names)
@@ -83,3 +94,4 @@ def validate(spec: LoadedSpec) -> None:
         check_nmea(spec, d["nmea"])
     if d.get("state_machine") is not None:
         check_state_machine(spec, d["state_machine"], names)
+    check_reserved(spec, schema)
