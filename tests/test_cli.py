@@ -21,8 +21,8 @@ from pathlib import Path
 import pytest
 
 from ilahrs import Frame, build_command
-from ilahrs.cli_common import field_columns
-from ilahrs.cli_decode import BASE_COLUMNS
+from ilahrs.cli.common import field_columns
+from ilahrs.cli.decode import BASE_COLUMNS
 from ilahrs.pcapng import Direction, read
 
 pytest.importorskip("serial")

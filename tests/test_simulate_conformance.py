@@ -14,7 +14,7 @@ import pytest
 from test_cli import ILAHRS, ilahrs
 from test_simulator_e2e import simulator
 
-from ilahrs.serial import AhrsClient
+from ilahrs.edge.serial import AhrsClient
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")

@@ -20,8 +20,8 @@ from pathlib import Path
 import pytest
 
 import ilahrs
-from ilahrs.host import Output
-from ilahrs.serial import AhrsClient
+from ilahrs.edge.serial import AhrsClient
+from ilahrs.session.host import Output
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")

@@ -13,15 +13,15 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 
 from .cli import COMMANDS_RUN, OneLineParser, add_subcommands, run
-from .cli_common import CliError, variant_named
+from .cli.common import CliError, variant_named
 from .conformance import add_arguments as conformance_arguments
 from .conformance import run as run_conformance
-from .device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
+from .edge.misbehave import MISBEHAVIOURS, device_class
+from .edge.simulate import BAUDRATE, Faults, Line, recorder, run_pty, run_tcp
 from .encodings import VARIANTS
 from .errors import IlahrsError
-from .misbehave import MISBEHAVIOURS, device_class
 from .roles import FIRMWARE, READ_PARAMETERS, ParameterBlock
-from .simulate import BAUDRATE, Faults, Line, recorder, run_pty, run_tcp
+from .session.device import DEFAULT_DEVICE_ID, DEFAULT_VARIANT, Device, default_parameters
 from .spec import SPEC_VERSION
 from .statemachine import DEFAULT_FIRMWARE, TIMER_FIELDS, mermaid
 

@@ -11,7 +11,8 @@ from typing import Any
 
 from generator.model import ANSWER_ACK, ANSWER_OUTPUT, OUTPUT_MODE_PREFIX, TIMER_EVENTS, Field, Spec, Transition
 
-from .runtime import diagram, synthetic
+from .runtime import diagram
+from .runtime.session import synthetic
 
 
 def _machine(spec: Spec) -> Any:
