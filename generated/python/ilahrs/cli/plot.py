@@ -33,6 +33,7 @@ What the figure shows, and why:
 
 from __future__ import annotations
 
+import argparse
 import importlib
 import itertools
 import math
@@ -49,8 +50,9 @@ from ..nmea import PahrSentence
 from ..payloads import PAYLOADS
 from ..pcapng import Direction
 from ..spec import UNITS
+from .arguments import OneLineParser, output_format_argument, variant_argument
 from .capture import open_source
-from .common import SENTENCE_KIND, CliError, fields_of, lookup
+from .common import SENTENCE_KIND, CliError, fields_of, lookup, variant_named
 from .decode import CaptureDecoder, Message, output_table
 
 __all__ = ["GAP_PERIODS", "Quantity", "figure", "plot", "plottable"]
@@ -405,3 +407,42 @@ def plot(path: str, out: str, *, fields_text: str, size_text: str, variant: Vari
         if temporary is not None:
             os.unlink(temporary)
     return 0
+
+
+# --- the subcommand -------------------------------------------------------------------------------
+
+
+def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
+    fields = ", ".join({name: None for table in plottable().values() for name in table})
+    sub = commands.add_parser(
+        "plot",
+        help="plot fields of a capture to a PNG (needs matplotlib)",
+        description="One panel per quantity (by the fields' units; heading 0-360 apart from signed angles), "
+        "sharing the time axis; lines break at gaps in the output and where heading wraps; multiplexed fields "
+        "(Vdd, Utermo of Table 6.4) are drawn one line per turn.",
+        epilog=f"FIELD: {fields}. Example: ilahrs plot s.pcapng -o s.png --fields heading,pitch,roll,gyro_z",
+    )
+    sub.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump")
+    sub.add_argument("-o", "--output", required=True, metavar="OUT.png", help="the PNG to write")
+    sub.add_argument(
+        "--fields",
+        default="heading,pitch,roll",
+        metavar="FIELD,...",
+        help="fields to plot (default heading,pitch,roll)",
+    )
+    sub.add_argument("--size", default="1200x800", metavar="WxH", help="image size in pixels (default 1200x800)")
+    variant_argument(sub)
+    output_format_argument(sub, None)
+    return sub
+
+
+def run(args: argparse.Namespace) -> int:
+    """`ilahrs plot`."""
+    return plot(
+        args.file,
+        args.output,
+        fields_text=args.fields,
+        size_text=args.size,
+        variant=variant_named(args.variant),
+        output_format=args.output_format,
+    )

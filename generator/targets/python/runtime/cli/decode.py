@@ -30,6 +30,7 @@ owed and never received (`missing`, length 0, at the offset where it was due).
 
 from __future__ import annotations
 
+import argparse
 import csv
 import json
 import sys
@@ -74,8 +75,9 @@ from ..pcapng import Direction
 from ..session.host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from ..statemachine import INITIAL, OUTPUT_FORMATS, command_event
 from ..stream import IDLE_TIMEOUT, StreamDecoder, StreamEvent
-from .capture import Chunk, Source
-from .common import SENTENCE_KIND, field_columns, fields_of, lookup, usw_text
+from .arguments import OneLineParser, strict_argument, variant_argument, words
+from .capture import Chunk, Source, open_source
+from .common import SENTENCE_KIND, CliError, field_columns, fields_of, lookup, usw_text, variant_named
 
 __all__ = [
     "DAMAGED",
@@ -1242,3 +1244,128 @@ def summary(decoder: CaptureDecoder | ColumnarCsv | ColumnarCapture, prog: str) 
     if len(decoder.errors) > _LISTED:
         lines.append(f"{prog}:   and {len(decoder.errors) - _LISTED} more")
     return lines
+
+
+# --- the subcommand -------------------------------------------------------------------------------
+
+
+def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
+    dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
+    dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
+    dec.add_argument("--to", choices=FORMATS, default="text", help="output format (default text)")
+    dec.add_argument("--types", metavar="KIND,...", help=f"only these kinds of rows (default all): {words(kinds())}")
+    variant_argument(dec)
+    dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
+    dec.add_argument("--follow", action="store_true", help="keep reading a growing file (Ctrl-C ends)")
+    strict_argument(dec)
+    starting = ", ".join(n for n, i in COMMANDS.items() if i.starts_output is not None)
+    dec.add_argument(
+        "--output-format",
+        metavar="COMMAND",
+        help=f"the command that started the output ({starting}); a capture that begins with the device's"
+        " output is decoded as if that command had been sent before it",
+    )
+    return dec
+
+
+def run(args: argparse.Namespace) -> int:
+    """`ilahrs decode`."""
+    valid = kinds()
+    selected = [lookup("message kind", k.strip(), valid) for k in args.types.split(",")] if args.types else valid
+    variant_named(args.variant)  # a wrong name is refused before the capture is opened
+    table = output_table(args.output_format) if args.output_format else None
+    source = open_source(args.file)
+    if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
+        return _decode_columns(args, source, selected, table)
+    if args.to == "csv" and source.kind == "pcapng" and not args.follow:
+        return _decode_capture_columns(args, source, selected, table)
+    return _decode_messages(args, source, selected, table)
+
+
+def _decode_messages(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` message by message, following the commands in a pcapng capture."""
+    variant = variant_named(args.variant)
+    known = args.output_format is not None
+    context = source.kind == "pcapng"
+    start = args.output_format if known else None
+    decoder = CaptureDecoder(context=context, output=table, output_known=known, strict=args.strict, start=start)
+    writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
+    wanted = set(selected)
+
+    def feed(chunk: Chunk) -> None:
+        for message in decoder.feed(chunk):
+            if message.kind in wanted:
+                writer.write(message)
+
+    def finish() -> None:
+        for message in decoder.finish():
+            if message.kind in wanted:
+                writer.write(message)
+
+    failure = _drive(source, feed, finish, follow=args.follow)
+    if failure is not None:
+        raise failure  # alone: a summary of a capture cut short would read as the whole
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    return 0
+
+
+def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar (lenient decoding
+    only: `--strict` goes message by message)."""
+    decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
+    failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, follow=False)
+    if failure is not None:
+        raise failure
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    return 0
+
+
+def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+    """`_decode` of a pcapng capture to CSV: the commands and every other message one by one, the
+    device's continuous output a stretch at a time through ilahrs.columnar (ColumnarCapture)."""
+    known = args.output_format is not None
+    decoder = ColumnarCapture(
+        sys.stdout,
+        selected,
+        variant_named(args.variant),
+        raw=args.raw,
+        output=table,
+        output_known=known,
+        strict=args.strict,
+        start=args.output_format if known else None,
+    )
+    failure = _drive(source, decoder.feed, decoder.finish, follow=False)
+    if failure is not None:
+        raise failure
+    for line in summary(decoder, "ilahrs decode"):
+        print(line, file=sys.stderr)
+    return 0
+
+
+def _drive(
+    source: Source, feed: Callable[[Chunk], None], finish: Callable[[], None], *, follow: bool
+) -> CliError | None:
+    """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input; a
+    closed pipe (BrokenPipeError) goes on to `ilahrs.__main__.main`, as in every subcommand. Returns
+    the error that cut the capture short, if any (the messages before it are written)."""
+    progress = Progress(source)
+    failure: CliError | None = None
+    try:
+        try:
+            for chunk in source.chunks(follow=follow):
+                feed(chunk)
+                progress.update()
+                if follow:
+                    sys.stdout.flush()
+        except KeyboardInterrupt:
+            pass
+        except CliError as exc:
+            failure = exc
+        finish()
+        sys.stdout.flush()
+    finally:
+        progress.done()
+        source.close()
+    return failure

@@ -14,6 +14,7 @@ device (unplugged, the simulator killed) ends the view with one line and exit st
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import curses
 import math
@@ -35,7 +36,16 @@ from ..spec import UNIT_SYMBOLS
 from ..statemachine import OUTPUT, OUTPUT_FORMATS
 from ..statemachine import lookup as transition
 from ..status import UnitStatusWord, UswFlag
-from .common import SENTENCE_KIND, CliError, fields_of, lookup, open_client
+from .arguments import (
+    PORT_EPILOG,
+    OneLineParser,
+    output_format_argument,
+    port_arguments,
+    strict_argument,
+    variant_argument,
+)
+from .common import SENTENCE_KIND, CliError, fields_of, lookup, open_client, variant_named
+from .decode import output_table
 
 if TYPE_CHECKING:
     from ..edge.serial import AhrsClient
@@ -282,3 +292,21 @@ def monitor(port: str, baud: int, command: str, variant: Variant, *, strict: boo
         with contextlib.suppress(OSError):
             client.close()
     return 0
+
+
+# --- the subcommand -------------------------------------------------------------------------------
+
+
+def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
+    sub = commands.add_parser("monitor", help="live full-screen view of the output (q quits)", epilog=PORT_EPILOG)
+    port_arguments(sub)
+    output_format_argument(sub, "AHRScont3")
+    variant_argument(sub)
+    strict_argument(sub)
+    return sub
+
+
+def run(args: argparse.Namespace) -> int:
+    """`ilahrs monitor`."""
+    output_table(args.output_format)  # refuse an unknown command before opening the port
+    return monitor(args.port, args.baud, args.output_format, variant_named(args.variant), strict=args.strict)
