@@ -44,7 +44,6 @@ from types import FrameType
 from typing import IO, Any, Final
 
 from ..commands import COMMAND_SET, COMMANDS
-from ..conformance import Case, SuiteError, Vector, junit_xml, load_suites
 from ..errors import IlahrsError
 from ..frame import Frame, MessageType
 from ..nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -72,6 +71,9 @@ from ..statemachine import (
     lookup,
 )
 from ..stream import StreamDecoder, StreamEvent
+from .report import junit_xml
+from .runner import Case
+from .vectors import CommandEvent, DataEvent, SessionEvent, SuiteError, TimerEvent, Vector, load_suites, session
 
 __all__ = ["RATE_SLACK", "RATE_TOLERANCE", "Plan", "alignment_needed", "plan_flow", "run_live"]
 
@@ -107,10 +109,10 @@ class UsageError(Exception):
 
 @dataclass(frozen=True)
 class Step:
-    """One event of a flow on the model: `token` as the vector gives it (C:HH, D:N, E:NAME), the
-    event the table names, the states before and after, and what the device sends."""
+    """One event of a flow on the model: `cause` as the vector gives it, the event the table names,
+    the states before and after, and what the device sends."""
 
-    token: str
+    cause: SessionEvent
     event: str
     before: str
     after: str
@@ -132,14 +134,14 @@ class Plan:
         return any(s.changes_calibration for s in self.steps)
 
 
-def _resolve(token: str, state: str) -> str:
-    kind, _, value = token.partition(":")
-    if kind == "C":
-        return command_event(int(value, 16), state) or UNKNOWN
-    if kind == "D":
+def _resolve(cause: SessionEvent, state: str) -> str:
+    """The event of the state machine's table that `cause` is in `state`."""
+    if isinstance(cause, CommandEvent):
+        return command_event(cause.code, state) or UNKNOWN
+    if isinstance(cause, DataEvent):
         expects = STATES[state].expects
-        return PARAMETER_BLOCK if expects is not None and int(value) == PAYLOADS[expects].SIZE else OTHER_MESSAGE
-    return value
+        return PARAMETER_BLOCK if expects is not None and cause.size == PAYLOADS[expects].SIZE else OTHER_MESSAGE
+    return cause.name
 
 
 def _timer_of(state: str, event: str) -> str | None:
@@ -151,35 +153,22 @@ def _timer_of(state: str, event: str) -> str | None:
     return None
 
 
-def _tokens(v: Vector) -> list[str]:
-    tokens = []
-    for event in v.input["events"]:
-        ((key, value),) = event.items()
-        if key == "command":
-            tokens.append(f"C:{int(value, 16) if isinstance(value, str) else value:02X}")
-        elif key == "data":
-            tokens.append(f"D:{value}")
-        else:
-            tokens.append(f"E:{value}")
-    return tokens
-
-
 def plan_flow(v: Vector, firmware: str | None) -> Plan:
     """The steps of a session vector on the model of `firmware` (None: current)."""
     state, output = INITIAL, None
     steps = []
-    for token in _tokens(v):
-        event = _resolve(token, state)
+    for cause in session(v.input, v.where).events:
+        event = _resolve(cause, state)
         transition = lookup(state, event, firmware)
-        wait = _timer_of(state, event) if token.startswith("E:") and transition is not None else None
+        wait = _timer_of(state, event) if isinstance(cause, TimerEvent) and transition is not None else None
         if transition is None:
-            steps.append(Step(token, event, state, state, (), output))
+            steps.append(Step(cause, event, state, state, (), output))
             continue
         info = COMMANDS.get(event)
         if info is not None and info.starts_output is not None:
             output = info.starts_output
         changes = event in _EFFECTS
-        steps.append(Step(token, event, state, transition.to, transition.send, output, wait, changes))
+        steps.append(Step(cause, event, state, transition.to, transition.send, output, wait, changes))
         state = transition.to
     return Plan(v.id, tuple(steps))
 
@@ -321,35 +310,33 @@ class FlowRun:
     def note(self, t: float, text: str) -> None:
         self.trace.append(f"{t - self.start:+8.3f} s  {text}")
 
-    def payload(self, token: str) -> bytes:
-        kind, _, value = token.partition(":")
-        if kind == "C":
-            return _frame(MessageType.COMMAND, bytes([int(value, 16)]))
-        size = int(value)
+    def payload(self, cause: CommandEvent | DataEvent) -> bytes:
+        if isinstance(cause, CommandEvent):
+            return _frame(MessageType.COMMAND, bytes([cause.code]))
         for block in self.settings.blocks.values():
-            if len(block) == size:
+            if len(block) == cause.size:
                 return _frame(MessageType.DATA, block)
-        return _frame(MessageType.DATA, bytes(size))
+        return _frame(MessageType.DATA, bytes(cause.size))
 
     def run(self, plan: Plan) -> None:
         for n, step in enumerate(plan.steps):
             try:
                 self.step(step)
             except MismatchError as exc:
-                raise MismatchError(f"step {n} ({step.token} = {step.event} in {step.before}): {exc}") from None
+                raise MismatchError(f"step {n} ({step.cause.token} = {step.event} in {step.before}): {exc}") from None
         if self.streaming_since is not None:
             self.check_rate(self.streaming_since, time.monotonic())
 
     def step(self, step: Step) -> None:
         sent: int | None = None
-        if step.token.startswith("E:"):
+        if isinstance(step.cause, TimerEvent):
             t0 = time.monotonic()
             self.note(t0, f"wait for {step.event}" + ("" if step.wait else " (no timer of it runs: a pause)"))
         else:
-            data = self.payload(step.token)
+            data = self.payload(step.cause)
             sent = Frame.parse(data).checksum
             t0 = self.link.write(data)
-            self.note(t0, f"sent {step.token} ({step.event}): {data.hex(' ')}")
+            self.note(t0, f"sent {step.cause.token} ({step.event}): {data.hex(' ')}")
         leaving = STATES[step.before].timer == "output" and STATES[step.after].timer != "output"
         if leaving and self.streaming_since is not None:
             self.check_rate(self.streaming_since, t0)
