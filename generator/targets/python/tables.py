@@ -103,7 +103,7 @@ def mermaid(spec: Spec) -> str:
 
 
 def quantity(field: Field) -> tuple[str, ...]:
-    """The synthetic quantities the virtual device puts in a model field (`ilahrs.synthetic`)."""
+    """The synthetic quantities the virtual device puts in a model field (`ilahrs.session.synthetic`)."""
     unit = field.unit.key if field.unit is not None else None
     return synthetic.quantity(field.name, unit, field.type.name, field.encoding, field.multiplexed_count or 0)
 

@@ -4,7 +4,7 @@
 """Test-only faults of the virtual device: a device model that breaks one rule of the protocol, so
 that a conformance check can be shown to fail (`ilahrs simulate --misbehave NAME`).
 
-Unlike the line faults of `ilahrs.simulate` (damaged bytes, which a host discards), each of these
+Unlike the line faults of `ilahrs.edge.simulate` (damaged bytes, which a host discards), each of these
 sends well-formed messages that say the wrong thing:
 
 - `wrong-ack-checksum`: every acknowledgement carries the checksum of the message plus one (E12).

@@ -16,7 +16,7 @@ command, resolved by mode for 0xFE; a parameter block of the size its state expe
 message; a timer), looks the transition up, sends what it lists and enters the next state. A
 (state, event) pair without a transition is ignored (E33).
 
-The data are synthetic but physically consistent (`ilahrs.motion`): angles, quaternion, gyros,
+The data are synthetic but physically consistent (`ilahrs.session.motion`): angles, quaternion, gyros,
 accelerometers and magnetometers describe one seeded motion, scaled per device variant (KG, KA of
 Table 6.6). Parameter blocks are read with the payload classes and kept, so the read command shows
 what the load command wrote (READ_PARAMETERS and LOAD_PARAMETERS of `ilahrs.roles`) and the
@@ -76,7 +76,7 @@ from ..statemachine import (
     lookup,
     timer_transition,
 )
-from ..status import _MODES
+from ..status import USW_MODES
 from ..stream import IDLE_TIMEOUT_NS, StreamDecoder, StreamEvent
 from .motion import Motion, Sensors
 from .synthetic import quantity as synthetic_quantity
@@ -112,7 +112,7 @@ _CAL_RUN: Final = "run"
 _CAL_RUNS_USED: Final = "runs_used"
 _CAL_DATA_USED: Final = "data_used"
 _CAL_SUCCESS: Final = "success"
-_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({mode.value: bits for bits, mode in _MODES.items()})
+_USW_MODES: Final[Mapping[str, int]] = MappingProxyType({mode.value: bits for bits, mode in USW_MODES.items()})
 """USW mode name -> its bits (Table 6.19)."""
 
 _FillRow = tuple[str, tuple[str, ...], int, int | str, float | None, float | None, str]

@@ -13,7 +13,7 @@ results). Every incoming frame is decoded by that context into the right payload
 (timed out on the host's own clock), wrong (an acknowledgement with another checksum) or
 unexpected is reported as a ProtocolError; nothing is guessed.
 
->>> from ilahrs.device import Device
+>>> from ilahrs.session.device import Device
 >>> host, device = Host(), Device(seed=1)
 >>> answer = device.receive(host.send("ReadAHRSPar"))
 >>> [type(event).__name__ for event in host.receive(answer)]
@@ -89,7 +89,7 @@ class Acknowledged:
     raw: bytes = b""
     at: float = field(default=0.0, compare=False)
     """Seconds on the receiver's clock when the event was reported (the Host's own clock;
-    time.monotonic() in ilahrs.serial)."""
+    time.monotonic() in ilahrs.edge.serial)."""
 
 
 @dataclass(frozen=True, slots=True)

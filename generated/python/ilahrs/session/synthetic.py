@@ -4,7 +4,7 @@
 """Which synthetic quantity the virtual AHRS puts in which field, stated once, by the field's unit
 and name (the spec's units and field names).
 
-The device model (`ilahrs.device`) computes quantities in engineering units (the field's unit)
+The device model (`ilahrs.session.device`) computes quantities in engineering units (the field's unit)
 from its motion and sensor model and its own context, then fills each device-to-host field with
 the quantity named here. This module uses the standard library only and no other module of the
 package, so the generator reads the same rule when it checks the spec against it.

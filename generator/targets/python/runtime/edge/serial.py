@@ -1,4 +1,4 @@
-"""A serial client for a real or virtual AHRS: the host session (`ilahrs.host`) over pyserial.
+"""A serial client for a real or virtual AHRS: the host session (`ilahrs.session.host`) over pyserial.
 
 pyserial is the optional dependency (the `serial` extra, or `pip install 'pyserial>=3.5'`) and is imported only when a
 client is opened, so the rest of the package stays standard-library only. `port` is anything
@@ -336,7 +336,7 @@ class AhrsClient:
         self, command: str, block: Payload | Mapping[str, object] | None = None, *, output: str | None = None
     ) -> Reply:
         """Send `command` (and its parameter block) to a device whose state the client does not
-        know, and wait until its answers show the state it was in (`ilahrs.anystate`): the
+        know, and wait until its answers show the state it was in (`ilahrs.session.anystate`): the
         decoded answers, or no answer after the reply timeout. Nothing is retried and no Stop
         is sent, so the device stays in its state. The client then follows the device from the
         state the answers show (unchanged when none fits). `output`: the output format the device

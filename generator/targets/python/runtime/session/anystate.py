@@ -2,7 +2,7 @@
 may be streaming, calibrating or asleep), sans-I/O.
 
 The answer the device owes depends on its state, so it cannot be predicted: `AnyStateRequest`
-makes one host session (`ilahrs.host.Host`) per state in which the command has a transition in
+makes one host session (`ilahrs.session.host.Host`) per state in which the command has a transition in
 `ilahrs.statemachine` (and per output format, in states that send output), has each of them
 send the command, and feeds every byte the device sends, and the time that passes, to all of
 them. The device was in the state whose owed answers all arrived without a protocol error; when
@@ -12,7 +12,7 @@ have the same size cannot be told apart (E7): unless the caller names the format
 some state (LowPowerOff in sleep) cannot be told from a command the device ignored: after the
 reply timeout, `Reply.state` is the first such state that what came fits.
 
->>> from ilahrs.device import Device
+>>> from ilahrs.session.device import Device
 >>> device = Device(seed=1)
 >>> request = AnyStateRequest("GetBIT")
 >>> request.receive(device.receive(request.data))
