@@ -58,7 +58,12 @@ generate: setup
 
 build: setup $(BUILD_TARGETS)
 
-lint: setup $(LINT_TARGETS)
+lint: setup $(LINT_TARGETS) lint-commits
+
+# Commit messages since CONTRIBUTING.md was written have its form (tools/check-commits).
+.PHONY: lint-commits
+lint-commits:
+	@$(PY) tools/check-commits
 
 check: setup
 	$(PY) -m generator --check

@@ -1,4 +1,4 @@
-"""Command line: `python -m generator [--check] [--target NAME ...]`.
+"""Command line: `python -m generator [--check] [--target NAME ...]`; `python -m generator diff --help`.
 
 Writes generated/ from spec/ilahrs.yaml; with --check, writes nothing and exits 1 if
 generated/ differs from what the spec produces (a changed, missing or stale file).
@@ -45,6 +45,11 @@ def _on_disk(out: Path, targets: list[str]) -> set[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["diff"]:
+        from .diff import main as diff_main
+
+        return diff_main(argv[1:])
     parser = argparse.ArgumentParser(prog="python -m generator", description=__doc__)
     parser.add_argument("--spec", type=Path, default=DEFAULT_SPEC, help="spec file (default spec/ilahrs.yaml)")
     parser.add_argument("--out", type=Path, default=ROOT / "generated", help="output folder (default generated/)")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from .diff import wire_fingerprint
 from .load import LoadedSpec
 from .model import Field, Payload, Spec
 
@@ -64,4 +65,5 @@ def layout(model: Spec, loaded: LoadedSpec) -> Spec:
             )
     if frame.min_payload > 1:
         raise loaded.error(("frame", "message_length", "min"), "a one-byte command must fit the minimum message length")
-    return dataclasses.replace(model, frame=frame, payloads=payloads)
+    laid_out = dataclasses.replace(model, frame=frame, payloads=payloads)
+    return dataclasses.replace(laid_out, wire_fingerprint=wire_fingerprint(laid_out))

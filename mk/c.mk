@@ -69,11 +69,11 @@ C_BINS := $(C_OUT)/ilahrs_conformance $(C_OUT)/clang/ilahrs_conformance \
 
 build-c: $(C_BINS)
 
-$(C_OUT)/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/clang/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/clang/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -85,14 +85,22 @@ $(C_OUT)/clang/decode_capture: $(C_DIR)/examples/decode_capture.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) -O2 -I$(C_DIR) $< $(C_DIR)/ilahrs.c -o $@
 
-# --- lint: the runtime's format, C++ use of the header, stricter warnings on the library -------
-# (the runtime is compiled through the generated ilahrs.c, which holds it with the tables)
+# --- lint: the runtime's format, each runtime .c on its own, C++ use of the header, stricter -----
+# warnings on the library. ilahrs.c holds the runtime's .c files after the tables, without the
+# #include lines that open each: with them, each compiles on its own against ilahrs_internal.h (the
+# tables) and the runtime files before it, as an editor compiles it (runtime/compile_flags.txt).
+# Alone, a file leaves unused the helpers that files after it use: clang is told not to mind.
 
 C_CXX := -std=c++11 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
 
-lint-c: setup-c $(C_LIB) tests/c/cpp_check.cpp
+lint-c: setup-c $(C_LIB) $(C_DIR)/ilahrs_internal.h tests/c/cpp_check.cpp
 	@mkdir -p $(C_OUT)/lint
 	$(CLANG_FORMAT) --dry-run -Werror $(C_RUNTIME)/*.c $(C_RUNTIME)/*.h $(C_RUNTIME)/examples/*.c
+	for f in $(filter-out %/examples,$(wildcard $(C_RUNTIME)/*.c)); do \
+		gcc $(C_STD) $(C_EXTRA) -fsyntax-only -I$(C_DIR) $$f || exit 1; \
+		gcc $(C_STD) $(C_EXTRA) -fsyntax-only -DILAHRS_NAMES=0 -I$(C_DIR) $$f || exit 1; \
+		$(CLANG) $(C_STD) $(C_EXTRA) -Wno-unused-function -fsyntax-only -I$(C_DIR) $$f || exit 1; \
+	done
 	gcc $(C_STD) $(C_EXTRA) -O2 -c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs.gcc.o
 	$(CLANG) $(C_STD) $(C_EXTRA) -O2 -c $(C_DIR)/ilahrs.c -o $(C_OUT)/lint/ilahrs.clang.o
 	g++ $(C_CXX) -I$(C_DIR) tests/c/cpp_check.cpp $(C_OUT)/lint/ilahrs.gcc.o -o $(C_OUT)/lint/cpp_check_gcc
@@ -116,7 +124,7 @@ $(C_OUT)/san/test_ilahrs_clang: tests/c/test_ilahrs.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -125,7 +133,7 @@ $(C_OUT)/san/test_ilahrs_small: tests/c/test_ilahrs.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) $(C_SAN) $(C_SIZE) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_small: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_SIZE) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -133,11 +141,11 @@ $(C_OUT)/san/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB)
 # tests/c/frames_only.py checks it against the full decoder's vectors and captures.
 C_FRAMES := -DILAHRS_STREAM_SENTENCES=0
 
-$(C_OUT)/san/ilahrs_conformance_frames: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_frames: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	$(CLANG) $(C_STD) $(C_SAN) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_OUT)/san/ilahrs_conformance_frames_small: tests/c/conformance_runner.c $(C_LIB)
+$(C_OUT)/san/ilahrs_conformance_frames_small: conformance/runners/c/conformance_runner.c $(C_LIB)
 	@mkdir -p $(@D)
 	gcc $(C_STD) $(C_SAN) $(C_SIZE) $(C_FRAMES) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -263,7 +271,7 @@ $(C_BE)/test_date: tests/c/test_date.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static $(C_SIZE) -I$(C_DIR) $< -o $@
 
-$(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: tests/c/conformance_runner.c $(C_LIB) | setup-c-be
+$(C_BE)/ilahrs_conformance $(C_BE)/ilahrs_conformance_small: conformance/runners/c/conformance_runner.c $(C_LIB) | setup-c-be
 	@mkdir -p $(@D)
 	$(BE_CC) $(C_STD) -O2 -static $(if $(findstring _small,$@),$(C_SIZE)) -I$(C_DIR) $< $(C_DIR)/ilahrs.c -lm -o $@
 
@@ -296,7 +304,7 @@ $(C_M4)/test_ilahrs.elf: tests/c/test_ilahrs.c $(M4_DEPS) | setup-c-m4
 	@mkdir -p $(@D)
 	$(ARM_CC) $(M4_FLAGS) -I$(C_DIR) tests/c/m4/startup.c $< $(C_DIR)/ilahrs.c -lm -o $@
 
-$(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf: tests/c/conformance_runner.c $(M4_DEPS) | setup-c-m4
+$(C_M4)/ilahrs_conformance.elf $(C_M4)/ilahrs_conformance_frames.elf: conformance/runners/c/conformance_runner.c $(M4_DEPS) | setup-c-m4
 	@mkdir -p $(@D)
 	$(ARM_CC) $(M4_FLAGS) $(if $(findstring _frames,$@),$(C_FRAMES)) -I$(C_DIR) tests/c/m4/startup.c $< \
 		$(C_DIR)/ilahrs.c -lm -o $@

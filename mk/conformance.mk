@@ -11,7 +11,7 @@
 #
 # The harness is the Python package's (ilahrs.conformance, also `ilahrs conformance` once installed;
 # conformance/harness.py runs it with the repository's defaults); stdlib-only, it starts each runner
-# once and prints a binding x suite table. tests/test_conformance*.py run under the root pytest run
+# once and prints a binding x suite table. tests/conformance/ run under the root pytest run
 # (test-python), among them the installed package in a fresh virtual environment and the live mode.
 
 VECTORS ?= conformance/vectors

@@ -11,7 +11,7 @@
 #   make test-fuzz      (in make test) C, Rust and Python on the same seeded inputs, compared three
 #                       ways (fuzz/differential.py)
 #   make lint-fuzz      (in make check) ruff and mypy on fuzz/*.py
-#   make fuzz-stateful  (in make fuzz) the stateful client test (tests/test_client_stateful.py) with
+#   make fuzz-stateful  (in make fuzz) the stateful client test (tests/session/test_client_stateful.py) with
 #                       STATEFUL_EXAMPLES examples of up to STATEFUL_STEPS steps, new ones each run;
 #                       prints the (state, command, pause) combinations it explored
 #
@@ -85,7 +85,7 @@ STATEFUL_EXAMPLES ?= 40
 STATEFUL_STEPS ?= 40
 fuzz-stateful: setup
 	ILAHRS_STATEFUL_EXAMPLES=$(STATEFUL_EXAMPLES) ILAHRS_STATEFUL_STEPS=$(STATEFUL_STEPS) ILAHRS_STATEFUL_RANDOM=1 \
-	  $(PY) -m pytest -q -s tests/test_client_stateful.py
+	  $(PY) -m pytest -q -s tests/session/test_client_stateful.py
 
 FUZZ_TARGETS += fuzz-all fuzz-stateful
 LINT_TARGETS += lint-fuzz

@@ -1,7 +1,7 @@
 # Kaitai Struct: compile generated/kaitai/ilahrs.ksy with the official compiler (npm
 # kaitai-struct-compiler 0.11, driven by tools/kaitai/compile.js) into a Kaitai Python parser and
-# a `construct` definition, the independent decoder and builder that tests/test_kaitai*.py and
-# tests/test_construct*.py hold the Python binding against. The root pytest run (test-python)
+# a `construct` definition, the independent decoder and builder that tests/kaitai/test_kaitai*.py and
+# tests/kaitai/test_construct.py hold the Python binding against. The root pytest run (test-python)
 # collects those tests; `make test-kaitai` runs only them.
 
 KAITAI_TOOLS := tools/kaitai
@@ -27,7 +27,7 @@ $(KAITAI_OUT)/%/ilahrs.py: $(KAITAI_KSY) $(KAITAI_TOOLS)/compile.js $(KAITAI_NOD
 build-kaitai: $(KAITAI_PARSERS)
 
 test-kaitai: setup build-kaitai
-	$(PY) -m pytest tests/test_kaitai*.py tests/test_construct*.py
+	$(PY) -m pytest tests/kaitai
 
 bench-python: setup build-kaitai
 	$(PY) bench/python/bench_decode.py

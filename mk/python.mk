@@ -9,7 +9,7 @@ $(ILAHRS_STAMP): $(VENV)/.stamp generated/python/pyproject.toml
 
 SETUP_TARGETS += $(ILAHRS_STAMP)
 
-PY_LINT_PATHS := generator generated/python tools/generator_stats.py tools/checksum_escapes.py $(wildcard tests/*.py conformance/*.py conformance/runners/*.py conformance/tools/*.py conformance/tools/*/*.py bench/python/*.py)
+PY_LINT_PATHS := generator generated/python tools/generator_stats.py tools/checksum_escapes.py tools/check-commits $(wildcard tests/*.py conformance/*.py conformance/runners/python/*.py conformance/runners/kaitai/*.py conformance/tools/*.py conformance/tools/*/*.py bench/python/*.py)
 # Helper scripts of one binding live in tests/<binding>/; each folder is checked on its own, since
 # their module names may repeat across folders.
 PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
@@ -30,7 +30,7 @@ lint-python: setup
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 	$(VENV)/bin/lint-imports --config .importlinter
 
-# tests/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
+# tests/cli/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
 # are installed from Debian's packages when missing.
 test-python: setup
 	@command -v tmux >/dev/null || tools/need tmux
@@ -38,14 +38,15 @@ test-python: setup
 	$(PY) -m pytest tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
-# version under build/python-versions/ with the pinned pytest and pyserial only, the package
-# installed with pip). The tests are those that use the package and nothing else of the repository:
-# the host session, the simulator's line and its command line end to end (all but the two long pty
-# flows, which the main run covers), the pcapng writer; then the conformance harness runs the Python
-# runner on every vector. Tests that import the generator (test_python_binding, test_device_model)
-# are left out: its pinned dependencies (rpds-py) do not install on 3.10.
-PY_VERSION_TESTS := tests/test_host_session.py tests/test_simulator_line.py tests/test_pcapng.py \
-                    tests/test_simulator_e2e.py -k "not full_flow"
+# version under build/python-versions/ with the pinned pytest, hypothesis and pyserial only, the
+# package installed with pip). The tests are the folders whose tests use the package and nothing else
+# of the repository (tests/session: the device and host sessions; tests/edge: the serial client, the
+# simulator, pcapng), less the three long runs the main run covers (the pty flows, the stateful
+# client, hundreds of motion sessions); then the conformance harness runs the Python runner on every
+# vector. The other folders import the generator, whose pinned dependencies (rpds-py) do not install
+# on 3.10.
+PY_PACKAGE_TESTS := tests/session tests/edge
+PY_VERSION_TESTS := $(PY_PACKAGE_TESTS) -k "not full_flow and not whatever_the_user_does and not ratchet"
 
 test-python-versions: setup
 	tools/test-python-versions $(BUILD)/python-versions $(PY_VERSION_TESTS)

@@ -3,8 +3,10 @@
 # footprint; the fuzz targets (fuzz/rust) are run by mk/fuzz.mk.
 #
 # The crates are hand-written runtime modules (generator/targets/rust/runtime/, copied) next to
-# modules generated from the spec (generator/targets/rust/templates/); rustfmt lays both out, so
-# `cargo fmt --check` holds by construction and lint-rust checks the runtime through the crates.
+# modules generated from the spec (generator/targets/rust/templates/); the runner's hand-written
+# sources live with the other runners, in conformance/runners/rust/, and are copied the same way.
+# rustfmt lays all of them out, so `cargo fmt --check` holds by construction and lint-rust checks
+# the runtime and the runner sources through the crates.
 #
 # The generated crates build in place; build products go to build/rust/target, and the Cargo.lock
 # cargo writes beside a generated manifest is ignored (by git and by the drift check).
@@ -17,6 +19,10 @@ RUST_RUNNER_CRATE := generated/rust-conformance/Cargo.toml
 RUST_RUNNER := $(RUST_BUILD)/target/release/ilahrs-conformance
 RUST_FOOTPRINT_TARGET := thumbv7em-none-eabihf
 
+# rustdoc warnings are errors, a link that resolves to nothing among them; lint-rust also refuses
+# a link escaped into literal text (`\[` before a backquote), which rustdoc cannot see.
+RUSTDOC_STRICT := -D warnings -D rustdoc::broken_intra_doc_links -D rustdoc::private_intra_doc_links
+
 .PHONY: setup-rust build-rust lint-rust test-rust bench-rust footprint-rust format-rust-runtime
 
 setup-rust:
@@ -25,8 +31,9 @@ setup-rust:
 	@cargo fmt --version >/dev/null 2>&1 || rustup component add rustfmt >/dev/null 2>&1 || true
 
 # The hand-written runtime (generator/targets/rust/runtime/) must be laid out as rustfmt writes it:
-# `make generate` refuses it otherwise. This rewrites it so (inside a crate rendered from the spec,
-# since rustfmt follows `mod` declarations).
+# `make generate` refuses it otherwise. This rewrites it so, and the runner's sources in
+# conformance/runners/rust/ too (inside crates rendered from the spec, since rustfmt follows
+# `mod` declarations).
 format-rust-runtime: setup
 	$(PY) -c 'from generator.targets.rust.target import format_runtime; format_runtime()'
 
@@ -44,8 +51,10 @@ lint-rust: setup-rust
 	$(CARGO) clippy --quiet --manifest-path $(RUST_RUNNER_CRATE) -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path tests/rust/Cargo.toml --all-targets -- -D warnings
 	$(CARGO) clippy --quiet --manifest-path bench/rust/Cargo.toml -- -D warnings
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --manifest-path $(RUST_LIB)
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --quiet --no-deps --all-features --manifest-path $(RUST_LIB)
+	RUSTDOCFLAGS="$(RUSTDOC_STRICT)" $(CARGO) doc --quiet --no-deps --manifest-path $(RUST_LIB)
+	RUSTDOCFLAGS="$(RUSTDOC_STRICT)" $(CARGO) doc --quiet --no-deps --all-features --manifest-path $(RUST_LIB)
+	@if grep -rn '\\\[`' generated/rust/src; then \
+	  echo "lint-rust: an intra-doc link escaped into literal text (above); escape only spec prose" >&2; exit 1; fi
 
 # The differential test runs the Rust and Python runners on the same seeded, mutated inputs
 # (tests/rust/differential.py) and checks sessions against the spec model. A spec with one more

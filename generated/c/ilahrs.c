@@ -1,5 +1,6 @@
 /* Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
  * Do not edit: change the spec or the generator and run `make generate`.
+ * SPDX-License-Identifier: MIT OR Apache-2.0
  *
  * The spec's tables, then the library's fixed code, which walks them (generator/targets/c/runtime/).
  */
@@ -698,152 +699,156 @@ static const struct {
 #define ENCODING_NONE 0u
 #define ENCODING_DECLINATION 1u
 static const ilahrs_field_info_t ilahrs_fields[131] = {
-    /* NUMBER(name, kind, encoding, size, offset, member, bounds, scale); ARRAY(name, kind, size, offset, member) */
+    /* NUMBER(name, kind, encoding, size, offset, member, bounds, scale); ARRAY(name, kind, size, offset, member).
+     * A row's comment spells its bare numbers: name@N is the name's offset in ilahrs_field_names,
+     * bounds[N] the row of ilahrs_int_bounds or ilahrs_float_bounds (by kind; "finite": every finite
+     * float), scale[N] the row of ilahrs_scales (multiplier/divisor, a variant parameter as divisor),
+     * then the unit. A row 0 (no check, unscaled) is not mentioned. */
     /* full_output (Table 6.4) */
-    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
-    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
-    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
-    NUMBER(0, SIGNED, NONE, 2, 6, 6, 0, 0),      /* ugyro_x */
-    NUMBER(8, SIGNED, NONE, 2, 8, 8, 0, 0),      /* ugyro_y */
-    NUMBER(16, SIGNED, NONE, 2, 10, 10, 0, 0),   /* ugyro_z */
-    NUMBER(24, SIGNED, NONE, 2, 12, 12, 0, 0),   /* uacc_x */
-    NUMBER(31, SIGNED, NONE, 2, 14, 14, 0, 0),   /* uacc_y */
-    NUMBER(38, SIGNED, NONE, 2, 16, 16, 0, 0),   /* uacc_z */
-    NUMBER(45, SIGNED, NONE, 2, 18, 18, 0, 0),   /* umag_x */
-    NUMBER(52, SIGNED, NONE, 2, 20, 20, 0, 0),   /* umag_y */
-    NUMBER(59, SIGNED, NONE, 2, 22, 22, 0, 0),   /* umag_z */
-    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved */
-    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
-    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
-    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 0),   /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading: name@234, bounds[1]=0..35999, scale[1]=1/100 deg */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch: name@263, bounds[2]=-9000..9000, scale[1]=1/100 deg */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll: name@250, bounds[3]=-18000..18000, scale[1]=1/100 deg */
+    NUMBER(0, SIGNED, NONE, 2, 6, 6, 0, 0),      /* ugyro_x: name@0, in ADC */
+    NUMBER(8, SIGNED, NONE, 2, 8, 8, 0, 0),      /* ugyro_y: name@8, in ADC */
+    NUMBER(16, SIGNED, NONE, 2, 10, 10, 0, 0),   /* ugyro_z: name@16, in ADC */
+    NUMBER(24, SIGNED, NONE, 2, 12, 12, 0, 0),   /* uacc_x: name@24, in ADC */
+    NUMBER(31, SIGNED, NONE, 2, 14, 14, 0, 0),   /* uacc_y: name@31, in ADC */
+    NUMBER(38, SIGNED, NONE, 2, 16, 16, 0, 0),   /* uacc_z: name@38, in ADC */
+    NUMBER(45, SIGNED, NONE, 2, 18, 18, 0, 0),   /* umag_x: name@45, in ADC */
+    NUMBER(52, SIGNED, NONE, 2, 20, 20, 0, 0),   /* umag_y: name@52, in ADC */
+    NUMBER(59, SIGNED, NONE, 2, 22, 22, 0, 0),   /* umag_z: name@59, in ADC */
+    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved: name@66 */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw: name@75 */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd: name@79, scale[2]=1/1000 V */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 0),   /* utermo: name@83, in ADC */
     /* quaternion (Table 6.5) */
-    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
-    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
-    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
-    NUMBER(90, SIGNED, NONE, 2, 6, 6, 4, 3),     /* lk0 */
-    NUMBER(94, SIGNED, NONE, 2, 8, 8, 4, 3),     /* lk1 */
-    NUMBER(98, SIGNED, NONE, 2, 10, 10, 4, 3),   /* lk2 */
-    NUMBER(102, SIGNED, NONE, 2, 12, 12, 4, 3),  /* lk3 */
-    ARRAY(66, RESERVED, 14, 14, 14),             /* reserved */
-    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
-    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
-    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading: name@234, bounds[1]=0..35999, scale[1]=1/100 deg */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch: name@263, bounds[2]=-9000..9000, scale[1]=1/100 deg */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll: name@250, bounds[3]=-18000..18000, scale[1]=1/100 deg */
+    NUMBER(90, SIGNED, NONE, 2, 6, 6, 4, 3),     /* lk0: name@90, bounds[4]=-10000..10000, scale[3]=1/10000 */
+    NUMBER(94, SIGNED, NONE, 2, 8, 8, 4, 3),     /* lk1: name@94, bounds[4]=-10000..10000, scale[3]=1/10000 */
+    NUMBER(98, SIGNED, NONE, 2, 10, 10, 4, 3),   /* lk2: name@98, bounds[4]=-10000..10000, scale[3]=1/10000 */
+    NUMBER(102, SIGNED, NONE, 2, 12, 12, 4, 3),  /* lk3: name@102, bounds[4]=-10000..10000, scale[3]=1/10000 */
+    ARRAY(66, RESERVED, 14, 14, 14),             /* reserved: name@66 */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw: name@75 */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd: name@79, scale[2]=1/1000 V */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo: name@83, scale[4]=1/10 degC */
     /* orientation_sensors (Table 6.6) */
-    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading */
-    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch */
-    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll */
-    NUMBER(1, SIGNED, NONE, 2, 6, 6, 0, 5),      /* gyro_x */
-    NUMBER(9, SIGNED, NONE, 2, 8, 8, 0, 5),      /* gyro_y */
-    NUMBER(17, SIGNED, NONE, 2, 10, 10, 0, 5),   /* gyro_z */
-    NUMBER(25, SIGNED, NONE, 2, 12, 12, 0, 6),   /* acc_x */
-    NUMBER(32, SIGNED, NONE, 2, 14, 14, 0, 6),   /* acc_y */
-    NUMBER(39, SIGNED, NONE, 2, 16, 16, 0, 6),   /* acc_z */
-    NUMBER(46, SIGNED, NONE, 2, 18, 18, 0, 7),   /* mag_x */
-    NUMBER(53, SIGNED, NONE, 2, 20, 20, 0, 7),   /* mag_y */
-    NUMBER(60, SIGNED, NONE, 2, 22, 22, 0, 7),   /* mag_z */
-    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved */
-    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
-    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd */
-    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo */
+    NUMBER(234, UNSIGNED, NONE, 2, 0, 0, 1, 1),  /* heading: name@234, bounds[1]=0..35999, scale[1]=1/100 deg */
+    NUMBER(263, SIGNED, NONE, 2, 2, 2, 2, 1),    /* pitch: name@263, bounds[2]=-9000..9000, scale[1]=1/100 deg */
+    NUMBER(250, SIGNED, NONE, 2, 4, 4, 3, 1),    /* roll: name@250, bounds[3]=-18000..18000, scale[1]=1/100 deg */
+    NUMBER(1, SIGNED, NONE, 2, 6, 6, 0, 5),      /* gyro_x: name@1, scale[5]=1/KG deg/s */
+    NUMBER(9, SIGNED, NONE, 2, 8, 8, 0, 5),      /* gyro_y: name@9, scale[5]=1/KG deg/s */
+    NUMBER(17, SIGNED, NONE, 2, 10, 10, 0, 5),   /* gyro_z: name@17, scale[5]=1/KG deg/s */
+    NUMBER(25, SIGNED, NONE, 2, 12, 12, 0, 6),   /* acc_x: name@25, scale[6]=1/KA g */
+    NUMBER(32, SIGNED, NONE, 2, 14, 14, 0, 6),   /* acc_y: name@32, scale[6]=1/KA g */
+    NUMBER(39, SIGNED, NONE, 2, 16, 16, 0, 6),   /* acc_z: name@39, scale[6]=1/KA g */
+    NUMBER(46, SIGNED, NONE, 2, 18, 18, 0, 7),   /* mag_x: name@46, scale[7]=10/1 nT */
+    NUMBER(53, SIGNED, NONE, 2, 20, 20, 0, 7),   /* mag_y: name@53, scale[7]=10/1 nT */
+    NUMBER(60, SIGNED, NONE, 2, 22, 22, 0, 7),   /* mag_z: name@60, scale[7]=10/1 nT */
+    ARRAY(66, RESERVED, 4, 24, 24),              /* reserved: name@66 */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw: name@75 */
+    NUMBER(79, UNSIGNED, NONE, 2, 30, 30, 0, 2), /* vdd: name@79, scale[2]=1/1000 V */
+    NUMBER(83, SIGNED, NONE, 2, 32, 32, 0, 4),   /* utermo: name@83, scale[4]=1/10 degC */
     /* initial_alignment (Table 6.8) */
-    NUMBER(106, FLOAT, NONE, 4, 0, 0, 1, 0),     /* gyro_bias_x */
-    NUMBER(118, FLOAT, NONE, 4, 4, 4, 1, 0),     /* gyro_bias_y */
-    NUMBER(130, FLOAT, NONE, 4, 8, 8, 1, 0),     /* gyro_bias_z */
-    NUMBER(142, FLOAT, NONE, 4, 12, 12, 1, 0),   /* average_acc_x */
-    NUMBER(156, FLOAT, NONE, 4, 16, 16, 1, 0),   /* average_acc_y */
-    NUMBER(170, FLOAT, NONE, 4, 20, 20, 1, 0),   /* average_acc_z */
-    NUMBER(184, FLOAT, NONE, 4, 24, 24, 1, 0),   /* average_mag_x */
-    NUMBER(198, FLOAT, NONE, 4, 28, 28, 1, 0),   /* average_mag_y */
-    NUMBER(212, FLOAT, NONE, 4, 32, 32, 1, 0),   /* average_mag_z */
-    NUMBER(226, FLOAT, NONE, 4, 36, 36, 2, 0),   /* initial_heading */
-    NUMBER(242, FLOAT, NONE, 4, 40, 40, 3, 0),   /* initial_roll */
-    NUMBER(255, FLOAT, NONE, 4, 44, 44, 4, 0),   /* initial_pitch */
-    NUMBER(75, UNSIGNED, NONE, 2, 48, 48, 0, 0), /* usw */
+    NUMBER(106, FLOAT, NONE, 4, 0, 0, 1, 0),     /* gyro_bias_x: name@106, bounds[1]=finite, in ADC */
+    NUMBER(118, FLOAT, NONE, 4, 4, 4, 1, 0),     /* gyro_bias_y: name@118, bounds[1]=finite, in ADC */
+    NUMBER(130, FLOAT, NONE, 4, 8, 8, 1, 0),     /* gyro_bias_z: name@130, bounds[1]=finite, in ADC */
+    NUMBER(142, FLOAT, NONE, 4, 12, 12, 1, 0),   /* average_acc_x: name@142, bounds[1]=finite, in ADC */
+    NUMBER(156, FLOAT, NONE, 4, 16, 16, 1, 0),   /* average_acc_y: name@156, bounds[1]=finite, in ADC */
+    NUMBER(170, FLOAT, NONE, 4, 20, 20, 1, 0),   /* average_acc_z: name@170, bounds[1]=finite, in ADC */
+    NUMBER(184, FLOAT, NONE, 4, 24, 24, 1, 0),   /* average_mag_x: name@184, bounds[1]=finite, in ADC */
+    NUMBER(198, FLOAT, NONE, 4, 28, 28, 1, 0),   /* average_mag_y: name@198, bounds[1]=finite, in ADC */
+    NUMBER(212, FLOAT, NONE, 4, 32, 32, 1, 0),   /* average_mag_z: name@212, bounds[1]=finite, in ADC */
+    NUMBER(226, FLOAT, NONE, 4, 36, 36, 2, 0),   /* initial_heading: name@226, bounds[2]=0..360, in deg */
+    NUMBER(242, FLOAT, NONE, 4, 40, 40, 3, 0),   /* initial_roll: name@242, bounds[3]=-180..180, in deg */
+    NUMBER(255, FLOAT, NONE, 4, 44, 44, 4, 0),   /* initial_pitch: name@255, bounds[4]=-90..90, in deg */
+    NUMBER(75, UNSIGNED, NONE, 2, 48, 48, 0, 0), /* usw: name@75 */
     /* ahrs_parameters_load (Table 6.9) */
-    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate */
-    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time */
-    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination */
-    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude */
-    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude */
-    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude */
-    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date */
-    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1 */
-    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2 */
-    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3 */
-    ARRAY(66, RESERVED, 14, 36, 36),                /* reserved */
+    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate: name@269, bounds[5]=1..100, in Hz */
+    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time: name@281, bounds[6]=1..65535, in s */
+    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination: name@296, bounds[1]=finite, in deg */
+    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude: name@308, bounds[4]=-90..90, in deg */
+    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude: name@317, bounds[3]=-180..180, in deg */
+    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude: name@327, bounds[5]=-20000..100000, in m */
+    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date: name@336, bounds[6]=1900.00269..2200.00171, in year */
+    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1: name@341, bounds[7]=-360..360, in deg */
+    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2: name@360, bounds[7]=-360..360, in deg */
+    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3: name@379, bounds[7]=-360..360, in deg */
+    ARRAY(66, RESERVED, 14, 36, 36),                /* reserved: name@66 */
     /* ahrs_parameters_read (Table 6.10) */
-    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate */
-    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time */
-    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination */
-    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude */
-    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude */
-    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude */
-    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date */
-    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1 */
-    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2 */
-    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3 */
-    ARRAY(398, CHAR, 8, 36, 36),                    /* device_id */
-    ARRAY(66, RESERVED, 6, 44, 45),                 /* reserved */
+    NUMBER(269, UNSIGNED, NONE, 2, 0, 0, 5, 0),     /* update_rate: name@269, bounds[5]=1..100, in Hz */
+    NUMBER(281, UNSIGNED, NONE, 2, 2, 2, 6, 0),     /* alignment_time: name@281, bounds[6]=1..65535, in s */
+    NUMBER(296, FLOAT, DECLINATION, 4, 4, 4, 1, 0), /* declination: name@296, bounds[1]=finite, in deg */
+    NUMBER(308, FLOAT, NONE, 4, 8, 8, 4, 0),        /* latitude: name@308, bounds[4]=-90..90, in deg */
+    NUMBER(317, FLOAT, NONE, 4, 12, 12, 3, 0),      /* longitude: name@317, bounds[3]=-180..180, in deg */
+    NUMBER(327, FLOAT, NONE, 4, 16, 16, 5, 0),      /* altitude: name@327, bounds[5]=-20000..100000, in m */
+    NUMBER(336, FLOAT, NONE, 4, 20, 20, 6, 0),      /* date: name@336, bounds[6]=1900.00269..2200.00171, in year */
+    NUMBER(341, FLOAT, NONE, 4, 24, 24, 7, 0),      /* alignment_angle_a1: name@341, bounds[7]=-360..360, in deg */
+    NUMBER(360, FLOAT, NONE, 4, 28, 28, 7, 0),      /* alignment_angle_a2: name@360, bounds[7]=-360..360, in deg */
+    NUMBER(379, FLOAT, NONE, 4, 32, 32, 7, 0),      /* alignment_angle_a3: name@379, bounds[7]=-360..360, in deg */
+    ARRAY(398, CHAR, 8, 36, 36),                    /* device_id: name@398 */
+    ARRAY(66, RESERVED, 6, 44, 45),                 /* reserved: name@66 */
     /* firmware_version (Table 6.11) */
-    ARRAY(408, CHAR, 50, 0, 0), /* version */
+    ARRAY(408, CHAR, 50, 0, 0), /* version: name@408 */
     /* bit_result (Table 6.12) */
-    NUMBER(416, SIGNED, NONE, 2, 0, 0, 0, 1),  /* utermo100 */
-    NUMBER(75, UNSIGNED, NONE, 2, 2, 2, 0, 0), /* usw */
+    NUMBER(416, SIGNED, NONE, 2, 0, 0, 0, 1),  /* utermo100: name@416, scale[1]=1/100 degC */
+    NUMBER(75, UNSIGNED, NONE, 2, 2, 2, 0, 0), /* usw: name@75 */
     /* calibration_parameters (Table 6.13) */
-    NUMBER(426, FLOAT, NONE, 4, 0, 0, 7, 0),    /* reference_azimuth */
-    NUMBER(444, UNSIGNED, NONE, 2, 4, 4, 6, 0), /* accumulation_time */
-    NUMBER(308, FLOAT, NONE, 4, 6, 8, 4, 0),    /* latitude */
-    NUMBER(317, FLOAT, NONE, 4, 10, 12, 3, 0),  /* longitude */
-    NUMBER(327, FLOAT, NONE, 4, 14, 16, 5, 0),  /* altitude */
-    NUMBER(336, FLOAT, NONE, 4, 18, 20, 6, 0),  /* date */
+    NUMBER(426, FLOAT, NONE, 4, 0, 0, 7, 0),    /* reference_azimuth: name@426, bounds[7]=-360..360, in deg */
+    NUMBER(444, UNSIGNED, NONE, 2, 4, 4, 6, 0), /* accumulation_time: name@444, bounds[6]=1..65535, in s */
+    NUMBER(308, FLOAT, NONE, 4, 6, 8, 4, 0),    /* latitude: name@308, bounds[4]=-90..90, in deg */
+    NUMBER(317, FLOAT, NONE, 4, 10, 12, 3, 0),  /* longitude: name@317, bounds[3]=-180..180, in deg */
+    NUMBER(327, FLOAT, NONE, 4, 14, 16, 5, 0),  /* altitude: name@327, bounds[5]=-20000..100000, in m */
+    NUMBER(336, FLOAT, NONE, 4, 18, 20, 6, 0),  /* date: name@336, bounds[6]=1900.00269..2200.00171, in year */
     /* calibration_result (Table 6.14) */
-    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 7, 0), /* calibration_type */
-    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used */
-    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0), /* data_used */
-    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success */
-    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11 */
-    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12 */
-    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13 */
-    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21 */
-    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22 */
-    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23 */
-    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31 */
-    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32 */
-    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33 */
-    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x */
-    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y */
-    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 7, 0), /* calibration_type: name@462, bounds[7]=1..3 */
+    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used: name@479 */
+    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0), /* data_used: name@489, bounds[8]=0..100, in % */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success: name@499 */
+    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11: name@507, bounds[1]=finite */
+    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12: name@515, bounds[1]=finite */
+    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13: name@523, bounds[1]=finite */
+    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21: name@531, bounds[1]=finite */
+    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22: name@539, bounds[1]=finite */
+    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23: name@547, bounds[1]=finite */
+    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31: name@555, bounds[1]=finite */
+    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32: name@563, bounds[1]=finite */
+    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33: name@571, bounds[1]=finite */
+    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x: name@579, bounds[1]=finite, in ADC */
+    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y: name@586, bounds[1]=finite, in ADC */
+    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z: name@593, bounds[1]=finite, in ADC */
     /* calibration_run_result (Table 6.15) */
-    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 9, 0),  /* calibration_type */
-    NUMBER(600, UNSIGNED, NONE, 1, 1, 1, 10, 0), /* run */
-    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0),  /* data_used */
-    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0),  /* success */
-    ARRAY(604, RESERVED, 4, 4, 4),               /* reserved_1 */
-    NUMBER(615, FLOAT, NONE, 4, 8, 8, 4, 0),     /* average_pitch */
-    NUMBER(629, FLOAT, NONE, 4, 12, 12, 3, 0),   /* average_roll */
-    ARRAY(642, RESERVED, 12, 16, 16),            /* reserved_2 */
-    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 9, 0),  /* calibration_type: name@462, bounds[9]=2..2 */
+    NUMBER(600, UNSIGNED, NONE, 1, 1, 1, 10, 0), /* run: name@600, bounds[10]=1..255 */
+    NUMBER(489, UNSIGNED, NONE, 1, 2, 2, 8, 0),  /* data_used: name@489, bounds[8]=0..100, in % */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0),  /* success: name@499 */
+    ARRAY(604, RESERVED, 4, 4, 4),               /* reserved_1: name@604 */
+    NUMBER(615, FLOAT, NONE, 4, 8, 8, 4, 0),     /* average_pitch: name@615, bounds[4]=-90..90, in deg */
+    NUMBER(629, FLOAT, NONE, 4, 12, 12, 3, 0),   /* average_roll: name@629, bounds[3]=-180..180, in deg */
+    ARRAY(642, RESERVED, 12, 16, 16),            /* reserved_2: name@642 */
+    NUMBER(75, UNSIGNED, NONE, 2, 28, 28, 0, 0), /* usw: name@75 */
     /* calibration_run_parameters (Table 6.16) */
-    ARRAY(66, RESERVED, 6, 0, 0), /* reserved */
+    ARRAY(66, RESERVED, 6, 0, 0), /* reserved: name@66 */
     /* calibration_status (Table 6.17) */
-    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 0, 0), /* calibration_type */
-    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used */
-    ARRAY(66, RESERVED, 1, 2, 2),               /* reserved */
-    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success */
-    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11 */
-    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12 */
-    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13 */
-    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21 */
-    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22 */
-    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23 */
-    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31 */
-    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32 */
-    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33 */
-    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x */
-    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y */
-    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z */
+    NUMBER(462, UNSIGNED, NONE, 1, 0, 0, 0, 0), /* calibration_type: name@462 */
+    NUMBER(479, UNSIGNED, NONE, 1, 1, 1, 0, 0), /* runs_used: name@479 */
+    ARRAY(66, RESERVED, 1, 2, 2),               /* reserved: name@66 */
+    NUMBER(499, UNSIGNED, NONE, 1, 3, 3, 0, 0), /* success: name@499 */
+    NUMBER(507, FLOAT, NONE, 4, 4, 4, 1, 0),    /* tm_c_11: name@507, bounds[1]=finite */
+    NUMBER(515, FLOAT, NONE, 4, 8, 8, 1, 0),    /* tm_c_12: name@515, bounds[1]=finite */
+    NUMBER(523, FLOAT, NONE, 4, 12, 12, 1, 0),  /* tm_c_13: name@523, bounds[1]=finite */
+    NUMBER(531, FLOAT, NONE, 4, 16, 16, 1, 0),  /* tm_c_21: name@531, bounds[1]=finite */
+    NUMBER(539, FLOAT, NONE, 4, 20, 20, 1, 0),  /* tm_c_22: name@539, bounds[1]=finite */
+    NUMBER(547, FLOAT, NONE, 4, 24, 24, 1, 0),  /* tm_c_23: name@547, bounds[1]=finite */
+    NUMBER(555, FLOAT, NONE, 4, 28, 28, 1, 0),  /* tm_c_31: name@555, bounds[1]=finite */
+    NUMBER(563, FLOAT, NONE, 4, 32, 32, 1, 0),  /* tm_c_32: name@563, bounds[1]=finite */
+    NUMBER(571, FLOAT, NONE, 4, 36, 36, 1, 0),  /* tm_c_33: name@571, bounds[1]=finite */
+    NUMBER(579, FLOAT, NONE, 4, 40, 40, 1, 0),  /* hm_0_x: name@579, bounds[1]=finite, in ADC */
+    NUMBER(586, FLOAT, NONE, 4, 44, 44, 1, 0),  /* hm_0_y: name@586, bounds[1]=finite, in ADC */
+    NUMBER(593, FLOAT, NONE, 4, 48, 48, 1, 0),  /* hm_0_z: name@593, bounds[1]=finite, in ADC */
     /* acknowledgement (6.3.1 (Table 6.2 with a one-word payload)) */
-    NUMBER(653, UNSIGNED, NONE, 2, 0, 0, 0, 0), /* checksum */
+    NUMBER(653, UNSIGNED, NONE, 2, 0, 0, 0, 0), /* checksum: name@653 */
 };
 
 static const struct {
@@ -2120,7 +2125,7 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     const ilahrs_field_info_t *f;
     const ilahrs_field_info_t *end;
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NULL);
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NULL);
     }
     size = ilahrs_payloads[payload].size;
     if (len < size) {
@@ -2150,7 +2155,7 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     const ilahrs_field_info_t *f;
     const ilahrs_field_info_t *end;
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT) {
-        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NULL);
+        return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NULL);
     }
     size = ilahrs_payloads[payload].size;
     if (out == NULL || cap < size) {

@@ -13,6 +13,7 @@ meta:
   id: ilahrs
   title: 'Inertial Labs AHRS Interface Control Document rev 1.7, binary frame'
   application: Inertial Labs AHRS
+  license: MIT OR Apache-2.0
   ks-version: '0.11'
   endian: le
 doc: |

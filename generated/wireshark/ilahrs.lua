@@ -1,5 +1,6 @@
 -- Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 -- Do not edit: change the spec or the generator and run `make generate`.
+-- SPDX-License-Identifier: MIT OR Apache-2.0
 --
 -- Wireshark dissector for the Inertial Labs AHRS Interface Control Document, revision 1.7
 -- (spec ilahrs 1.0.0). Install: see README.md beside this file.

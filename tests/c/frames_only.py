@@ -11,7 +11,7 @@ out as discarded (the reasoning is in ilahrs.c, at ILAHRS_STREAM_SENTENCES). Thi
 
     python tests/c/frames_only.py CAPTURE-TOOL RUNNER [ROUNDS]
 
-RUNNER is tests/c/conformance_runner.c built with -DILAHRS_STREAM_SENTENCES=0, as a command line
+RUNNER is conformance/runners/c/conformance_runner.c built with -DILAHRS_STREAM_SENTENCES=0, as a command line
 (e.g. "RUNNER --bytewise").
 """
 

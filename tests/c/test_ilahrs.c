@@ -462,6 +462,22 @@ static void test_payloads(void)
         CHECK(ilahrs_payload_build(ILAHRS_PAYLOAD_NONE, NULL, NULL, 0, &err) == 0);
         CHECK(ilahrs_payload_name(ILAHRS_PAYLOAD_NONE) == NULL);
     }
+    {
+        /* A table outside the enum is a value out of range (no field, no offset), as the other
+         * bindings report an index or name beyond their tables; not a payload of a bad length. */
+        ilahrs_error_t err;
+        uint8_t out[ILAHRS_FRAME_MAX_SIZE];
+        CHECK(!ilahrs_payload_parse((ilahrs_payload_t)ILAHRS_PAYLOAD_COUNT, out, 0, NULL, &err));
+        CHECK(is_error(&err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET) && err.field == NULL);
+        CHECK(!ilahrs_payload_parse(ILAHRS_PAYLOAD_NONE, out, 0, NULL, &err));
+        CHECK(is_error(&err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET) && err.field == NULL);
+        CHECK(ilahrs_payload_build((ilahrs_payload_t)ILAHRS_PAYLOAD_COUNT, out, out, sizeof out, &err) == 0);
+        CHECK(is_error(&err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET) && err.field == NULL);
+        CHECK(ilahrs_payload_build(ILAHRS_PAYLOAD_NONE, out, out, sizeof out, &err) == 0);
+        CHECK(is_error(&err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET) && err.field == NULL);
+        CHECK(ilahrs_payload_build_frame(ILAHRS_PAYLOAD_NONE, out, out, sizeof out, &err) == 0);
+        CHECK(is_error(&err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET) && err.field == NULL);
+    }
 #ifdef ILAHRS_TEMPERATURE_BLOCK_SIZE
     {
         /* The extended spec (tests/c/extend_spec.py): a char field's text default and a number's. */

@@ -27,7 +27,7 @@ from generator import build_spec  # noqa: E402
 from generator.model import NmeaField, Spec  # noqa: E402
 
 RUST_RUNNER = ROOT / "build" / "rust" / "target" / "release" / "ilahrs-conformance"
-PYTHON_RUNNER = ROOT / "conformance" / "runners" / "python_runner.py"
+PYTHON_RUNNER = ROOT / "conformance" / "runners" / "python" / "python_runner.py"
 
 # Bytes a mutation writes: the $PAHR grammar's characters, both frame start bytes, and any byte.
 SENTENCE_BYTES = b"0123456789.,-*$\r\nabcdefABCDEFgG "

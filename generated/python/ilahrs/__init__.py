@@ -67,7 +67,7 @@ from .payloads import (
 )
 from .session.device import Device
 from .session.host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
-from .spec import SPEC_SHA256, SPEC_VERSION
+from .spec import SPEC_SHA256, SPEC_VERSION, WIRE_FINGERPRINT
 from .status import UnitStatusWord, UswFlag, UswMode
 from .stream import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent
 
@@ -83,6 +83,7 @@ __all__ = [
     "SPEC_SHA256",
     "SPEC_VERSION",
     "VARIANTS",
+    "WIRE_FINGERPRINT",
     "Acknowledged",
     "Acknowledgement",
     "AhrsParametersLoad",

@@ -14,6 +14,9 @@ from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
 SPEC_SHA256: Final = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74"
+WIRE_FINGERPRINT: Final = 0x0D3AB4A6E6F066A7
+"""What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not docs or
+names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes."""
 ICD_DATE: Final = (2014, 3, 11)
 """The date of Inertial Labs AHRS Interface Control Document, rev 1.7: (year, month, day)."""
 UNIT_SYMBOLS: Final[Mapping[str, str]] = MappingProxyType(

@@ -1,6 +1,6 @@
-// Copied from generator/targets/rust/runtime/runner/main.rs for spec/ilahrs.yaml,
+// Copied from conformance/runners/rust/main.rs for spec/ilahrs.yaml,
 // spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
-// Do not edit: change the runtime source and run `make generate`.
+// Do not edit: change the runner source and run `make generate`.
 //! The conformance runner of the `ilahrs` crate: reads requests on standard input, one per
 //! line, and answers each on one line (conformance/README.md, "The runner protocol"). It holds
 //! no test logic and no protocol knowledge beyond what the crate exposes.

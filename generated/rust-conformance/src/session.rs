@@ -1,6 +1,6 @@
-// Copied from generator/targets/rust/runtime/runner/session.rs for spec/ilahrs.yaml,
+// Copied from conformance/runners/rust/session.rs for spec/ilahrs.yaml,
 // spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
-// Do not edit: change the runtime source and run `make generate`.
+// Do not edit: change the runner source and run `make generate`.
 //! The `session` request: the crate's device state machine, driven by a list of events.
 
 use ilahrs::state_machine::{Device, Event, Firmware};

@@ -40,6 +40,9 @@ pub use wire::Field;
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
 pub const SPEC_HASH: &str = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74";
+/// What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
+/// docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes.
+pub const WIRE_FINGERPRINT: u64 = 0x0d3ab4a6e6f066a7;
 /// The longest message the stream decoder holds: a frame or a sentence (bytes).
 pub const MAX_MESSAGE_SIZE: usize = 82;
 /// How long the line may be quiet inside a message, in byte times at 115200 baud and

@@ -170,6 +170,39 @@ def name_offset(name: str, t: Any) -> int:
     return offset
 
 
+def number_text(value: float) -> str:
+    """A bound as a person reads it: an integer without a point, else float32's 9 digits."""
+    return str(int(value)) if float(value).is_integer() else f"{value:.9g}"
+
+
+FLOAT32_MAX = float(struct.unpack("<f", struct.pack("<I", 0x7F7FFFFF))[0])
+
+
+def field_row_comment(r: Any, t: Any, spec: Spec) -> str:
+    """What the bare numbers of a row of ilahrs_fields stand for (tables.FieldRow `r` of tables
+    `t`): the field, its offset in the field-name pool, and for a number the row of its builder
+    bounds (ilahrs_int_bounds or ilahrs_float_bounds, by kind; "finite" for every finite float)
+    and of its engineering scale (ilahrs_scales: multiplier/divisor, a variant parameter's name
+    as the divisor), with the unit; a row 0 (no check, unscaled) is left out."""
+    f = r.field
+    parts = [f"name@{r.name}"]
+    unit = f" {f.unit.symbol}" if f.unit is not None and f.unit.symbol else ""
+    if f.is_numeric and r.bounds:
+        b = (t.float_bounds if f.is_float else t.int_bounds)[r.bounds]
+        finite = f.is_float and b.low == -FLOAT32_MAX and b.high == FLOAT32_MAX
+        parts.append(f"bounds[{r.bounds}]=" + ("finite" if finite else f"{number_text(b.low)}..{number_text(b.high)}"))
+    if f.is_numeric and r.scale:
+        s = t.scales[r.scale]
+        divisor = spec.variant_parameters[s.parameter].name if s.divisor == 0 else str(s.divisor)
+        parts.append(f"scale[{r.scale}]={s.multiplier}/{divisor}{unit}")
+    elif f.is_numeric and unit:
+        parts.append(f"in{unit}")
+    text = f"{f.name}: {', '.join(parts)}"
+    if "*/" in text:
+        raise ValueError(f"{f.name}: a row comment cannot hold {text!r}")
+    return text
+
+
 def answer_macro(index: int, m: Any) -> str:
     """The ilahrs_answer_t constant of answer `index` of the machine."""
     return macro("answer", m.answers[index].name)
@@ -315,6 +348,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "payload_macro": payload_macro,
     "payload_list": payload_list,
     "name_offset": name_offset,
+    "field_row_comment": field_row_comment,
     "answer_macro": answer_macro,
     "event_macro": event_macro,
     "pahr_parameter": pahr_parameter,

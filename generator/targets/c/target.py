@@ -4,17 +4,53 @@ from __future__ import annotations
 
 import calendar
 import math
+import re
 import struct
 from dataclasses import dataclass
 from pathlib import Path
 
 from generator.formatting import run_formatter, tool
 from generator.model import TIMER_EVENTS, Frame, Nmea, Spec
-from generator.render import Output, Runtime
+from generator.render import Output, Runtime, runtime_text
 
 from . import filters, machine, tables
 
-__all__ = ["FILTERS", "GLOBALS", "format", "outputs"]
+__all__ = ["FILTERS", "GLOBALS", "format", "fragment", "header_part", "outputs"]
+
+# The #include lines that open a runtime .c file (after an optional comment), and the blank lines
+# after them: what lets the file compile on its own, and what ilahrs.c leaves out.
+INCLUDES = re.compile(r"(?:/\*(?:[^*]|\*(?!/))*\*/\n)?(?:#include [^\n]+\n)+\n*")
+
+
+def fragment(source: str) -> str:
+    """A runtime .c file as ilahrs.c holds it: without the includes that open it. ilahrs.c has
+    what they include before it (ilahrs_internal.h's text, then the runtime files before it)."""
+    text = runtime_text("c", source)
+    found = INCLUDES.match(text)
+    if found is None:
+        raise ValueError(f"runtime/{source} does not open with its #include lines")
+    return text[found.end() :]
+
+
+# A banner of the header (filters.banner()): the runtime's api*.h files are cut at theirs.
+BANNER = re.compile(r"^/\* =+ \*/\n/\* (.*?) *\*/\n/\* =+ \*/\n", re.MULTILINE)
+
+
+def header_part(source: str, title: str | None = None) -> str:
+    """The declarations under banner `title` of the runtime header `source`, without the banner,
+    or those of its only banner: ilahrs.h.j2 puts each after the spec's types of its topic."""
+    text = runtime_text("c", source)
+    cuts = list(BANNER.finditer(text))
+    if not cuts or text[: cuts[0].start()].strip():
+        raise ValueError(f"runtime/{source} does not start with a banner")
+    ends = [c.start() for c in cuts[1:]] + [len(text)]
+    parts = {m.group(1): text[m.end() : end] for m, end in zip(cuts, ends, strict=True)}
+    if title is None and len(parts) == 1:
+        return next(iter(parts.values()))
+    if title not in parts:
+        raise ValueError(f"runtime/{source} has no banner {title!r} (it has {', '.join(parts)})")
+    return parts[title]
+
 
 FILTERS = filters.FILTERS
 GLOBALS = {
@@ -27,6 +63,8 @@ GLOBALS = {
     "field_doc": filters.field_doc,
     "response_doc": filters.response_doc,
     "banner": filters.banner,
+    "fragment": fragment,
+    "header_part": header_part,
 }
 
 # The committed clang-format configuration the generated C is formatted with (and the runtime
@@ -290,6 +328,7 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     return [
         Output("c/ilahrs.h", "ilahrs.h.j2", context),
         Output("c/ilahrs.c", "ilahrs.c.j2", context),
+        Output("c/ilahrs_internal.h", "ilahrs_internal.h.j2", context),
         Output("c/CMakeLists.txt", "CMakeLists.txt.j2"),
         Output("c/ilahrs.pc.in", "ilahrs.pc.in.j2"),
         Output("c/README.md", "README.md.j2"),

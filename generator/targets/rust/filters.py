@@ -59,11 +59,6 @@ def value_kind(field: Field) -> str:
     return type_name(field.kind)
 
 
-def table_kind(field: Field) -> str:
-    """The row kind of a field in `payload_table!`: `number`, `text` or `reserved`."""
-    return {"char": "text", "reserved": "reserved"}.get(field.kind, "number")
-
-
 def f64_literal(value: float) -> str:
     """A Rust f64 expression for a bound or default: `100.0`, `-0.5`, `F32_MAX`."""
     number = float(value)
@@ -111,14 +106,17 @@ def string(text: str) -> str:
 
 
 def doc(text: str, indent: int = 0, width: int = 92) -> str:
-    """Prose as `///` lines of at most `width` characters (plus the indent)."""
+    """Markdown as `///` lines of at most `width` characters (plus the indent). The text is
+    rustdoc markup as it stands (a template's own intra-doc links stay links): pass prose from the
+    spec through `escape_doc` first."""
     pad = " " * indent
-    lines = naming.wrap(escape_doc(text), width - indent - 4) or [""]
+    lines = naming.wrap(text, width - indent - 4) or [""]
     return "\n".join(f"{pad}/// {line}".rstrip() for line in lines)
 
 
 def escape_doc(text: str) -> str:
-    """Keep rustdoc from reading spec prose as markup: brackets and angle brackets."""
+    """Keep rustdoc from reading spec prose as markup: brackets and angle brackets. Only for text
+    that comes from the spec; a template's own links must stay as they are."""
     return text.replace("<", "&lt;").replace(">", "&gt;").replace("[", "\\[").replace("]", "\\]")
 
 
@@ -317,25 +315,25 @@ def same_field(spec: Spec, field: Field) -> Payload | None:
     return None
 
 
-def has_extras(payload: Payload) -> bool:
-    """True if a table has accessors beyond its rows: text or decoded ones."""
-    return any(f.kind == "char" or decoded(f) is not None for f in payload.fields)
-
-
 def payload_uses(spec: Spec, payload: Payload) -> list[str]:
     """The `use` paths a table file needs."""
     fields = payload.fields
     own = [f for f in fields if same_field(spec, f) is None]  # the descriptions written out here
-    names = {"FieldInfo"} | ({"FieldKind"} if own else set())
-    names |= {"Value"} if any(default_value(f) for f in own) or any(f.kind == "char" for f in fields) else set()
+    names = {"check_size", "FieldInfo", "Value"} | ({"FieldKind"} if own else set())
     names |= {"Scale"} if any(f.scale for f in own) else set()
     names |= {"Unit"} if any(f.unit for f in own) else set()
     names |= {"Encoding"} if any(f.encoding for f in own) else set()
-    uses = ["crate::payload::codec::payload_table", "crate::payload::{" + ", ".join(sorted(names)) + "}"]
-    if any(f.kind == "char" or (decoded_setter(f) or {}).get("fallible") for f in fields):
-        uses.append("crate::error::Result")
-    if any(f.scale is not None and f.scale.divisor_parameter for f in own):
-        uses.append("crate::variant::VariantParameter")
+    codec = {"self", "Table"} | ({"Raw"} if any(not f.is_bytes for f in fields) else set())
+    uses = [
+        "crate::error::Result",
+        "crate::wire",
+        "crate::payload::codec::{" + ", ".join(sorted(codec, key=lambda name: (name != "self", name))) + "}",
+        "crate::payload::{" + ", ".join(sorted(names, key=str.lower)) + "}",
+    ]
+    variant = {"Variant"} if any(f.scale is not None and f.scale.divisor_parameter for f in fields) else set()
+    variant |= {"VariantParameter"} if any(f.scale is not None and f.scale.divisor_parameter for f in own) else set()
+    if variant:
+        uses.append("crate::variant::{" + ", ".join(sorted(variant)) + "}")
     for field in fields:
         found = decoded(field)
         if found is not None:
@@ -359,7 +357,6 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "type_name": type_name,
     "rust_type": rust_type,
     "value_kind": value_kind,
-    "table_kind": table_kind,
     "f64": f64_literal,
     "byte_string": byte_string,
     "string": string,
@@ -375,7 +372,6 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "derivable_default": derivable_default,
     "decoded": decoded,
     "decoded_setter": decoded_setter,
-    "has_extras": has_extras,
 }
 
 GLOBALS: dict[str, Any] = {

@@ -1,10 +1,12 @@
 """Outputs of the Rust target.
 
 `generated/rust/` is the `ilahrs` crate (no_std, no dependencies): hand-written runtime modules
-from `runtime/crate/` (the stream decoder, byte access, errors, frame and sentence codecs, the
-payload table macro, the state machine's lookup) next to modules generated from the spec (tables,
-enums, constants, one file per payload table). `generated/rust-conformance/` is the conformance
-runner, a std binary that depends on the crate by path. Everything is laid out by `rustfmt`.
+from `runtime/crate/` (the stream decoder, byte access, errors, frame and sentence codecs, what
+every payload table shares, the state machine's lookup) next to modules generated from the spec
+(tables, enums, constants, one file per payload table, written out as plain impl blocks).
+`generated/rust-conformance/` is the conformance runner, a std binary that depends on the crate by
+path: its hand-written sources live with the other runners, in `conformance/runners/rust/`, and
+are copied in as the runtime is. Everything is laid out by `rustfmt`.
 """
 
 from __future__ import annotations
@@ -12,7 +14,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from generator import DEFAULT_SPEC, build_spec, render
+from generator import DEFAULT_SPEC, ROOT, build_spec, render
 from generator.formatting import FormatterError, run_formatter, tool
 from generator.model import Spec
 from generator.render import Output, Runtime
@@ -51,8 +53,10 @@ _RUNTIME = (
     ("rust/src/stream.rs", "crate/stream.rs"),
     ("rust/src/io.rs", "crate/io.rs"),
     ("rust/src/tests.rs", "crate/tests.rs"),
-    ("rust-conformance/src/main.rs", "runner/main.rs"),
 )
+
+# The conformance runner's hand-written sources, where a reader looks for a runner.
+RUNNER = ROOT / "conformance" / "runners" / "rust"
 
 
 # Folders that carry the licence texts (render.LICENCE_FILES).
@@ -63,6 +67,7 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     filters.check_supported(spec)
     files: list[Output | Runtime] = [Output(path, template) for path, template in _TEMPLATES]
     files += [Runtime(path, source) for path, source in _RUNTIME]
+    files.append(runner_source("main.rs"))
     files += [
         Output(f"rust/src/payload/{payload.name}.rs", "payload.rs.j2", {"payload": payload})
         for payload in spec.payloads
@@ -74,14 +79,22 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     if spec.state_machine is not None:
         files.append(Output("rust/src/state_machine.rs", "state_machine.rs.j2"))
         files.append(Runtime("rust/src/state_machine/device.rs", "crate/state_machine/device.rs"))
-        files.append(Runtime("rust-conformance/src/session.rs", "runner/session.rs"))
+        files.append(runner_source("session.rs"))
     else:
-        files.append(Runtime("rust-conformance/src/session.rs", "runner/no_session.rs"))
+        files.append(runner_source("no_session.rs", "session.rs"))
     return files
 
 
-# How a copied runtime file starts (render.runtime_notice, in Rust comment syntax).
-_COPIED = "// Copied from generator/targets/rust/runtime/"
+def runner_source(source: str, name: str | None = None) -> Output:
+    """The runner source `conformance/runners/rust/<source>`, copied to
+    `rust-conformance/src/<name>` behind a notice that says where it comes from."""
+    text = (RUNNER / source).read_text(encoding="utf-8")
+    return Output(f"rust-conformance/src/{name or source}", "runner_source.rs.j2", {"source": source, "text": text})
+
+
+# How a copied runtime file starts (render.runtime_notice, in Rust comment syntax), and how a
+# copied runner source does (runner_source.rs.j2).
+_COPIED = ("// Copied from generator/targets/rust/runtime/", "// Copied from conformance/runners/rust/")
 
 # The crate roots rustfmt starts from; it follows their `mod` declarations to every module.
 _ROOTS = ("rust/src/lib.rs", "rust-conformance/src/main.rs")
@@ -121,9 +134,14 @@ def format_runtime() -> None:
         if isinstance(out, Runtime):
             body = files[out.path].split("\n", len(render.runtime_notice(spec, "rust", out.source)))[-1]
             source = render.TARGETS_DIR / "rust" / "runtime" / out.source
-            if source.read_text(encoding="utf-8") != body:
-                source.write_text(body, encoding="utf-8")
-                print(f"formatted {source.relative_to(render.TARGETS_DIR.parent.parent)}")
+        elif out.template == "runner_source.rs.j2":
+            body = files[out.path].split("\n", _RUNNER_NOTICE_LINES)[-1]
+            source = RUNNER / out.context["source"]
+        else:
+            continue
+        if source.read_text(encoding="utf-8") != body:
+            source.write_text(body, encoding="utf-8")
+            print(f"formatted {source.relative_to(ROOT)}")
 
 
 def _is_root(path: Path, roots: list[str]) -> bool:
@@ -132,6 +150,10 @@ def _is_root(path: Path, roots: list[str]) -> bool:
 
 def _is_copied(text: str) -> bool:
     return text.startswith(_COPIED)
+
+
+# The notice lines in front of a copied runner source (runner_source.rs.j2).
+_RUNNER_NOTICE_LINES = 3
 
 
 def _edition(cargo_toml: str) -> str:

@@ -5,9 +5,11 @@
 //!
 //! The AHRS answer to GetBIT (6.3.11).
 
-use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit};
+use crate::error::Result;
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 4;
@@ -47,39 +49,193 @@ pub mod info {
 /// Every field, in wire order.
 pub static FIELDS: [FieldInfo; 2] = [info::UTERMO100, info::USW];
 
-payload_table! {
-    /// Table 6.12, Built-in test answer: a zero-copy view over a payload.
-    ///
-    /// \[`BitResult::new_checked`\] checks the size once; the accessors never panic, even
-    /// on a view made by \[`BitResult::new_unchecked`\] over a short buffer (missing bytes
-    /// read as zero).
-    view BitResult;
-    /// Table 6.12, Built-in test answer: the payload as a value, with raw field values.
-    ///
-    /// \[`BitResultRepr::parse`\] and \[`BitResultRepr::build`\] are exact inverses: every
-    /// byte string of \[`SIZE`\] bytes parses, and builds back to the same bytes when its
-    /// values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq, Default)]
-    repr BitResultRepr;
-    count 2;
-    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
-    0 number utermo100 set_utermo100 UTERMO100: i16,
-        /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
-        in utermo100_degc set_utermo100_degc;
-    /// USW, `u16`: Unit Status Word (section 6.5).
-    1 number usw set_usw USW: u16;
+/// Table 6.12, Built-in test answer: a zero-copy view over a payload.
+///
+/// [`BitResult::new_checked`] checks the size once; the accessors never panic, even on a
+/// view made by [`BitResult::new_unchecked`] over a short buffer (missing bytes read as
+/// zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BitResult<T: AsRef<[u8]>> {
+    buffer: T,
 }
 
 impl<T: AsRef<[u8]>> BitResult<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> BitResult<T> {
+        BitResult { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<BitResult<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(BitResult { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
+    pub fn utermo100(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UTERMO100)
+    }
+
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub fn usw(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::USW)
+    }
+
+    /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
+    pub fn utermo100_degc(&self) -> f64 {
+        info::UTERMO100.scaled(f64::from(self.utermo100()), None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
     }
 }
 
+impl<T: AsRef<[u8]> + AsMut<[u8]>> BitResult<T> {
+    /// Sets [`Self::utermo100`] (raw, unchecked: [`BitResultRepr::build`] checks ranges).
+    pub fn set_utermo100(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UTERMO100, value);
+    }
+
+    /// Sets [`Self::usw`] (raw, unchecked: [`BitResultRepr::build`] checks ranges).
+    pub fn set_usw(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::USW, value);
+    }
+}
+
+/// Table 6.12, Built-in test answer: the payload as a value, with raw field values.
+///
+/// [`BitResultRepr::parse`] and [`BitResultRepr::build`] are exact inverses: every byte
+/// string of [`SIZE`] bytes parses, and builds back to the same bytes when its values are
+/// in range.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BitResultRepr {
+    /// Utermo100, `s16`, raw x 1 / 100 = degrees Celsius: AHRS temperature in 1/100 degC.
+    pub utermo100: i16,
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub usw: u16,
+}
+
 impl BitResultRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<BitResultRepr> {
+        let view = BitResult::new_checked(data)?;
+        Ok(BitResultRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &BitResult<T>) -> BitResultRepr {
+        BitResultRepr {
+            utermo100: view.utermo100(),
+            usw: view.usw(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`BitResultRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`BitResultRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut BitResult::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut BitResult<T>) {
+        view.set_utermo100(self.utermo100);
+        view.set_usw(self.usw);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`BitResultRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 2] {
+        [Raw::value(self.utermo100), Raw::value(self.usw)]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.utermo100 = Raw::from_value(&info::UTERMO100, value)?,
+            1 => self.usw = Raw::from_value(&info::USW, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
+    /// Utermo100 (degrees Celsius): AHRS temperature in 1/100 degC.
+    pub fn utermo100_degc(&self) -> f64 {
+        info::UTERMO100.scaled(f64::from(self.utermo100), None)
+    }
+
+    /// Sets [`Self::utermo100`] from an engineering value (see
+    /// [`Self::utermo100_degc`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_utermo100_degc(&mut self, value: f64) -> Result<()> {
+        info::UTERMO100.set_scaled(&mut self.utermo100, value, None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
+    }
+}
+
+impl Table for BitResultRepr {
+    fn validate(&self) -> Result<()> {
+        BitResultRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        BitResultRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        BitResultRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        BitResultRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        BitResultRepr::set_value(self, index, value)
     }
 }

@@ -8,8 +8,9 @@
 
 use crate::encoding::Date;
 use crate::error::Result;
-use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Unit, Value};
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, Encoding, FieldInfo, FieldKind, Unit, Value};
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 22;
@@ -118,35 +119,256 @@ pub static FIELDS: [FieldInfo; 6] = [
     info::DATE,
 ];
 
-payload_table! {
-    /// Table 6.13, Calibration parameters: a zero-copy view over a payload.
-    ///
-    /// \[`CalibrationParameters::new_checked`\] checks the size once; the accessors never
-    /// panic, even on a view made by \[`CalibrationParameters::new_unchecked`\] over a
-    /// short buffer (missing bytes read as zero).
-    view CalibrationParameters;
-    /// Table 6.13, Calibration parameters: the payload as a value, with raw field values.
-    ///
-    /// \[`CalibrationParametersRepr::parse`\] and \[`CalibrationParametersRepr::build`\]
-    /// are exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to
-    /// the same bytes when its values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    repr CalibrationParametersRepr;
-    count 6;
+/// Table 6.13, Calibration parameters: a zero-copy view over a payload.
+///
+/// [`CalibrationParameters::new_checked`] checks the size once; the accessors never panic,
+/// even on a view made by [`CalibrationParameters::new_unchecked`] over a short buffer
+/// (missing bytes read as zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CalibrationParameters<T: AsRef<[u8]>> {
+    buffer: T,
+}
+
+impl<T: AsRef<[u8]>> CalibrationParameters<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> CalibrationParameters<T> {
+        CalibrationParameters { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<CalibrationParameters<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(CalibrationParameters { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
     /// Reserved, `f32`, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
-    0 number reference_azimuth set_reference_azimuth REFERENCE_AZIMUTH: f32;
+    pub fn reference_azimuth(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::REFERENCE_AZIMUTH)
+    }
+
     /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one
     /// run.
-    1 number accumulation_time set_accumulation_time ACCUMULATION_TIME: u16;
+    pub fn accumulation_time(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::ACCUMULATION_TIME)
+    }
+
     /// Latitude, `f32`, degrees: Latitude.
-    2 number latitude set_latitude LATITUDE: f32;
+    pub fn latitude(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::LATITUDE)
+    }
+
     /// Longitude, `f32`, degrees: Longitude.
-    3 number longitude set_longitude LONGITUDE: f32;
+    pub fn longitude(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::LONGITUDE)
+    }
+
     /// Altitude, `f32`, metres: Altitude.
-    4 number altitude set_altitude ALTITUDE: f32;
+    pub fn altitude(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::ALTITUDE)
+    }
+
     /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year +
     /// (Month - 1)/12 + Day/365.
-    5 number date set_date DATE: f32;
+    pub fn date(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::DATE)
+    }
+
+    /// Date (Year, Month, Day) as the nearest calendar date, or `None` (see [`Date::decode`]).
+    pub fn date_decoded(&self) -> Option<Date> {
+        Date::decode(self.date())
+    }
+}
+
+impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationParameters<T> {
+    /// Sets [`Self::reference_azimuth`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_reference_azimuth(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::REFERENCE_AZIMUTH, value);
+    }
+
+    /// Sets [`Self::accumulation_time`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_accumulation_time(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::ACCUMULATION_TIME, value);
+    }
+
+    /// Sets [`Self::latitude`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_latitude(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::LATITUDE, value);
+    }
+
+    /// Sets [`Self::longitude`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_longitude(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::LONGITUDE, value);
+    }
+
+    /// Sets [`Self::altitude`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_altitude(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::ALTITUDE, value);
+    }
+
+    /// Sets [`Self::date`] (raw, unchecked: [`CalibrationParametersRepr::build`] checks ranges).
+    pub fn set_date(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::DATE, value);
+    }
+}
+
+/// Table 6.13, Calibration parameters: the payload as a value, with raw field values.
+///
+/// [`CalibrationParametersRepr::parse`] and [`CalibrationParametersRepr::build`] are exact
+/// inverses: every byte string of [`SIZE`] bytes parses, and builds back to the same bytes
+/// when its values are in range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CalibrationParametersRepr {
+    /// Reserved, `f32`, degrees: Reference azimuth (6.4.8); no influence on 2D calibration.
+    pub reference_azimuth: f32,
+    /// Time of data accumulation in one run, `u16`, seconds: Data accumulation time of one
+    /// run.
+    pub accumulation_time: u16,
+    /// Latitude, `f32`, degrees: Latitude.
+    pub latitude: f32,
+    /// Longitude, `f32`, degrees: Longitude.
+    pub longitude: f32,
+    /// Altitude, `f32`, metres: Altitude.
+    pub altitude: f32,
+    /// Date (Year, Month, Day), `f32`, fractional year, see encoding `date`: Date as Year +
+    /// (Month - 1)/12 + Day/365.
+    pub date: f32,
+}
+
+impl CalibrationParametersRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<CalibrationParametersRepr> {
+        let view = CalibrationParameters::new_checked(data)?;
+        Ok(CalibrationParametersRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &CalibrationParameters<T>) -> CalibrationParametersRepr {
+        CalibrationParametersRepr {
+            reference_azimuth: view.reference_azimuth(),
+            accumulation_time: view.accumulation_time(),
+            latitude: view.latitude(),
+            longitude: view.longitude(),
+            altitude: view.altitude(),
+            date: view.date(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`CalibrationParametersRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`CalibrationParametersRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut CalibrationParameters::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut CalibrationParameters<T>) {
+        view.set_reference_azimuth(self.reference_azimuth);
+        view.set_accumulation_time(self.accumulation_time);
+        view.set_latitude(self.latitude);
+        view.set_longitude(self.longitude);
+        view.set_altitude(self.altitude);
+        view.set_date(self.date);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`CalibrationParametersRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 6] {
+        [
+            Raw::value(self.reference_azimuth),
+            Raw::value(self.accumulation_time),
+            Raw::value(self.latitude),
+            Raw::value(self.longitude),
+            Raw::value(self.altitude),
+            Raw::value(self.date),
+        ]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.reference_azimuth = Raw::from_value(&info::REFERENCE_AZIMUTH, value)?,
+            1 => self.accumulation_time = Raw::from_value(&info::ACCUMULATION_TIME, value)?,
+            2 => self.latitude = Raw::from_value(&info::LATITUDE, value)?,
+            3 => self.longitude = Raw::from_value(&info::LONGITUDE, value)?,
+            4 => self.altitude = Raw::from_value(&info::ALTITUDE, value)?,
+            5 => self.date = Raw::from_value(&info::DATE, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
+    /// Date (Year, Month, Day) as the nearest calendar date, or `None` (see [`Date::decode`]).
+    pub fn date_decoded(&self) -> Option<Date> {
+        Date::decode(self.date)
+    }
+
+    /// Sets Date (Year, Month, Day) from a calendar date. Error: `out_of_range` for a date that does not exist or lies outside the year range.
+    pub fn set_date_decoded(&mut self, date: Date) -> Result<()> {
+        let refused = info::DATE.refuse_because(date.refusal());
+        self.date = date.encode().ok_or(refused)?;
+        Ok(())
+    }
+}
+
+impl Table for CalibrationParametersRepr {
+    fn validate(&self) -> Result<()> {
+        CalibrationParametersRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationParametersRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationParametersRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        CalibrationParametersRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        CalibrationParametersRepr::set_value(self, index, value)
+    }
 }
 
 impl Default for CalibrationParametersRepr {
@@ -160,26 +382,5 @@ impl Default for CalibrationParametersRepr {
             altitude: 0.0,
             date: 1900.0027,
         }
-    }
-}
-
-impl<T: AsRef<[u8]>> CalibrationParameters<T> {
-    /// Date (Year, Month, Day) as the nearest calendar date, or `None` (see [`Date::decode`]).
-    pub fn date_decoded(&self) -> Option<Date> {
-        Date::decode(self.date())
-    }
-}
-
-impl CalibrationParametersRepr {
-    /// Date (Year, Month, Day) as the nearest calendar date, or `None` (see [`Date::decode`]).
-    pub fn date_decoded(&self) -> Option<Date> {
-        Date::decode(self.date)
-    }
-
-    /// Sets Date (Year, Month, Day) from a calendar date. Error: `out_of_range` for a date that does not exist or lies outside the year range.
-    pub fn set_date_decoded(&mut self, date: Date) -> Result<()> {
-        let refused = info::DATE.refuse_because(date.refusal());
-        self.date = date.encode().ok_or(refused)?;
-        Ok(())
     }
 }

@@ -7,9 +7,11 @@
 
 use crate::encoding::CalibrationSuccess;
 use crate::encoding::CalibrationType;
-use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Unit, Value};
+use crate::error::Result;
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, Encoding, FieldInfo, FieldKind, Unit, Value};
 use crate::status::StatusWord;
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 30;
@@ -135,61 +137,85 @@ pub static FIELDS: [FieldInfo; 9] = [
     info::USW,
 ];
 
-payload_table! {
-    /// Table 6.15, 2D-2T calibration run result: a zero-copy view over a payload.
-    ///
-    /// \[`CalibrationRunResult::new_checked`\] checks the size once; the accessors never
-    /// panic, even on a view made by \[`CalibrationRunResult::new_unchecked`\] over a short
-    /// buffer (missing bytes read as zero).
-    view CalibrationRunResult;
-    /// Table 6.15, 2D-2T calibration run result: the payload as a value, with raw field
-    /// values.
-    ///
-    /// \[`CalibrationRunResultRepr::parse`\] and \[`CalibrationRunResultRepr::build`\] are
-    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
-    /// same bytes when its values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq)]
-    repr CalibrationRunResultRepr;
-    count 9;
-    /// Type of calibration, `u8`: 2 for 2D-2T calibration.
-    0 number calibration_type set_calibration_type CALIBRATION_TYPE: u8;
-    /// Calibration run, `u8`: Number of this run (1, 2, ...).
-    1 number run set_run RUN: u8;
-    /// Percent of used data points, `u8`, percent: Percent of data points used.
-    2 number data_used set_data_used DATA_USED: u8;
-    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted
-    /// heading error in deg*10; 255: successful without an estimate.
-    3 number success set_success SUCCESS: u8;
-    /// Reserved, `reserved\[4\]`:
-    4 reserved reserved_1 set_reserved_1 RESERVED_1: [u8; 4];
-    /// Average pitch, deg, `f32`, degrees: Average pitch during the run.
-    5 number average_pitch set_average_pitch AVERAGE_PITCH: f32;
-    /// Average roll, deg, `f32`, degrees: Average roll during the run.
-    6 number average_roll set_average_roll AVERAGE_ROLL: f32;
-    /// Reserved, `reserved\[12\]`:
-    7 reserved reserved_2 set_reserved_2 RESERVED_2: [u8; 12];
-    /// USW, `u16`: Unit Status Word (section 6.5).
-    8 number usw set_usw USW: u16;
-}
-
-impl Default for CalibrationRunResultRepr {
-    /// Every field at its default: calibration_type 2, run 1, otherwise zero.
-    fn default() -> CalibrationRunResultRepr {
-        CalibrationRunResultRepr {
-            calibration_type: 2,
-            run: 1,
-            data_used: 0,
-            success: 0,
-            reserved_1: [0; 4],
-            average_pitch: 0.0,
-            average_roll: 0.0,
-            reserved_2: [0; 12],
-            usw: 0,
-        }
-    }
+/// Table 6.15, 2D-2T calibration run result: a zero-copy view over a payload.
+///
+/// [`CalibrationRunResult::new_checked`] checks the size once; the accessors never panic,
+/// even on a view made by [`CalibrationRunResult::new_unchecked`] over a short buffer
+/// (missing bytes read as zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CalibrationRunResult<T: AsRef<[u8]>> {
+    buffer: T,
 }
 
 impl<T: AsRef<[u8]>> CalibrationRunResult<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> CalibrationRunResult<T> {
+        CalibrationRunResult { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<CalibrationRunResult<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(CalibrationRunResult { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
+    /// Type of calibration, `u8`: 2 for 2D-2T calibration.
+    pub fn calibration_type(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::CALIBRATION_TYPE)
+    }
+
+    /// Calibration run, `u8`: Number of this run (1, 2, ...).
+    pub fn run(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::RUN)
+    }
+
+    /// Percent of used data points, `u8`, percent: Percent of data points used.
+    pub fn data_used(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::DATA_USED)
+    }
+
+    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted
+    /// heading error in deg*10; 255: successful without an estimate.
+    pub fn success(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::SUCCESS)
+    }
+
+    /// Reserved, `reserved[4]`.
+    pub fn reserved_1(&self) -> &[u8] {
+        wire::bytes(self.buffer.as_ref(), field::RESERVED_1)
+    }
+
+    /// Average pitch, deg, `f32`, degrees: Average pitch during the run.
+    pub fn average_pitch(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::AVERAGE_PITCH)
+    }
+
+    /// Average roll, deg, `f32`, degrees: Average roll during the run.
+    pub fn average_roll(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::AVERAGE_ROLL)
+    }
+
+    /// Reserved, `reserved[12]`.
+    pub fn reserved_2(&self) -> &[u8] {
+        wire::bytes(self.buffer.as_ref(), field::RESERVED_2)
+    }
+
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub fn usw(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::USW)
+    }
+
     /// Type of calibration as a named value, or `None` for a code the ICD does not name.
     pub fn calibration_type_decoded(&self) -> Option<CalibrationType> {
         CalibrationType::from_raw(self.calibration_type())
@@ -206,7 +232,184 @@ impl<T: AsRef<[u8]>> CalibrationRunResult<T> {
     }
 }
 
+impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationRunResult<T> {
+    /// Sets [`Self::calibration_type`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_calibration_type(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::CALIBRATION_TYPE, value);
+    }
+
+    /// Sets [`Self::run`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_run(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::RUN, value);
+    }
+
+    /// Sets [`Self::data_used`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_data_used(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::DATA_USED, value);
+    }
+
+    /// Sets [`Self::success`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_success(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::SUCCESS, value);
+    }
+
+    /// Sets [`Self::reserved_1`] (bytes kept verbatim).
+    pub fn set_reserved_1(&mut self, value: &[u8; 4]) {
+        wire::put(self.buffer.as_mut(), field::RESERVED_1, value);
+    }
+
+    /// Sets [`Self::average_pitch`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_average_pitch(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::AVERAGE_PITCH, value);
+    }
+
+    /// Sets [`Self::average_roll`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_average_roll(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::AVERAGE_ROLL, value);
+    }
+
+    /// Sets [`Self::reserved_2`] (bytes kept verbatim).
+    pub fn set_reserved_2(&mut self, value: &[u8; 12]) {
+        wire::put(self.buffer.as_mut(), field::RESERVED_2, value);
+    }
+
+    /// Sets [`Self::usw`] (raw, unchecked: [`CalibrationRunResultRepr::build`] checks ranges).
+    pub fn set_usw(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::USW, value);
+    }
+}
+
+/// Table 6.15, 2D-2T calibration run result: the payload as a value, with raw field values.
+///
+/// [`CalibrationRunResultRepr::parse`] and [`CalibrationRunResultRepr::build`] are exact
+/// inverses: every byte string of [`SIZE`] bytes parses, and builds back to the same bytes
+/// when its values are in range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CalibrationRunResultRepr {
+    /// Type of calibration, `u8`: 2 for 2D-2T calibration.
+    pub calibration_type: u8,
+    /// Calibration run, `u8`: Number of this run (1, 2, ...).
+    pub run: u8,
+    /// Percent of used data points, `u8`, percent: Percent of data points used.
+    pub data_used: u8,
+    /// Calibration success, `u8`: 0: run not successful (excluded); 1..254: predicted
+    /// heading error in deg*10; 255: successful without an estimate.
+    pub success: u8,
+    /// Reserved, `reserved[4]`.
+    pub reserved_1: [u8; 4],
+    /// Average pitch, deg, `f32`, degrees: Average pitch during the run.
+    pub average_pitch: f32,
+    /// Average roll, deg, `f32`, degrees: Average roll during the run.
+    pub average_roll: f32,
+    /// Reserved, `reserved[12]`.
+    pub reserved_2: [u8; 12],
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub usw: u16,
+}
+
 impl CalibrationRunResultRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<CalibrationRunResultRepr> {
+        let view = CalibrationRunResult::new_checked(data)?;
+        Ok(CalibrationRunResultRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &CalibrationRunResult<T>) -> CalibrationRunResultRepr {
+        CalibrationRunResultRepr {
+            calibration_type: view.calibration_type(),
+            run: view.run(),
+            data_used: view.data_used(),
+            success: view.success(),
+            reserved_1: wire::array(view.as_bytes(), field::RESERVED_1),
+            average_pitch: view.average_pitch(),
+            average_roll: view.average_roll(),
+            reserved_2: wire::array(view.as_bytes(), field::RESERVED_2),
+            usw: view.usw(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`CalibrationRunResultRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`CalibrationRunResultRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut CalibrationRunResult::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut CalibrationRunResult<T>) {
+        view.set_calibration_type(self.calibration_type);
+        view.set_run(self.run);
+        view.set_data_used(self.data_used);
+        view.set_success(self.success);
+        wire::put(view.buffer.as_mut(), field::RESERVED_1, &self.reserved_1);
+        view.set_average_pitch(self.average_pitch);
+        view.set_average_roll(self.average_roll);
+        wire::put(view.buffer.as_mut(), field::RESERVED_2, &self.reserved_2);
+        view.set_usw(self.usw);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`CalibrationRunResultRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 9] {
+        [
+            Raw::value(self.calibration_type),
+            Raw::value(self.run),
+            Raw::value(self.data_used),
+            Raw::value(self.success),
+            Value::Bytes(&self.reserved_1),
+            Raw::value(self.average_pitch),
+            Raw::value(self.average_roll),
+            Value::Bytes(&self.reserved_2),
+            Raw::value(self.usw),
+        ]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.calibration_type = Raw::from_value(&info::CALIBRATION_TYPE, value)?,
+            1 => self.run = Raw::from_value(&info::RUN, value)?,
+            2 => self.data_used = Raw::from_value(&info::DATA_USED, value)?,
+            3 => self.success = Raw::from_value(&info::SUCCESS, value)?,
+            4 => self.reserved_1 = info::RESERVED_1.array(value)?,
+            5 => self.average_pitch = Raw::from_value(&info::AVERAGE_PITCH, value)?,
+            6 => self.average_roll = Raw::from_value(&info::AVERAGE_ROLL, value)?,
+            7 => self.reserved_2 = info::RESERVED_2.array(value)?,
+            8 => self.usw = Raw::from_value(&info::USW, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
     /// Type of calibration as a named value, or `None` for a code the ICD does not name.
     pub fn calibration_type_decoded(&self) -> Option<CalibrationType> {
         CalibrationType::from_raw(self.calibration_type)
@@ -225,5 +428,44 @@ impl CalibrationRunResultRepr {
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
+    }
+}
+
+impl Table for CalibrationRunResultRepr {
+    fn validate(&self) -> Result<()> {
+        CalibrationRunResultRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationRunResultRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationRunResultRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        CalibrationRunResultRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        CalibrationRunResultRepr::set_value(self, index, value)
+    }
+}
+
+impl Default for CalibrationRunResultRepr {
+    /// Every field at its default: calibration_type 2, run 1, otherwise zero.
+    fn default() -> CalibrationRunResultRepr {
+        CalibrationRunResultRepr {
+            calibration_type: 2,
+            run: 1,
+            data_used: 0,
+            success: 0,
+            reserved_1: [0; 4],
+            average_pitch: 0.0,
+            average_roll: 0.0,
+            reserved_2: [0; 12],
+            usw: 0,
+        }
     }
 }

@@ -7,8 +7,10 @@
 
 use crate::encoding::CalibrationStatusType;
 use crate::encoding::CalibrationSuccess;
-use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Value};
+use crate::error::Result;
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, Encoding, FieldInfo, FieldKind, Value};
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 52;
@@ -137,71 +139,133 @@ pub static FIELDS: [FieldInfo; 16] = [
     info::HM_0_Z,
 ];
 
-payload_table! {
-    /// Table 6.17, Calibration results read back: a zero-copy view over a payload.
-    ///
-    /// \[`CalibrationStatus::new_checked`\] checks the size once; the accessors never
-    /// panic, even on a view made by \[`CalibrationStatus::new_unchecked`\] over a short
-    /// buffer (missing bytes read as zero).
-    view CalibrationStatus;
-    /// Table 6.17, Calibration results read back: the payload as a value, with raw field
-    /// values.
-    ///
-    /// \[`CalibrationStatusRepr::parse`\] and \[`CalibrationStatusRepr::build`\] are exact
-    /// inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the same
-    /// bytes when its values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq, Default)]
-    repr CalibrationStatusRepr;
-    count 16;
-    /// Type of calibration performed, `u8`: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D;
-    /// above 0x80: parameters loaded by other software.
-    0 number calibration_type set_calibration_type CALIBRATION_TYPE: u8;
-    /// Number of used calibration runs, `u8`: Number of calibration runs used.
-    1 number runs_used set_runs_used RUNS_USED: u8;
-    /// Reserved, `reserved\[1\]`:
-    2 reserved reserved set_reserved RESERVED: [u8; 1];
-    /// Calibration success, `u8`: 0: not successful; 1..254: predicted heading error in
-    /// deg*10; 255: successful without an estimate.
-    3 number success set_success SUCCESS: u8;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
-    /// column 1.
-    4 number tm_c_11 set_tm_c_11 TM_C_11: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
-    /// column 2.
-    5 number tm_c_12 set_tm_c_12 TM_C_12: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
-    /// column 3.
-    6 number tm_c_13 set_tm_c_13 TM_C_13: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
-    /// column 1.
-    7 number tm_c_21 set_tm_c_21 TM_C_21: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
-    /// column 2.
-    8 number tm_c_22 set_tm_c_22 TM_C_22: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
-    /// column 3.
-    9 number tm_c_23 set_tm_c_23 TM_C_23: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
-    /// column 1.
-    10 number tm_c_31 set_tm_c_31 TM_C_31: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
-    /// column 2.
-    11 number tm_c_32 set_tm_c_32 TM_C_32: f32;
-    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
-    /// column 3.
-    12 number tm_c_33 set_tm_c_33 TM_C_33: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
-    /// ICD): Hard-iron vector Hm_0 component 1.
-    13 number hm_0_x set_hm_0_x HM_0_X: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
-    /// ICD): Hard-iron vector Hm_0 component 2.
-    14 number hm_0_y set_hm_0_y HM_0_Y: f32;
-    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
-    /// ICD): Hard-iron vector Hm_0 component 3.
-    15 number hm_0_z set_hm_0_z HM_0_Z: f32;
+/// Table 6.17, Calibration results read back: a zero-copy view over a payload.
+///
+/// [`CalibrationStatus::new_checked`] checks the size once; the accessors never panic, even
+/// on a view made by [`CalibrationStatus::new_unchecked`] over a short buffer (missing
+/// bytes read as zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CalibrationStatus<T: AsRef<[u8]>> {
+    buffer: T,
 }
 
 impl<T: AsRef<[u8]>> CalibrationStatus<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> CalibrationStatus<T> {
+        CalibrationStatus { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<CalibrationStatus<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(CalibrationStatus { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
+    /// Type of calibration performed, `u8`: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D;
+    /// above 0x80: parameters loaded by other software.
+    pub fn calibration_type(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::CALIBRATION_TYPE)
+    }
+
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
+    pub fn runs_used(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::RUNS_USED)
+    }
+
+    /// Reserved, `reserved[1]`.
+    pub fn reserved(&self) -> &[u8] {
+        wire::bytes(self.buffer.as_ref(), field::RESERVED)
+    }
+
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted heading error in
+    /// deg*10; 255: successful without an estimate.
+    pub fn success(&self) -> u8 {
+        wire::get(self.buffer.as_ref(), field::SUCCESS)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 1.
+    pub fn tm_c_11(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_11)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 2.
+    pub fn tm_c_12(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_12)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 3.
+    pub fn tm_c_13(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_13)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 1.
+    pub fn tm_c_21(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_21)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 2.
+    pub fn tm_c_22(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_22)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 3.
+    pub fn tm_c_23(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_23)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 1.
+    pub fn tm_c_31(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_31)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 2.
+    pub fn tm_c_32(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_32)
+    }
+
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 3.
+    pub fn tm_c_33(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::TM_C_33)
+    }
+
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 1.
+    pub fn hm_0_x(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::HM_0_X)
+    }
+
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 2.
+    pub fn hm_0_y(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::HM_0_Y)
+    }
+
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 3.
+    pub fn hm_0_z(&self) -> f32 {
+        wire::get(self.buffer.as_ref(), field::HM_0_Z)
+    }
+
     /// Type of calibration performed as a named value, or `None` for a code the ICD does not name.
     pub fn calibration_type_decoded(&self) -> Option<CalibrationStatusType> {
         CalibrationStatusType::from_raw(self.calibration_type())
@@ -213,7 +277,275 @@ impl<T: AsRef<[u8]>> CalibrationStatus<T> {
     }
 }
 
+impl<T: AsRef<[u8]> + AsMut<[u8]>> CalibrationStatus<T> {
+    /// Sets [`Self::calibration_type`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_calibration_type(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::CALIBRATION_TYPE, value);
+    }
+
+    /// Sets [`Self::runs_used`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_runs_used(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::RUNS_USED, value);
+    }
+
+    /// Sets [`Self::reserved`] (bytes kept verbatim).
+    pub fn set_reserved(&mut self, value: &[u8; 1]) {
+        wire::put(self.buffer.as_mut(), field::RESERVED, value);
+    }
+
+    /// Sets [`Self::success`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_success(&mut self, value: u8) {
+        wire::set(self.buffer.as_mut(), field::SUCCESS, value);
+    }
+
+    /// Sets [`Self::tm_c_11`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_11(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_11, value);
+    }
+
+    /// Sets [`Self::tm_c_12`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_12(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_12, value);
+    }
+
+    /// Sets [`Self::tm_c_13`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_13(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_13, value);
+    }
+
+    /// Sets [`Self::tm_c_21`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_21(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_21, value);
+    }
+
+    /// Sets [`Self::tm_c_22`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_22(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_22, value);
+    }
+
+    /// Sets [`Self::tm_c_23`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_23(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_23, value);
+    }
+
+    /// Sets [`Self::tm_c_31`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_31(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_31, value);
+    }
+
+    /// Sets [`Self::tm_c_32`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_32(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_32, value);
+    }
+
+    /// Sets [`Self::tm_c_33`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_tm_c_33(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::TM_C_33, value);
+    }
+
+    /// Sets [`Self::hm_0_x`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_hm_0_x(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::HM_0_X, value);
+    }
+
+    /// Sets [`Self::hm_0_y`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_hm_0_y(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::HM_0_Y, value);
+    }
+
+    /// Sets [`Self::hm_0_z`] (raw, unchecked: [`CalibrationStatusRepr::build`] checks ranges).
+    pub fn set_hm_0_z(&mut self, value: f32) {
+        wire::set(self.buffer.as_mut(), field::HM_0_Z, value);
+    }
+}
+
+/// Table 6.17, Calibration results read back: the payload as a value, with raw field
+/// values.
+///
+/// [`CalibrationStatusRepr::parse`] and [`CalibrationStatusRepr::build`] are exact
+/// inverses: every byte string of [`SIZE`] bytes parses, and builds back to the same bytes
+/// when its values are in range.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CalibrationStatusRepr {
+    /// Type of calibration performed, `u8`: 0: not calibrated; 1: 2D; 2: 2D-2T; 3: 3D;
+    /// above 0x80: parameters loaded by other software.
+    pub calibration_type: u8,
+    /// Number of used calibration runs, `u8`: Number of calibration runs used.
+    pub runs_used: u8,
+    /// Reserved, `reserved[1]`.
+    pub reserved: [u8; 1],
+    /// Calibration success, `u8`: 0: not successful; 1..254: predicted heading error in
+    /// deg*10; 255: successful without an estimate.
+    pub success: u8,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 1.
+    pub tm_c_11: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 2.
+    pub tm_c_12: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 1
+    /// column 3.
+    pub tm_c_13: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 1.
+    pub tm_c_21: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 2.
+    pub tm_c_22: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 2
+    /// column 3.
+    pub tm_c_23: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 1.
+    pub tm_c_31: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 2.
+    pub tm_c_32: f32,
+    /// Matrix for soft iron correction, `f32`, dimensionless: Soft-iron matrix Tm_c row 3
+    /// column 3.
+    pub tm_c_33: f32,
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 1.
+    pub hm_0_x: f32,
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 2.
+    pub hm_0_y: f32,
+    /// Matrix for hard iron correction, `f32`, ADC codes (no physical scale given by the
+    /// ICD): Hard-iron vector Hm_0 component 3.
+    pub hm_0_z: f32,
+}
+
 impl CalibrationStatusRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<CalibrationStatusRepr> {
+        let view = CalibrationStatus::new_checked(data)?;
+        Ok(CalibrationStatusRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &CalibrationStatus<T>) -> CalibrationStatusRepr {
+        CalibrationStatusRepr {
+            calibration_type: view.calibration_type(),
+            runs_used: view.runs_used(),
+            reserved: wire::array(view.as_bytes(), field::RESERVED),
+            success: view.success(),
+            tm_c_11: view.tm_c_11(),
+            tm_c_12: view.tm_c_12(),
+            tm_c_13: view.tm_c_13(),
+            tm_c_21: view.tm_c_21(),
+            tm_c_22: view.tm_c_22(),
+            tm_c_23: view.tm_c_23(),
+            tm_c_31: view.tm_c_31(),
+            tm_c_32: view.tm_c_32(),
+            tm_c_33: view.tm_c_33(),
+            hm_0_x: view.hm_0_x(),
+            hm_0_y: view.hm_0_y(),
+            hm_0_z: view.hm_0_z(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`CalibrationStatusRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`CalibrationStatusRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut CalibrationStatus::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut CalibrationStatus<T>) {
+        view.set_calibration_type(self.calibration_type);
+        view.set_runs_used(self.runs_used);
+        wire::put(view.buffer.as_mut(), field::RESERVED, &self.reserved);
+        view.set_success(self.success);
+        view.set_tm_c_11(self.tm_c_11);
+        view.set_tm_c_12(self.tm_c_12);
+        view.set_tm_c_13(self.tm_c_13);
+        view.set_tm_c_21(self.tm_c_21);
+        view.set_tm_c_22(self.tm_c_22);
+        view.set_tm_c_23(self.tm_c_23);
+        view.set_tm_c_31(self.tm_c_31);
+        view.set_tm_c_32(self.tm_c_32);
+        view.set_tm_c_33(self.tm_c_33);
+        view.set_hm_0_x(self.hm_0_x);
+        view.set_hm_0_y(self.hm_0_y);
+        view.set_hm_0_z(self.hm_0_z);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`CalibrationStatusRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 16] {
+        [
+            Raw::value(self.calibration_type),
+            Raw::value(self.runs_used),
+            Value::Bytes(&self.reserved),
+            Raw::value(self.success),
+            Raw::value(self.tm_c_11),
+            Raw::value(self.tm_c_12),
+            Raw::value(self.tm_c_13),
+            Raw::value(self.tm_c_21),
+            Raw::value(self.tm_c_22),
+            Raw::value(self.tm_c_23),
+            Raw::value(self.tm_c_31),
+            Raw::value(self.tm_c_32),
+            Raw::value(self.tm_c_33),
+            Raw::value(self.hm_0_x),
+            Raw::value(self.hm_0_y),
+            Raw::value(self.hm_0_z),
+        ]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.calibration_type = Raw::from_value(&info::CALIBRATION_TYPE, value)?,
+            1 => self.runs_used = Raw::from_value(&info::RUNS_USED, value)?,
+            2 => self.reserved = info::RESERVED.array(value)?,
+            3 => self.success = Raw::from_value(&info::SUCCESS, value)?,
+            4 => self.tm_c_11 = Raw::from_value(&info::TM_C_11, value)?,
+            5 => self.tm_c_12 = Raw::from_value(&info::TM_C_12, value)?,
+            6 => self.tm_c_13 = Raw::from_value(&info::TM_C_13, value)?,
+            7 => self.tm_c_21 = Raw::from_value(&info::TM_C_21, value)?,
+            8 => self.tm_c_22 = Raw::from_value(&info::TM_C_22, value)?,
+            9 => self.tm_c_23 = Raw::from_value(&info::TM_C_23, value)?,
+            10 => self.tm_c_31 = Raw::from_value(&info::TM_C_31, value)?,
+            11 => self.tm_c_32 = Raw::from_value(&info::TM_C_32, value)?,
+            12 => self.tm_c_33 = Raw::from_value(&info::TM_C_33, value)?,
+            13 => self.hm_0_x = Raw::from_value(&info::HM_0_X, value)?,
+            14 => self.hm_0_y = Raw::from_value(&info::HM_0_Y, value)?,
+            15 => self.hm_0_z = Raw::from_value(&info::HM_0_Z, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
     /// Type of calibration performed as a named value, or `None` for a code the ICD does not name.
     pub fn calibration_type_decoded(&self) -> Option<CalibrationStatusType> {
         CalibrationStatusType::from_raw(self.calibration_type)
@@ -227,5 +559,27 @@ impl CalibrationStatusRepr {
     /// Sets Calibration success.
     pub fn set_success_decoded(&mut self, value: CalibrationSuccess) {
         self.success = value.encode();
+    }
+}
+
+impl Table for CalibrationStatusRepr {
+    fn validate(&self) -> Result<()> {
+        CalibrationStatusRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationStatusRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        CalibrationStatusRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        CalibrationStatusRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        CalibrationStatusRepr::set_value(self, index, value)
     }
 }

@@ -5,9 +5,11 @@
 //!
 //! Output block after AHRScont1 / AHRSreq1.
 
-use crate::payload::codec::payload_table;
-use crate::payload::{Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
+use crate::error::Result;
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, Encoding, FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 34;
@@ -212,88 +214,501 @@ pub static FIELDS: [FieldInfo; 16] = [
     info::UTERMO,
 ];
 
-payload_table! {
-    /// Table 6.4, Full Output Data: a zero-copy view over a payload.
-    ///
-    /// \[`FullOutput::new_checked`\] checks the size once; the accessors never panic, even
-    /// on a view made by \[`FullOutput::new_unchecked`\] over a short buffer (missing bytes
-    /// read as zero).
-    view FullOutput;
-    /// Table 6.4, Full Output Data: the payload as a value, with raw field values.
-    ///
-    /// \[`FullOutputRepr::parse`\] and \[`FullOutputRepr::build`\] are exact inverses:
-    /// every byte string of \[`SIZE`\] bytes parses, and builds back to the same bytes when
-    /// its values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq, Default)]
-    repr FullOutputRepr;
-    count 16;
-    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
-    0 number heading set_heading HEADING: u16,
-        /// Heading (degrees): Heading angle.
-        in heading_deg set_heading_deg;
-    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
-    1 number pitch set_pitch PITCH: i16,
-        /// Pitch (degrees): Pitch angle.
-        in pitch_deg set_pitch_deg;
-    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
-    2 number roll set_roll ROLL: i16,
-        /// Roll (degrees): Roll angle.
-        in roll_deg set_roll_deg;
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor
-    /// data.
-    3 number ugyro_x set_ugyro_x UGYRO_X: i16;
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor
-    /// data.
-    4 number ugyro_y set_ugyro_y UGYRO_Y: i16;
-    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor
-    /// data.
-    5 number ugyro_z set_ugyro_z UGYRO_Z: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X
-    /// sensor data.
-    6 number uacc_x set_uacc_x UACC_X: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y
-    /// sensor data.
-    7 number uacc_y set_uacc_y UACC_Y: i16;
-    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z
-    /// sensor data.
-    8 number uacc_z set_uacc_z UACC_Z: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X
-    /// sensor data.
-    9 number umag_x set_umag_x UMAG_X: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y
-    /// sensor data.
-    10 number umag_y set_umag_y UMAG_Y: i16;
-    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z
-    /// sensor data.
-    11 number umag_z set_umag_z UMAG_Z: i16;
-    /// Reserved, `reserved\[4\]`:
-    12 reserved reserved set_reserved RESERVED: [u8; 4];
-    /// USW, `u16`: Unit Status Word (section 6.5).
-    13 number usw set_usw USW: u16;
-    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the
-    /// AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note
-    /// 2). The frame does not say which.
-    14 number vdd set_vdd VDD: u16,
-        /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage
-        /// and the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame
-        /// does not say which.
-        in vdd_v set_vdd_v;
-    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7
-    /// temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does
-    /// not say which.
-    15 number utermo set_utermo UTERMO: i16;
+/// Table 6.4, Full Output Data: a zero-copy view over a payload.
+///
+/// [`FullOutput::new_checked`] checks the size once; the accessors never panic, even on a
+/// view made by [`FullOutput::new_unchecked`] over a short buffer (missing bytes read as
+/// zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FullOutput<T: AsRef<[u8]>> {
+    buffer: T,
 }
 
 impl<T: AsRef<[u8]>> FullOutput<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> FullOutput<T> {
+        FullOutput { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<FullOutput<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(FullOutput { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
+    pub fn heading(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::HEADING)
+    }
+
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
+    pub fn pitch(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::PITCH)
+    }
+
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
+    pub fn roll(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::ROLL)
+    }
+
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor
+    /// data.
+    pub fn ugyro_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UGYRO_X)
+    }
+
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor
+    /// data.
+    pub fn ugyro_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UGYRO_Y)
+    }
+
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor
+    /// data.
+    pub fn ugyro_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UGYRO_Z)
+    }
+
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X
+    /// sensor data.
+    pub fn uacc_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UACC_X)
+    }
+
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y
+    /// sensor data.
+    pub fn uacc_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UACC_Y)
+    }
+
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z
+    /// sensor data.
+    pub fn uacc_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UACC_Z)
+    }
+
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X
+    /// sensor data.
+    pub fn umag_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UMAG_X)
+    }
+
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y
+    /// sensor data.
+    pub fn umag_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UMAG_Y)
+    }
+
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z
+    /// sensor data.
+    pub fn umag_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UMAG_Z)
+    }
+
+    /// Reserved, `reserved[4]`.
+    pub fn reserved(&self) -> &[u8] {
+        wire::bytes(self.buffer.as_ref(), field::RESERVED)
+    }
+
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub fn usw(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::USW)
+    }
+
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the
+    /// AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note
+    /// 2). The frame does not say which.
+    pub fn vdd(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::VDD)
+    }
+
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7
+    /// temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does
+    /// not say which.
+    pub fn utermo(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UTERMO)
+    }
+
+    /// Heading (degrees): Heading angle.
+    pub fn heading_deg(&self) -> f64 {
+        info::HEADING.scaled(f64::from(self.heading()), None)
+    }
+
+    /// Pitch (degrees): Pitch angle.
+    pub fn pitch_deg(&self) -> f64 {
+        info::PITCH.scaled(f64::from(self.pitch()), None)
+    }
+
+    /// Roll (degrees): Roll angle.
+    pub fn roll_deg(&self) -> f64 {
+        info::ROLL.scaled(f64::from(self.roll()), None)
+    }
+
+    /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and
+    /// the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not
+    /// say which.
+    pub fn vdd_v(&self) -> f64 {
+        info::VDD.scaled(f64::from(self.vdd()), None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
     }
 }
 
+impl<T: AsRef<[u8]> + AsMut<[u8]>> FullOutput<T> {
+    /// Sets [`Self::heading`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_heading(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::HEADING, value);
+    }
+
+    /// Sets [`Self::pitch`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_pitch(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::PITCH, value);
+    }
+
+    /// Sets [`Self::roll`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_roll(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::ROLL, value);
+    }
+
+    /// Sets [`Self::ugyro_x`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_ugyro_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UGYRO_X, value);
+    }
+
+    /// Sets [`Self::ugyro_y`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_ugyro_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UGYRO_Y, value);
+    }
+
+    /// Sets [`Self::ugyro_z`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_ugyro_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UGYRO_Z, value);
+    }
+
+    /// Sets [`Self::uacc_x`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_uacc_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UACC_X, value);
+    }
+
+    /// Sets [`Self::uacc_y`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_uacc_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UACC_Y, value);
+    }
+
+    /// Sets [`Self::uacc_z`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_uacc_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UACC_Z, value);
+    }
+
+    /// Sets [`Self::umag_x`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_umag_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UMAG_X, value);
+    }
+
+    /// Sets [`Self::umag_y`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_umag_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UMAG_Y, value);
+    }
+
+    /// Sets [`Self::umag_z`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_umag_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UMAG_Z, value);
+    }
+
+    /// Sets [`Self::reserved`] (bytes kept verbatim).
+    pub fn set_reserved(&mut self, value: &[u8; 4]) {
+        wire::put(self.buffer.as_mut(), field::RESERVED, value);
+    }
+
+    /// Sets [`Self::usw`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_usw(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::USW, value);
+    }
+
+    /// Sets [`Self::vdd`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_vdd(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::VDD, value);
+    }
+
+    /// Sets [`Self::utermo`] (raw, unchecked: [`FullOutputRepr::build`] checks ranges).
+    pub fn set_utermo(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UTERMO, value);
+    }
+}
+
+/// Table 6.4, Full Output Data: the payload as a value, with raw field values.
+///
+/// [`FullOutputRepr::parse`] and [`FullOutputRepr::build`] are exact inverses: every byte
+/// string of [`SIZE`] bytes parses, and builds back to the same bytes when its values are
+/// in range.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FullOutputRepr {
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
+    pub heading: u16,
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
+    pub pitch: i16,
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
+    pub roll: i16,
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro X sensor
+    /// data.
+    pub ugyro_x: i16,
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Y sensor
+    /// data.
+    pub ugyro_y: i16,
+    /// Ugyro, `s16`, ADC codes (no physical scale given by the ICD): Raw gyro Z sensor
+    /// data.
+    pub ugyro_z: i16,
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer X
+    /// sensor data.
+    pub uacc_x: i16,
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Y
+    /// sensor data.
+    pub uacc_y: i16,
+    /// Uacc, `s16`, ADC codes (no physical scale given by the ICD): Raw accelerometer Z
+    /// sensor data.
+    pub uacc_z: i16,
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer X
+    /// sensor data.
+    pub umag_x: i16,
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Y
+    /// sensor data.
+    pub umag_y: i16,
+    /// Umag, `s16`, ADC codes (no physical scale given by the ICD): Raw magnetometer Z
+    /// sensor data.
+    pub umag_z: i16,
+    /// Reserved, `reserved[4]`.
+    pub reserved: [u8; 4],
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub usw: u16,
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: Combined voltage: successive frames carry the
+    /// AHRS input voltage and the stabilised sensor supply voltage in turn (Table 6.4 note
+    /// 2). The frame does not say which.
+    pub vdd: u16,
+    /// Utermo, `s16`, ADC codes (no physical scale given by the ICD): ADC code of one of 7
+    /// temperature sensors, in turn in successive frames (Table 6.4 note 3). The frame does
+    /// not say which.
+    pub utermo: i16,
+}
+
 impl FullOutputRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<FullOutputRepr> {
+        let view = FullOutput::new_checked(data)?;
+        Ok(FullOutputRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &FullOutput<T>) -> FullOutputRepr {
+        FullOutputRepr {
+            heading: view.heading(),
+            pitch: view.pitch(),
+            roll: view.roll(),
+            ugyro_x: view.ugyro_x(),
+            ugyro_y: view.ugyro_y(),
+            ugyro_z: view.ugyro_z(),
+            uacc_x: view.uacc_x(),
+            uacc_y: view.uacc_y(),
+            uacc_z: view.uacc_z(),
+            umag_x: view.umag_x(),
+            umag_y: view.umag_y(),
+            umag_z: view.umag_z(),
+            reserved: wire::array(view.as_bytes(), field::RESERVED),
+            usw: view.usw(),
+            vdd: view.vdd(),
+            utermo: view.utermo(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`FullOutputRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`FullOutputRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut FullOutput::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut FullOutput<T>) {
+        view.set_heading(self.heading);
+        view.set_pitch(self.pitch);
+        view.set_roll(self.roll);
+        view.set_ugyro_x(self.ugyro_x);
+        view.set_ugyro_y(self.ugyro_y);
+        view.set_ugyro_z(self.ugyro_z);
+        view.set_uacc_x(self.uacc_x);
+        view.set_uacc_y(self.uacc_y);
+        view.set_uacc_z(self.uacc_z);
+        view.set_umag_x(self.umag_x);
+        view.set_umag_y(self.umag_y);
+        view.set_umag_z(self.umag_z);
+        wire::put(view.buffer.as_mut(), field::RESERVED, &self.reserved);
+        view.set_usw(self.usw);
+        view.set_vdd(self.vdd);
+        view.set_utermo(self.utermo);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`FullOutputRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 16] {
+        [
+            Raw::value(self.heading),
+            Raw::value(self.pitch),
+            Raw::value(self.roll),
+            Raw::value(self.ugyro_x),
+            Raw::value(self.ugyro_y),
+            Raw::value(self.ugyro_z),
+            Raw::value(self.uacc_x),
+            Raw::value(self.uacc_y),
+            Raw::value(self.uacc_z),
+            Raw::value(self.umag_x),
+            Raw::value(self.umag_y),
+            Raw::value(self.umag_z),
+            Value::Bytes(&self.reserved),
+            Raw::value(self.usw),
+            Raw::value(self.vdd),
+            Raw::value(self.utermo),
+        ]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.heading = Raw::from_value(&info::HEADING, value)?,
+            1 => self.pitch = Raw::from_value(&info::PITCH, value)?,
+            2 => self.roll = Raw::from_value(&info::ROLL, value)?,
+            3 => self.ugyro_x = Raw::from_value(&info::UGYRO_X, value)?,
+            4 => self.ugyro_y = Raw::from_value(&info::UGYRO_Y, value)?,
+            5 => self.ugyro_z = Raw::from_value(&info::UGYRO_Z, value)?,
+            6 => self.uacc_x = Raw::from_value(&info::UACC_X, value)?,
+            7 => self.uacc_y = Raw::from_value(&info::UACC_Y, value)?,
+            8 => self.uacc_z = Raw::from_value(&info::UACC_Z, value)?,
+            9 => self.umag_x = Raw::from_value(&info::UMAG_X, value)?,
+            10 => self.umag_y = Raw::from_value(&info::UMAG_Y, value)?,
+            11 => self.umag_z = Raw::from_value(&info::UMAG_Z, value)?,
+            12 => self.reserved = info::RESERVED.array(value)?,
+            13 => self.usw = Raw::from_value(&info::USW, value)?,
+            14 => self.vdd = Raw::from_value(&info::VDD, value)?,
+            15 => self.utermo = Raw::from_value(&info::UTERMO, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
+    /// Heading (degrees): Heading angle.
+    pub fn heading_deg(&self) -> f64 {
+        info::HEADING.scaled(f64::from(self.heading), None)
+    }
+
+    /// Sets [`Self::heading`] from an engineering value (see
+    /// [`Self::heading_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_heading_deg(&mut self, value: f64) -> Result<()> {
+        info::HEADING.set_scaled(&mut self.heading, value, None)
+    }
+
+    /// Pitch (degrees): Pitch angle.
+    pub fn pitch_deg(&self) -> f64 {
+        info::PITCH.scaled(f64::from(self.pitch), None)
+    }
+
+    /// Sets [`Self::pitch`] from an engineering value (see
+    /// [`Self::pitch_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_pitch_deg(&mut self, value: f64) -> Result<()> {
+        info::PITCH.set_scaled(&mut self.pitch, value, None)
+    }
+
+    /// Roll (degrees): Roll angle.
+    pub fn roll_deg(&self) -> f64 {
+        info::ROLL.scaled(f64::from(self.roll), None)
+    }
+
+    /// Sets [`Self::roll`] from an engineering value (see
+    /// [`Self::roll_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_roll_deg(&mut self, value: f64) -> Result<()> {
+        info::ROLL.set_scaled(&mut self.roll, value, None)
+    }
+
+    /// Vdd (volts DC): Combined voltage: successive frames carry the AHRS input voltage and
+    /// the stabilised sensor supply voltage in turn (Table 6.4 note 2). The frame does not
+    /// say which.
+    pub fn vdd_v(&self) -> f64 {
+        info::VDD.scaled(f64::from(self.vdd), None)
+    }
+
+    /// Sets [`Self::vdd`] from an engineering value (see
+    /// [`Self::vdd_v`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_vdd_v(&mut self, value: f64) -> Result<()> {
+        info::VDD.set_scaled(&mut self.vdd, value, None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
+    }
+}
+
+impl Table for FullOutputRepr {
+    fn validate(&self) -> Result<()> {
+        FullOutputRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        FullOutputRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        FullOutputRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        FullOutputRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        FullOutputRepr::set_value(self, index, value)
     }
 }

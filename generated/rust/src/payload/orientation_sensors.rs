@@ -5,10 +5,12 @@
 //!
 //! Output block after AHRScont3 / AHRSreq3 (the default format, section 6.2).
 
-use crate::payload::codec::payload_table;
-use crate::payload::{FieldInfo, FieldKind, Scale, Unit};
+use crate::error::Result;
+use crate::payload::codec::{self, Raw, Table};
+use crate::payload::{check_size, FieldInfo, FieldKind, Scale, Unit, Value};
 use crate::status::StatusWord;
-use crate::variant::VariantParameter;
+use crate::variant::{Variant, VariantParameter};
+use crate::wire;
 
 /// Size of the payload (bytes).
 pub const SIZE: usize = 34;
@@ -178,101 +180,655 @@ pub static FIELDS: [FieldInfo; 16] = [
     info::UTERMO,
 ];
 
-payload_table! {
-    /// Table 6.6, Orientation + Sensor Outputs: a zero-copy view over a payload.
-    ///
-    /// \[`OrientationSensors::new_checked`\] checks the size once; the accessors never
-    /// panic, even on a view made by \[`OrientationSensors::new_unchecked`\] over a short
-    /// buffer (missing bytes read as zero).
-    view OrientationSensors;
-    /// Table 6.6, Orientation + Sensor Outputs: the payload as a value, with raw field
-    /// values.
-    ///
-    /// \[`OrientationSensorsRepr::parse`\] and \[`OrientationSensorsRepr::build`\] are
-    /// exact inverses: every byte string of \[`SIZE`\] bytes parses, and builds back to the
-    /// same bytes when its values are in range.
-    #[derive(Debug, Clone, Copy, PartialEq, Default)]
-    repr OrientationSensorsRepr;
-    count 16;
-    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
-    0 number heading set_heading HEADING: u16,
-        /// Heading (degrees): Heading angle.
-        in heading_deg set_heading_deg;
-    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
-    1 number pitch set_pitch PITCH: i16,
-        /// Pitch (degrees): Pitch angle.
-        in pitch_deg set_pitch_deg;
-    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
-    2 number roll set_roll ROLL: i16,
-        /// Roll (degrees): Roll angle.
-        in roll_deg set_roll_deg;
-    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral
-    /// axis).
-    3 number gyro_x set_gyro_x GYRO_X: i16,
-        /// GyroX (degrees per second) for the device `variant`: Angular rate about X
-        /// (lateral axis).
-        in gyro_x_dps set_gyro_x_dps by variant;
-    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal
-    /// axis).
-    4 number gyro_y set_gyro_y GYRO_Y: i16,
-        /// GyroY (degrees per second) for the device `variant`: Angular rate about Y
-        /// (longitudinal axis).
-        in gyro_y_dps set_gyro_y_dps by variant;
-    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical
-    /// axis).
-    5 number gyro_z set_gyro_z GYRO_Z: i16,
-        /// GyroZ (degrees per second) for the device `variant`: Angular rate about Z
-        /// (vertical axis).
-        in gyro_z_dps set_gyro_z_dps by variant;
-    /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
-    6 number acc_x set_acc_x ACC_X: i16,
-        /// AccX (standard gravity) for the device `variant`: Linear acceleration along X.
-        in acc_x_g set_acc_x_g by variant;
-    /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
-    7 number acc_y set_acc_y ACC_Y: i16,
-        /// AccY (standard gravity) for the device `variant`: Linear acceleration along Y.
-        in acc_y_g set_acc_y_g by variant;
-    /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
-    8 number acc_z set_acc_z ACC_Z: i16,
-        /// AccZ (standard gravity) for the device `variant`: Linear acceleration along Z.
-        in acc_z_g set_acc_z_g by variant;
-    /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
-    9 number mag_x set_mag_x MAG_X: i16,
-        /// MagX (nanotesla): Magnetic field along X.
-        in mag_x_nt set_mag_x_nt;
-    /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
-    10 number mag_y set_mag_y MAG_Y: i16,
-        /// MagY (nanotesla): Magnetic field along Y.
-        in mag_y_nt set_mag_y_nt;
-    /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
-    11 number mag_z set_mag_z MAG_Z: i16,
-        /// MagZ (nanotesla): Magnetic field along Z.
-        in mag_z_nt set_mag_z_nt;
-    /// Reserved, `reserved\[4\]`:
-    12 reserved reserved set_reserved RESERVED: [u8; 4];
-    /// USW, `u16`: Unit Status Word (section 6.5).
-    13 number usw set_usw USW: u16;
-    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
-    14 number vdd set_vdd VDD: u16,
-        /// Vdd (volts DC): AHRS input voltage.
-        in vdd_v set_vdd_v;
-    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3
-    /// accelerometers.
-    15 number utermo set_utermo UTERMO: i16,
-        /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
-        in utermo_degc set_utermo_degc;
+/// Table 6.6, Orientation + Sensor Outputs: a zero-copy view over a payload.
+///
+/// [`OrientationSensors::new_checked`] checks the size once; the accessors never panic,
+/// even on a view made by [`OrientationSensors::new_unchecked`] over a short buffer
+/// (missing bytes read as zero).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OrientationSensors<T: AsRef<[u8]>> {
+    buffer: T,
 }
 
 impl<T: AsRef<[u8]>> OrientationSensors<T> {
+    /// A view over `buffer` without any check.
+    pub const fn new_unchecked(buffer: T) -> OrientationSensors<T> {
+        OrientationSensors { buffer }
+    }
+
+    /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
+    /// length when shorter, `trailing_data` at [`SIZE`] when longer.
+    pub fn new_checked(buffer: T) -> Result<OrientationSensors<T>> {
+        check_size(buffer.as_ref().len(), SIZE)?;
+        Ok(OrientationSensors { buffer })
+    }
+
+    /// The buffer.
+    pub fn into_inner(self) -> T {
+        self.buffer
+    }
+
+    /// The payload's bytes.
+    pub fn as_bytes(&self) -> &[u8] {
+        self.buffer.as_ref()
+    }
+
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
+    pub fn heading(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::HEADING)
+    }
+
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
+    pub fn pitch(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::PITCH)
+    }
+
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
+    pub fn roll(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::ROLL)
+    }
+
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral
+    /// axis).
+    pub fn gyro_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::GYRO_X)
+    }
+
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal
+    /// axis).
+    pub fn gyro_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::GYRO_Y)
+    }
+
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical
+    /// axis).
+    pub fn gyro_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::GYRO_Z)
+    }
+
+    /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
+    pub fn acc_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::ACC_X)
+    }
+
+    /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
+    pub fn acc_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::ACC_Y)
+    }
+
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
+    pub fn acc_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::ACC_Z)
+    }
+
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
+    pub fn mag_x(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::MAG_X)
+    }
+
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
+    pub fn mag_y(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::MAG_Y)
+    }
+
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
+    pub fn mag_z(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::MAG_Z)
+    }
+
+    /// Reserved, `reserved[4]`.
+    pub fn reserved(&self) -> &[u8] {
+        wire::bytes(self.buffer.as_ref(), field::RESERVED)
+    }
+
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub fn usw(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::USW)
+    }
+
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    pub fn vdd(&self) -> u16 {
+        wire::get(self.buffer.as_ref(), field::VDD)
+    }
+
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3
+    /// accelerometers.
+    pub fn utermo(&self) -> i16 {
+        wire::get(self.buffer.as_ref(), field::UTERMO)
+    }
+
+    /// Heading (degrees): Heading angle.
+    pub fn heading_deg(&self) -> f64 {
+        info::HEADING.scaled(f64::from(self.heading()), None)
+    }
+
+    /// Pitch (degrees): Pitch angle.
+    pub fn pitch_deg(&self) -> f64 {
+        info::PITCH.scaled(f64::from(self.pitch()), None)
+    }
+
+    /// Roll (degrees): Roll angle.
+    pub fn roll_deg(&self) -> f64 {
+        info::ROLL.scaled(f64::from(self.roll()), None)
+    }
+
+    /// GyroX (degrees per second) for the device `variant`: Angular rate about X (lateral
+    /// axis).
+    pub fn gyro_x_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_X.scaled(f64::from(self.gyro_x()), Some(variant))
+    }
+
+    /// GyroY (degrees per second) for the device `variant`: Angular rate about Y
+    /// (longitudinal axis).
+    pub fn gyro_y_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_Y.scaled(f64::from(self.gyro_y()), Some(variant))
+    }
+
+    /// GyroZ (degrees per second) for the device `variant`: Angular rate about Z (vertical
+    /// axis).
+    pub fn gyro_z_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_Z.scaled(f64::from(self.gyro_z()), Some(variant))
+    }
+
+    /// AccX (standard gravity) for the device `variant`: Linear acceleration along X.
+    pub fn acc_x_g(&self, variant: Variant) -> f64 {
+        info::ACC_X.scaled(f64::from(self.acc_x()), Some(variant))
+    }
+
+    /// AccY (standard gravity) for the device `variant`: Linear acceleration along Y.
+    pub fn acc_y_g(&self, variant: Variant) -> f64 {
+        info::ACC_Y.scaled(f64::from(self.acc_y()), Some(variant))
+    }
+
+    /// AccZ (standard gravity) for the device `variant`: Linear acceleration along Z.
+    pub fn acc_z_g(&self, variant: Variant) -> f64 {
+        info::ACC_Z.scaled(f64::from(self.acc_z()), Some(variant))
+    }
+
+    /// MagX (nanotesla): Magnetic field along X.
+    pub fn mag_x_nt(&self) -> f64 {
+        info::MAG_X.scaled(f64::from(self.mag_x()), None)
+    }
+
+    /// MagY (nanotesla): Magnetic field along Y.
+    pub fn mag_y_nt(&self) -> f64 {
+        info::MAG_Y.scaled(f64::from(self.mag_y()), None)
+    }
+
+    /// MagZ (nanotesla): Magnetic field along Z.
+    pub fn mag_z_nt(&self) -> f64 {
+        info::MAG_Z.scaled(f64::from(self.mag_z()), None)
+    }
+
+    /// Vdd (volts DC): AHRS input voltage.
+    pub fn vdd_v(&self) -> f64 {
+        info::VDD.scaled(f64::from(self.vdd()), None)
+    }
+
+    /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
+    pub fn utermo_degc(&self) -> f64 {
+        info::UTERMO.scaled(f64::from(self.utermo()), None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw())
     }
 }
 
+impl<T: AsRef<[u8]> + AsMut<[u8]>> OrientationSensors<T> {
+    /// Sets [`Self::heading`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_heading(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::HEADING, value);
+    }
+
+    /// Sets [`Self::pitch`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_pitch(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::PITCH, value);
+    }
+
+    /// Sets [`Self::roll`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_roll(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::ROLL, value);
+    }
+
+    /// Sets [`Self::gyro_x`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_gyro_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::GYRO_X, value);
+    }
+
+    /// Sets [`Self::gyro_y`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_gyro_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::GYRO_Y, value);
+    }
+
+    /// Sets [`Self::gyro_z`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_gyro_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::GYRO_Z, value);
+    }
+
+    /// Sets [`Self::acc_x`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_acc_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::ACC_X, value);
+    }
+
+    /// Sets [`Self::acc_y`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_acc_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::ACC_Y, value);
+    }
+
+    /// Sets [`Self::acc_z`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_acc_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::ACC_Z, value);
+    }
+
+    /// Sets [`Self::mag_x`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_mag_x(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::MAG_X, value);
+    }
+
+    /// Sets [`Self::mag_y`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_mag_y(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::MAG_Y, value);
+    }
+
+    /// Sets [`Self::mag_z`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_mag_z(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::MAG_Z, value);
+    }
+
+    /// Sets [`Self::reserved`] (bytes kept verbatim).
+    pub fn set_reserved(&mut self, value: &[u8; 4]) {
+        wire::put(self.buffer.as_mut(), field::RESERVED, value);
+    }
+
+    /// Sets [`Self::usw`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_usw(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::USW, value);
+    }
+
+    /// Sets [`Self::vdd`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_vdd(&mut self, value: u16) {
+        wire::set(self.buffer.as_mut(), field::VDD, value);
+    }
+
+    /// Sets [`Self::utermo`] (raw, unchecked: [`OrientationSensorsRepr::build`] checks ranges).
+    pub fn set_utermo(&mut self, value: i16) {
+        wire::set(self.buffer.as_mut(), field::UTERMO, value);
+    }
+}
+
+/// Table 6.6, Orientation + Sensor Outputs: the payload as a value, with raw field values.
+///
+/// [`OrientationSensorsRepr::parse`] and [`OrientationSensorsRepr::build`] are exact
+/// inverses: every byte string of [`SIZE`] bytes parses, and builds back to the same bytes
+/// when its values are in range.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct OrientationSensorsRepr {
+    /// Heading, `u16`, raw x 1 / 100 = degrees: Heading angle.
+    pub heading: u16,
+    /// Pitch, `s16`, raw x 1 / 100 = degrees: Pitch angle.
+    pub pitch: i16,
+    /// Roll, `s16`, raw x 1 / 100 = degrees: Roll angle.
+    pub roll: i16,
+    /// GyroX, `s16`, raw x 1 / KG = degrees per second: Angular rate about X (lateral
+    /// axis).
+    pub gyro_x: i16,
+    /// GyroY, `s16`, raw x 1 / KG = degrees per second: Angular rate about Y (longitudinal
+    /// axis).
+    pub gyro_y: i16,
+    /// GyroZ, `s16`, raw x 1 / KG = degrees per second: Angular rate about Z (vertical
+    /// axis).
+    pub gyro_z: i16,
+    /// AccX, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along X.
+    pub acc_x: i16,
+    /// AccY, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Y.
+    pub acc_y: i16,
+    /// AccZ, `s16`, raw x 1 / KA = standard gravity: Linear acceleration along Z.
+    pub acc_z: i16,
+    /// MagX, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along X.
+    pub mag_x: i16,
+    /// MagY, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Y.
+    pub mag_y: i16,
+    /// MagZ, `s16`, raw x 10 / 1 = nanotesla: Magnetic field along Z.
+    pub mag_z: i16,
+    /// Reserved, `reserved[4]`.
+    pub reserved: [u8; 4],
+    /// USW, `u16`: Unit Status Word (section 6.5).
+    pub usw: u16,
+    /// Vdd, `u16`, raw x 1 / 1000 = volts DC: AHRS input voltage.
+    pub vdd: u16,
+    /// Utermo, `s16`, raw x 1 / 10 = degrees Celsius: Average temperature of the 3
+    /// accelerometers.
+    pub utermo: i16,
+}
+
 impl OrientationSensorsRepr {
+    /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
+    /// Decoding does not check ranges.
+    pub fn parse(data: &[u8]) -> Result<OrientationSensorsRepr> {
+        let view = OrientationSensors::new_checked(data)?;
+        Ok(OrientationSensorsRepr::from_view(&view))
+    }
+
+    /// The value of a view.
+    pub fn from_view<T: AsRef<[u8]>>(view: &OrientationSensors<T>) -> OrientationSensorsRepr {
+        OrientationSensorsRepr {
+            heading: view.heading(),
+            pitch: view.pitch(),
+            roll: view.roll(),
+            gyro_x: view.gyro_x(),
+            gyro_y: view.gyro_y(),
+            gyro_z: view.gyro_z(),
+            acc_x: view.acc_x(),
+            acc_y: view.acc_y(),
+            acc_z: view.acc_z(),
+            mag_x: view.mag_x(),
+            mag_y: view.mag_y(),
+            mag_z: view.mag_z(),
+            reserved: wire::array(view.as_bytes(), field::RESERVED),
+            usw: view.usw(),
+            vdd: view.vdd(),
+            utermo: view.utermo(),
+        }
+    }
+
+    /// Checks every field in table order, as a builder does; the first bad one is the
+    /// error: `out_of_range` at the field's offset, naming the field.
+    pub fn validate(&self) -> Result<()> {
+        codec::validate(&FIELDS, &self.values())
+    }
+
+    /// The size of the payload [`OrientationSensorsRepr::build`] writes (bytes).
+    pub const fn buffer_len(&self) -> usize {
+        SIZE
+    }
+
+    /// Checks the value ([`OrientationSensorsRepr::validate`]) and writes it into
+    /// `buf`; returns its size (bytes), or `buffer_too_small`.
+    pub fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        self.validate()?;
+        let out = codec::payload_buffer(buf, SIZE)?;
+        self.emit(&mut OrientationSensors::new_unchecked(out));
+        Ok(SIZE)
+    }
+
+    /// Writes the value into a view without checking it.
+    pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut OrientationSensors<T>) {
+        view.set_heading(self.heading);
+        view.set_pitch(self.pitch);
+        view.set_roll(self.roll);
+        view.set_gyro_x(self.gyro_x);
+        view.set_gyro_y(self.gyro_y);
+        view.set_gyro_z(self.gyro_z);
+        view.set_acc_x(self.acc_x);
+        view.set_acc_y(self.acc_y);
+        view.set_acc_z(self.acc_z);
+        view.set_mag_x(self.mag_x);
+        view.set_mag_y(self.mag_y);
+        view.set_mag_z(self.mag_z);
+        wire::put(view.buffer.as_mut(), field::RESERVED, &self.reserved);
+        view.set_usw(self.usw);
+        view.set_vdd(self.vdd);
+        view.set_utermo(self.utermo);
+    }
+
+    /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
+    /// size (bytes). Errors: those of [`OrientationSensorsRepr::build`].
+    pub fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        let mut payload = [0; SIZE];
+        self.build(&mut payload)?;
+        codec::data_frame(&payload, buf)
+    }
+
+    /// Every raw value, in table order (text without its trailing NULs).
+    pub fn values(&self) -> [Value<'_>; 16] {
+        [
+            Raw::value(self.heading),
+            Raw::value(self.pitch),
+            Raw::value(self.roll),
+            Raw::value(self.gyro_x),
+            Raw::value(self.gyro_y),
+            Raw::value(self.gyro_z),
+            Raw::value(self.acc_x),
+            Raw::value(self.acc_y),
+            Raw::value(self.acc_z),
+            Raw::value(self.mag_x),
+            Raw::value(self.mag_y),
+            Raw::value(self.mag_z),
+            Value::Bytes(&self.reserved),
+            Raw::value(self.usw),
+            Raw::value(self.vdd),
+            Raw::value(self.utermo),
+        ]
+    }
+
+    /// The raw value of field `index` (table order), or `None` past the last field.
+    pub fn value(&self, index: usize) -> Option<Value<'_>> {
+        self.values().get(index).copied()
+    }
+
+    /// Sets field `index` (table order) after checking `value` as a builder does.
+    /// Errors: `out_of_range` naming the field, or with no field for an index past the
+    /// last.
+    pub fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        match index {
+            0 => self.heading = Raw::from_value(&info::HEADING, value)?,
+            1 => self.pitch = Raw::from_value(&info::PITCH, value)?,
+            2 => self.roll = Raw::from_value(&info::ROLL, value)?,
+            3 => self.gyro_x = Raw::from_value(&info::GYRO_X, value)?,
+            4 => self.gyro_y = Raw::from_value(&info::GYRO_Y, value)?,
+            5 => self.gyro_z = Raw::from_value(&info::GYRO_Z, value)?,
+            6 => self.acc_x = Raw::from_value(&info::ACC_X, value)?,
+            7 => self.acc_y = Raw::from_value(&info::ACC_Y, value)?,
+            8 => self.acc_z = Raw::from_value(&info::ACC_Z, value)?,
+            9 => self.mag_x = Raw::from_value(&info::MAG_X, value)?,
+            10 => self.mag_y = Raw::from_value(&info::MAG_Y, value)?,
+            11 => self.mag_z = Raw::from_value(&info::MAG_Z, value)?,
+            12 => self.reserved = info::RESERVED.array(value)?,
+            13 => self.usw = Raw::from_value(&info::USW, value)?,
+            14 => self.vdd = Raw::from_value(&info::VDD, value)?,
+            15 => self.utermo = Raw::from_value(&info::UTERMO, value)?,
+            _ => return Err(codec::no_field(index, FIELDS.len())),
+        }
+        Ok(())
+    }
+
+    /// Heading (degrees): Heading angle.
+    pub fn heading_deg(&self) -> f64 {
+        info::HEADING.scaled(f64::from(self.heading), None)
+    }
+
+    /// Sets [`Self::heading`] from an engineering value (see
+    /// [`Self::heading_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_heading_deg(&mut self, value: f64) -> Result<()> {
+        info::HEADING.set_scaled(&mut self.heading, value, None)
+    }
+
+    /// Pitch (degrees): Pitch angle.
+    pub fn pitch_deg(&self) -> f64 {
+        info::PITCH.scaled(f64::from(self.pitch), None)
+    }
+
+    /// Sets [`Self::pitch`] from an engineering value (see
+    /// [`Self::pitch_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_pitch_deg(&mut self, value: f64) -> Result<()> {
+        info::PITCH.set_scaled(&mut self.pitch, value, None)
+    }
+
+    /// Roll (degrees): Roll angle.
+    pub fn roll_deg(&self) -> f64 {
+        info::ROLL.scaled(f64::from(self.roll), None)
+    }
+
+    /// Sets [`Self::roll`] from an engineering value (see
+    /// [`Self::roll_deg`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_roll_deg(&mut self, value: f64) -> Result<()> {
+        info::ROLL.set_scaled(&mut self.roll, value, None)
+    }
+
+    /// GyroX (degrees per second) for the device `variant`: Angular rate about X (lateral
+    /// axis).
+    pub fn gyro_x_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_X.scaled(f64::from(self.gyro_x), Some(variant))
+    }
+
+    /// Sets [`Self::gyro_x`] from an engineering value (see
+    /// [`Self::gyro_x_dps`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_gyro_x_dps(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::GYRO_X.set_scaled(&mut self.gyro_x, value, Some(variant))
+    }
+
+    /// GyroY (degrees per second) for the device `variant`: Angular rate about Y
+    /// (longitudinal axis).
+    pub fn gyro_y_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_Y.scaled(f64::from(self.gyro_y), Some(variant))
+    }
+
+    /// Sets [`Self::gyro_y`] from an engineering value (see
+    /// [`Self::gyro_y_dps`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_gyro_y_dps(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::GYRO_Y.set_scaled(&mut self.gyro_y, value, Some(variant))
+    }
+
+    /// GyroZ (degrees per second) for the device `variant`: Angular rate about Z (vertical
+    /// axis).
+    pub fn gyro_z_dps(&self, variant: Variant) -> f64 {
+        info::GYRO_Z.scaled(f64::from(self.gyro_z), Some(variant))
+    }
+
+    /// Sets [`Self::gyro_z`] from an engineering value (see
+    /// [`Self::gyro_z_dps`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_gyro_z_dps(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::GYRO_Z.set_scaled(&mut self.gyro_z, value, Some(variant))
+    }
+
+    /// AccX (standard gravity) for the device `variant`: Linear acceleration along X.
+    pub fn acc_x_g(&self, variant: Variant) -> f64 {
+        info::ACC_X.scaled(f64::from(self.acc_x), Some(variant))
+    }
+
+    /// Sets [`Self::acc_x`] from an engineering value (see
+    /// [`Self::acc_x_g`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_acc_x_g(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::ACC_X.set_scaled(&mut self.acc_x, value, Some(variant))
+    }
+
+    /// AccY (standard gravity) for the device `variant`: Linear acceleration along Y.
+    pub fn acc_y_g(&self, variant: Variant) -> f64 {
+        info::ACC_Y.scaled(f64::from(self.acc_y), Some(variant))
+    }
+
+    /// Sets [`Self::acc_y`] from an engineering value (see
+    /// [`Self::acc_y_g`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_acc_y_g(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::ACC_Y.set_scaled(&mut self.acc_y, value, Some(variant))
+    }
+
+    /// AccZ (standard gravity) for the device `variant`: Linear acceleration along Z.
+    pub fn acc_z_g(&self, variant: Variant) -> f64 {
+        info::ACC_Z.scaled(f64::from(self.acc_z), Some(variant))
+    }
+
+    /// Sets [`Self::acc_z`] from an engineering value (see
+    /// [`Self::acc_z_g`]) for the device `variant`, rounded half
+    /// away from zero. Error: `out_of_range` naming the field.
+    pub fn set_acc_z_g(&mut self, variant: Variant, value: f64) -> Result<()> {
+        info::ACC_Z.set_scaled(&mut self.acc_z, value, Some(variant))
+    }
+
+    /// MagX (nanotesla): Magnetic field along X.
+    pub fn mag_x_nt(&self) -> f64 {
+        info::MAG_X.scaled(f64::from(self.mag_x), None)
+    }
+
+    /// Sets [`Self::mag_x`] from an engineering value (see
+    /// [`Self::mag_x_nt`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_mag_x_nt(&mut self, value: f64) -> Result<()> {
+        info::MAG_X.set_scaled(&mut self.mag_x, value, None)
+    }
+
+    /// MagY (nanotesla): Magnetic field along Y.
+    pub fn mag_y_nt(&self) -> f64 {
+        info::MAG_Y.scaled(f64::from(self.mag_y), None)
+    }
+
+    /// Sets [`Self::mag_y`] from an engineering value (see
+    /// [`Self::mag_y_nt`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_mag_y_nt(&mut self, value: f64) -> Result<()> {
+        info::MAG_Y.set_scaled(&mut self.mag_y, value, None)
+    }
+
+    /// MagZ (nanotesla): Magnetic field along Z.
+    pub fn mag_z_nt(&self) -> f64 {
+        info::MAG_Z.scaled(f64::from(self.mag_z), None)
+    }
+
+    /// Sets [`Self::mag_z`] from an engineering value (see
+    /// [`Self::mag_z_nt`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_mag_z_nt(&mut self, value: f64) -> Result<()> {
+        info::MAG_Z.set_scaled(&mut self.mag_z, value, None)
+    }
+
+    /// Vdd (volts DC): AHRS input voltage.
+    pub fn vdd_v(&self) -> f64 {
+        info::VDD.scaled(f64::from(self.vdd), None)
+    }
+
+    /// Sets [`Self::vdd`] from an engineering value (see
+    /// [`Self::vdd_v`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_vdd_v(&mut self, value: f64) -> Result<()> {
+        info::VDD.set_scaled(&mut self.vdd, value, None)
+    }
+
+    /// Utermo (degrees Celsius): Average temperature of the 3 accelerometers.
+    pub fn utermo_degc(&self) -> f64 {
+        info::UTERMO.scaled(f64::from(self.utermo), None)
+    }
+
+    /// Sets [`Self::utermo`] from an engineering value (see
+    /// [`Self::utermo_degc`]), rounded half away from zero. Error:
+    /// `out_of_range` naming the field.
+    pub fn set_utermo_degc(&mut self, value: f64) -> Result<()> {
+        info::UTERMO.set_scaled(&mut self.utermo, value, None)
+    }
+
     /// USW as a Unit Status Word (flags and mode).
     pub fn usw_decoded(&self) -> StatusWord {
         StatusWord(self.usw)
+    }
+}
+
+impl Table for OrientationSensorsRepr {
+    fn validate(&self) -> Result<()> {
+        OrientationSensorsRepr::validate(self)
+    }
+
+    fn build(&self, buf: &mut [u8]) -> Result<usize> {
+        OrientationSensorsRepr::build(self, buf)
+    }
+
+    fn build_frame(&self, buf: &mut [u8]) -> Result<usize> {
+        OrientationSensorsRepr::build_frame(self, buf)
+    }
+
+    fn value(&self, index: usize) -> Option<Value<'_>> {
+        OrientationSensorsRepr::value(self, index)
+    }
+
+    fn set_value(&mut self, index: usize, value: Value<'_>) -> Result<()> {
+        OrientationSensorsRepr::set_value(self, index, value)
     }
 }

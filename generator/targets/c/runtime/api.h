@@ -232,6 +232,7 @@ void ilahrs_payload_defaults(ilahrs_payload_t payload, void *out);
  * Decode a payload of table `payload` into the struct at `out` (of that table's type).
  * Needs exactly the table's size: fewer bytes is `truncated` at `len`, more is
  * `trailing_data` at the size. No range checks: every byte string of the right size decodes.
+ * A `payload` that is not a table (ILAHRS_PAYLOAD_NONE) is `out_of_range`, with no offset or field.
  */
 bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t len, void *out, ilahrs_error_t *err);
 
@@ -240,7 +241,8 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
  * table order and refuses the first bad one with `out_of_range` at the field's wire offset,
  * naming the field: an integer outside its range, a float that is NaN, infinite or outside
  * its range, a declination that is neither in range nor the compute request. Values are never
- * wrapped, clamped or truncated. `buffer_too_small` if `cap` is less than the table's size.
+ * wrapped, clamped or truncated. `buffer_too_small` if `cap` is less than the table's size;
+ * `out_of_range`, with no offset or field, if `payload` is not a table (ILAHRS_PAYLOAD_NONE).
  * @return the payload size, or 0 on failure
  */
 size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *out, size_t cap, ilahrs_error_t *err);

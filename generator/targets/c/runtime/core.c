@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the tables. ilahrs.c holds it without this include. */
+#include "ilahrs_internal.h"
+
 /* ---- Helpers --------------------------------------------------------------------------- */
 
 /* NOINLINE keeps a small helper called from many places out of line: one call is smaller than
@@ -707,7 +711,7 @@ bool ilahrs_payload_parse(ilahrs_payload_t payload, const uint8_t *data, size_t 
     const ilahrs_field_info_t *f;
     const ilahrs_field_info_t *end;
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT) {
-        return fail(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NULL);
+        return fail(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NULL);
     }
     size = ilahrs_payloads[payload].size;
     if (len < size) {
@@ -737,7 +741,7 @@ size_t ilahrs_payload_build(ilahrs_payload_t payload, const void *in, uint8_t *o
     const ilahrs_field_info_t *f;
     const ilahrs_field_info_t *end;
     if (payload < 0 || payload >= ILAHRS_PAYLOAD_COUNT) {
-        return fail_size(err, ILAHRS_ERR_BAD_LENGTH, ILAHRS_NO_OFFSET, NULL);
+        return fail_size(err, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_NO_OFFSET, NULL);
     }
     size = ilahrs_payloads[payload].size;
     if (out == NULL || cap < size) {

@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the helpers. ilahrs.c holds it without this include. */
+#include "core.c"
+
 /* ---- Date ------------------------------------------------------------------------------ */
 
 /* Month 1..12 of a year (Gregorian). Bit m of 0x15AA is set for the months of 31 days; a year

@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the helpers. ilahrs.c holds it without this include. */
+#include "core.c"
+
 /* ---- Device state machine -------------------------------------------------------------- */
 
 #if ILAHRS_NAMES

@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the helpers and the double codec. ilahrs.c holds it without this include. */
+#include "values.c"
+
 /* ---- $PAHR sentences ------------------------------------------------------------------- */
 
 /* The sentence grammar of NMEA 0183 (spec/README.md): "$", the identifier and "," (PAHR_PREFIX),

@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the $PAHR field reader. ilahrs.c holds it without this include. */
+#include "pahr.c"
+
 /* ---- Stream decoder -------------------------------------------------------------------- */
 
 /*

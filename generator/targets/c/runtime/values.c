@@ -1,3 +1,7 @@
+/* On its own (an editor, `make lint-c`), this file includes what precedes it in ilahrs.c:
+ * the helpers. ilahrs.c holds it without this include. */
+#include "core.c"
+
 /* ---- Engineering values as doubles ------------------------------------------------------ */
 
 /* These take doubles but compute on their IEEE 754 binary64 bits with integers only (no

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from types import ModuleType
 
 from ..errors import IlahrsError
-from ..spec import SPEC_VERSION
+from ..spec import SPEC_VERSION, WIRE_FINGERPRINT
 from .arguments import OneLineParser
 from .common import CliError
 
@@ -34,7 +34,9 @@ def subcommands() -> dict[str, ModuleType]:
 def parser() -> argparse.ArgumentParser:
     """The parser of `ilahrs` with every subcommand's; `args.run` runs the one chosen."""
     top = OneLineParser(prog="ilahrs", description=f"ilahrs {SPEC_VERSION}: Inertial Labs AHRS tools")
-    top.add_argument("--version", action="version", version=f"ilahrs {SPEC_VERSION}")
+    top.add_argument(
+        "--version", action="version", version=f"ilahrs {SPEC_VERSION} (wire fingerprint {WIRE_FINGERPRINT:016x})"
+    )
     commands = top.add_subparsers(dest="command", required=True)
     for module in subcommands().values():
         module.add_parser(commands).set_defaults(run=module.run)

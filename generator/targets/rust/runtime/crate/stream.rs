@@ -362,7 +362,7 @@ impl StreamDecoder {
                 self.end += take;
                 used += take;
                 match self.step(false) {
-                    Step::Accepted(from, size) => {
+                    Step::Accepted(message) => {
                         // Give back the bytes held behind the message when they all came
                         // from this input, so that the next call scans them where they lie.
                         let behind = self.end - self.start;
@@ -370,8 +370,7 @@ impl StreamDecoder {
                             used -= behind;
                             self.start = self.end;
                         }
-                        let bytes = self.buffer.get(from..from + size).unwrap_or(&[]);
-                        return (used, accepted(bytes, self.strict));
+                        return (used, message.event(&self.buffer));
                     }
                     Step::Empty => break,
                     Step::Waiting if used == input.len() => {
@@ -436,10 +435,7 @@ impl StreamDecoder {
     pub fn finish_next(&mut self) -> Option<Event<'_>> {
         self.waiting = Waiting::Any;
         match self.step(true) {
-            Step::Accepted(from, size) => accepted(
-                self.buffer.get(from..from + size).unwrap_or(&[]),
-                self.strict,
-            ),
+            Step::Accepted(message) => message.event(&self.buffer),
             Step::Empty | Step::Waiting => None,
         }
     }
@@ -520,10 +516,14 @@ impl StreamDecoder {
                 continue;
             }
             match decide(held, self.strict) {
-                Decision::Accept(size, _) => {
-                    let from = self.start;
+                Decision::Accept(size, event) => {
+                    let message = Found {
+                        from: self.start,
+                        size,
+                        sentence: event.sentence(),
+                    };
                     self.start += size;
-                    return Step::Accepted(from, size);
+                    return Step::Accepted(message);
                 }
                 Decision::NeedMore if !at_end => return Step::Waiting,
                 Decision::Reject | Decision::NeedMore => {
@@ -585,18 +585,35 @@ impl Waiting {
 
 /// What [`StreamDecoder::step`] found.
 enum Step {
-    /// A message at this range of the buffer.
-    Accepted(usize, usize),
+    /// A message in the buffer, with what its event needs (it is not decided again).
+    Accepted(Found),
     /// Nothing held any more.
     Empty,
     /// A candidate waits for more bytes.
     Waiting,
 }
 
-/// The event of bytes already accepted.
-fn accepted(bytes: &[u8], strict: bool) -> Option<Event<'_>> {
-    match decide(bytes, strict) {
-        Decision::Accept(_, event) => Some(event),
-        Decision::Reject | Decision::NeedMore => None,
+/// A message accepted in the decoder's buffer: where it lies, and the sentence decoded from it
+/// when it is one (a frame's event is its bytes). It does not borrow the buffer, which the
+/// decoder goes on filling while the decision is made.
+#[derive(Debug, Clone, Copy)]
+struct Found {
+    /// Where the message starts in the buffer.
+    from: usize,
+    /// Its size (bytes).
+    size: usize,
+    /// Its decoded value, if it is a sentence.
+    sentence: Option<PahrSentence>,
+}
+
+impl Found {
+    /// The message's event, borrowed from `buffer` (the decoder's, unchanged since the
+    /// decision).
+    fn event(self, buffer: &[u8]) -> Option<Event<'_>> {
+        let bytes = buffer.get(self.from..self.from + self.size)?;
+        Some(match self.sentence {
+            Some(sentence) => Event::Sentence(bytes, sentence),
+            None => Event::Frame(Frame::new_unchecked(bytes)),
+        })
     }
 }

@@ -85,32 +85,74 @@ pub(crate) trait Number: Copy {
     fn write(self, data: &mut [u8], field: Field);
 }
 
-/// `Number` for integer types, in the spec's byte order.
-macro_rules! integers {
-    ($($type:ty),*) => {$(
-        impl Number for $type {
-            fn read(data: &[u8], field: Field) -> $type {
-                let bytes = array(data, field);
-                if crate::BIG_ENDIAN {
-                    <$type>::from_be_bytes(bytes)
-                } else {
-                    <$type>::from_le_bytes(bytes)
-                }
-            }
-
-            fn write(self, data: &mut [u8], field: Field) {
-                let bytes = if crate::BIG_ENDIAN {
-                    self.to_be_bytes()
-                } else {
-                    self.to_le_bytes()
-                };
-                put(data, field, &bytes);
-            }
-        }
-    )*};
+/// `bytes` of a little-endian number in the spec's byte order, or the bytes of a number in the
+/// spec's byte order as little-endian (the same reordering both ways).
+fn spec_order<const N: usize>(mut bytes: [u8; N]) -> [u8; N] {
+    if crate::BIG_ENDIAN {
+        bytes.reverse();
+    }
+    bytes
 }
 
-integers!(u8, i8, u16, i16, u32, i32);
+impl Number for u8 {
+    fn read(data: &[u8], field: Field) -> u8 {
+        u8::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
+
+impl Number for i8 {
+    fn read(data: &[u8], field: Field) -> i8 {
+        i8::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
+
+impl Number for u16 {
+    fn read(data: &[u8], field: Field) -> u16 {
+        u16::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
+
+impl Number for i16 {
+    fn read(data: &[u8], field: Field) -> i16 {
+        i16::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
+
+impl Number for u32 {
+    fn read(data: &[u8], field: Field) -> u32 {
+        u32::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
+
+impl Number for i32 {
+    fn read(data: &[u8], field: Field) -> i32 {
+        i32::from_le_bytes(spec_order(array(data, field)))
+    }
+
+    fn write(self, data: &mut [u8], field: Field) {
+        put(data, field, &spec_order(self.to_le_bytes()));
+    }
+}
 
 impl Number for f32 {
     fn read(data: &[u8], field: Field) -> f32 {

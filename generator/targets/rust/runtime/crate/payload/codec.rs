@@ -1,11 +1,12 @@
 //! What every payload table shares: field descriptions ([`FieldInfo`]), raw values
-//! ([`Value`]), scales, and the `payload_table!` macro that writes a table's view and value type
-//! from its list of fields.
+//! ([`Value`]), scales, and the steps every table's view and value type take the same way
+//! (checking values in table order, framing a payload), which each table file calls.
 
 use core::ops::Range;
 
 use super::{AnyPayload, Encoding, PayloadKind, Unit};
 use crate::error::{Detail, Error, ErrorKind, Float, Result};
+use crate::frame::{FrameRepr, MessageType};
 use crate::variant::{Variant, VariantParameter};
 use crate::wire::{self, Field, Number};
 
@@ -410,22 +411,65 @@ pub(crate) trait Raw: Number {
     fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<Self>;
 }
 
-/// `Raw` for integer types.
-macro_rules! raw_integers {
-    ($($type:ty),*) => {$(
-        impl Raw for $type {
-            fn value(self) -> Value<'static> {
-                Value::Int(i64::from(self))
-            }
+impl Raw for u8 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
 
-            fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<$type> {
-                info.int(value)
-            }
-        }
-    )*};
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<u8> {
+        info.int(value)
+    }
 }
 
-raw_integers!(u8, i8, u16, i16, u32, i32);
+impl Raw for i8 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<i8> {
+        info.int(value)
+    }
+}
+
+impl Raw for u16 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<u16> {
+        info.int(value)
+    }
+}
+
+impl Raw for i16 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<i16> {
+        info.int(value)
+    }
+}
+
+impl Raw for u32 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<u32> {
+        info.int(value)
+    }
+}
+
+impl Raw for i32 {
+    fn value(self) -> Value<'static> {
+        Value::Int(i64::from(self))
+    }
+
+    fn from_value(info: &FieldInfo, value: Value<'_>) -> Result<i32> {
+        info.int(value)
+    }
+}
 
 impl Raw for f32 {
     fn value(self) -> Value<'static> {
@@ -516,309 +560,36 @@ impl AnyPayload {
     }
 }
 
-/// A payload table's view and value type, written from its list of fields: one row per field
-/// drives every parallel surface (the view's getters and setters, the value's fields, and the
-/// conversions between them, the raw values and the bytes), so a table file holds only what
-/// the spec says about its fields.
-///
-/// Expanded inside a table's module, next to its `SIZE`, `field`, `info` and `FIELDS`. Each row
-/// is `INDEX KIND name set_name CONST: TYPE;` with the field's doc comment in front; `KIND` is
-/// `number` (an integer or float32), `text` (Latin-1 padded with NULs) or `reserved` (bytes
-/// kept verbatim). A scaled field's row adds `, in name_unit set_name_unit` after the getters'
-/// doc comment (and `by variant` when the divisor is a parameter of the device variant):
-/// engineering getters on the view and the value, and a setter on the value.
-macro_rules! payload_table {
-    (
-        $(#[$view_doc:meta])*
-        view $View:ident;
-        $(#[$repr_doc:meta])*
-        repr $Repr:ident;
-        count $count:literal;
-        $(
-            $(#[$doc:meta])*
-            $index:literal $kind:ident $name:ident $set:ident $CONST:ident: $type:ty
-            $(, $(#[$unit_doc:meta])* in $unit:ident $set_unit:ident $(by $variant:ident)?)?;
-        )*
-    ) => {
-        $(#[$view_doc])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-        pub struct $View<T: AsRef<[u8]>> {
-            buffer: T,
-        }
-
-        impl<T: AsRef<[u8]>> $View<T> {
-            /// A view over `buffer` without any check.
-            pub const fn new_unchecked(buffer: T) -> $View<T> {
-                $View { buffer }
-            }
-
-            /// A view over `buffer`, which must be exactly [`SIZE`] bytes: `truncated` at its
-            /// length when shorter, `trailing_data` at [`SIZE`] when longer.
-            pub fn new_checked(buffer: T) -> $crate::error::Result<$View<T>> {
-                $crate::payload::check_size(buffer.as_ref().len(), SIZE)?;
-                Ok($View { buffer })
-            }
-
-            /// The buffer.
-            pub fn into_inner(self) -> T {
-                self.buffer
-            }
-
-            /// The payload's bytes.
-            pub fn as_bytes(&self) -> &[u8] {
-                self.buffer.as_ref()
-            }
-
-            $($crate::payload::codec::payload_table!(@get $kind $(#[$doc])* $name $CONST $type);)*
-            $($(
-                $crate::payload::codec::payload_table!(
-                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name()
-                );
-            )?)*
-        }
-
-        impl<T: AsRef<[u8]> + AsMut<[u8]>> $View<T> {
-            $($crate::payload::codec::payload_table!(@set $kind $Repr $name $set $CONST $type);)*
-        }
-
-        $(#[$repr_doc])*
-        pub struct $Repr {
-            $($(#[$doc])* pub $name: $type,)*
-        }
-
-        impl $Repr {
-            /// Decodes exactly [`SIZE`] bytes (`truncated` or `trailing_data` otherwise).
-            /// Decoding does not check ranges.
-            pub fn parse(data: &[u8]) -> $crate::error::Result<$Repr> {
-                let view = $View::new_checked(data)?;
-                Ok($Repr::from_view(&view))
-            }
-
-            /// The value of a view.
-            pub fn from_view<T: AsRef<[u8]>>(view: &$View<T>) -> $Repr {
-                $Repr {
-                    $($name: $crate::payload::codec::payload_table!(@from_view $kind view $name $CONST),)*
-                }
-            }
-
-            /// Checks every field in table order, as a builder does; the first bad one is the
-            /// error: `out_of_range` at the field's offset, naming the field.
-            pub fn validate(&self) -> $crate::error::Result<()> {
-                for (info, value) in FIELDS.iter().zip(self.values()) {
-                    info.check(value)?;
-                }
-                Ok(())
-            }
-
-            #[doc = concat!("The size of the payload [`", stringify!($Repr), "::build`] writes (bytes).")]
-            pub const fn buffer_len(&self) -> usize {
-                SIZE
-            }
-
-            #[doc = concat!("Checks the value ([`", stringify!($Repr), "::validate`]) and writes it into")]
-            /// `buf`; returns its size (bytes), or `buffer_too_small`.
-            pub fn build(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
-                self.validate()?;
-                let available = buf.len();
-                let out = buf
-                    .get_mut(..SIZE)
-                    .ok_or($crate::frame::too_small(available, SIZE))?;
-                self.emit(&mut $View::new_unchecked(out));
-                Ok(SIZE)
-            }
-
-            /// Writes the value into a view without checking it.
-            pub fn emit<T: AsRef<[u8]> + AsMut<[u8]>>(&self, view: &mut $View<T>) {
-                $($crate::payload::codec::payload_table!(@emit $kind self view $name $set $CONST);)*
-            }
-
-            /// Writes a data frame (reserved byte 0) carrying the payload into `buf`; returns its
-            #[doc = concat!("size (bytes). Errors: those of [`", stringify!($Repr), "::build`].")]
-            pub fn build_frame(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
-                let mut payload = [0; SIZE];
-                self.build(&mut payload)?;
-                let frame = $crate::frame::FrameRepr::new($crate::frame::MessageType::Data, &payload);
-                frame.build(buf)
-            }
-
-            /// Every raw value, in table order (text without its trailing NULs).
-            pub fn values(&self) -> [$crate::payload::Value<'_>; $count] {
-                [$($crate::payload::codec::payload_table!(@value $kind self $name),)*]
-            }
-
-            /// The raw value of field `index` (table order), or `None` past the last field.
-            pub fn value(&self, index: usize) -> Option<$crate::payload::Value<'_>> {
-                self.values().get(index).copied()
-            }
-
-            /// Sets field `index` (table order) after checking `value` as a builder does.
-            /// Errors: `out_of_range` naming the field, or with no field for an index past the
-            /// last.
-            pub fn set_value(
-                &mut self,
-                index: usize,
-                value: $crate::payload::Value<'_>,
-            ) -> $crate::error::Result<()> {
-                match index {
-                    $($index => self.$name = $crate::payload::codec::payload_table!(@from_value $kind $type, info::$CONST, value)?,)*
-                    _ => {
-                        let error = $crate::error::Error::new($crate::error::ErrorKind::OutOfRange);
-                        let detail = $crate::error::Detail::Range {
-                            value: i64::try_from(index).unwrap_or(i64::MAX),
-                            min: 0,
-                            max: $count - 1,
-                        };
-                        return Err(error.with_detail(detail));
-                    }
-                }
-                Ok(())
-            }
-            $($(
-                $crate::payload::codec::payload_table!(
-                    @get_unit [$($variant)?] [$(#[$unit_doc])*] $unit $CONST self.$name
-                );
-                $crate::payload::codec::payload_table!(
-                    @set_unit [$($variant)?] $name $unit $set_unit $CONST
-                );
-            )?)*
-        }
-
-        impl $crate::payload::codec::Table for $Repr {
-            fn validate(&self) -> $crate::error::Result<()> {
-                $Repr::validate(self)
-            }
-
-            fn build(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
-                $Repr::build(self, buf)
-            }
-
-            fn build_frame(&self, buf: &mut [u8]) -> $crate::error::Result<usize> {
-                $Repr::build_frame(self, buf)
-            }
-
-            fn value(&self, index: usize) -> Option<$crate::payload::Value<'_>> {
-                $Repr::value(self, index)
-            }
-
-            fn set_value(
-                &mut self,
-                index: usize,
-                value: $crate::payload::Value<'_>,
-            ) -> $crate::error::Result<()> {
-                $Repr::set_value(self, index, value)
-            }
-        }
-    };
-
-    (@get number $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
-        $(#[$doc])*
-        pub fn $name(&self) -> $type {
-            $crate::wire::get(self.buffer.as_ref(), field::$CONST)
-        }
-    };
-    (@get text $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
-        $(#[$doc])*
-        ///
-        /// The bytes up to the trailing NULs (Latin-1).
-        pub fn $name(&self) -> &[u8] {
-            let bytes = $crate::wire::bytes(self.buffer.as_ref(), field::$CONST);
-            $crate::wire::trim_nul(bytes)
-        }
-    };
-    (@get reserved $(#[$doc:meta])* $name:ident $CONST:ident $type:ty) => {
-        $(#[$doc])*
-        pub fn $name(&self) -> &[u8] {
-            $crate::wire::bytes(self.buffer.as_ref(), field::$CONST)
-        }
-    };
-
-    (@get_unit [] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
-        $(#[$doc])*
-        pub fn $unit(&$self) -> f64 {
-            info::$CONST.scaled(f64::from($self.$($raw)+), None)
-        }
-    };
-    (@get_unit [$variant:ident] [$(#[$doc:meta])*] $unit:ident $CONST:ident $self:ident . $($raw:tt)+) => {
-        $(#[$doc])*
-        pub fn $unit(&$self, $variant: $crate::variant::Variant) -> f64 {
-            info::$CONST.scaled(f64::from($self.$($raw)+), Some($variant))
-        }
-    };
-
-    (@set_unit [] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
-        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
-        #[doc = concat!("[`Self::", stringify!($unit), "`]), rounded half away from zero. Error:")]
-        /// `out_of_range` naming the field.
-        pub fn $set_unit(&mut self, value: f64) -> $crate::error::Result<()> {
-            info::$CONST.set_scaled(&mut self.$name, value, None)
-        }
-    };
-    (@set_unit [$variant:ident] $name:ident $unit:ident $set_unit:ident $CONST:ident) => {
-        #[doc = concat!("Sets [`Self::", stringify!($name), "`] from an engineering value (see")]
-        #[doc = concat!("[`Self::", stringify!($unit), "`]) for the device `variant`, rounded half")]
-        /// away from zero. Error: `out_of_range` naming the field.
-        pub fn $set_unit(
-            &mut self,
-            $variant: $crate::variant::Variant,
-            value: f64,
-        ) -> $crate::error::Result<()> {
-            info::$CONST.set_scaled(&mut self.$name, value, Some($variant))
-        }
-    };
-
-    (@set number $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
-        #[doc = concat!("Sets [`Self::", stringify!($name), "`] (raw, unchecked: [`")]
-        #[doc = concat!(stringify!($Repr), "::build`] checks ranges).")]
-        pub fn $set(&mut self, value: $type) {
-            $crate::wire::set(self.buffer.as_mut(), field::$CONST, value);
-        }
-    };
-    (@set text $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
-        #[doc = concat!("Sets [`Self::", stringify!($name), "`]: `value` padded with NULs. Error:")]
-        /// `out_of_range` when longer than the field.
-        pub fn $set(&mut self, value: &[u8]) -> $crate::error::Result<()> {
-            info::$CONST.check($crate::payload::Value::Bytes(value))?;
-            $crate::wire::set_padded(self.buffer.as_mut(), field::$CONST, value);
-            Ok(())
-        }
-    };
-    (@set reserved $Repr:ident $name:ident $set:ident $CONST:ident $type:ty) => {
-        #[doc = concat!("Sets [`Self::", stringify!($name), "`] (bytes kept verbatim).")]
-        pub fn $set(&mut self, value: &$type) {
-            $crate::wire::put(self.buffer.as_mut(), field::$CONST, value);
-        }
-    };
-
-    (@from_view number $view:ident $name:ident $CONST:ident) => {
-        $view.$name()
-    };
-    (@from_view $kind:ident $view:ident $name:ident $CONST:ident) => {
-        $crate::wire::array($view.as_bytes(), field::$CONST)
-    };
-
-    (@emit number $self:ident $view:ident $name:ident $set:ident $CONST:ident) => {
-        $view.$set($self.$name)
-    };
-    (@emit $kind:ident $self:ident $view:ident $name:ident $set:ident $CONST:ident) => {
-        $crate::wire::put($view.buffer.as_mut(), field::$CONST, &$self.$name)
-    };
-
-    (@value number $self:ident $name:ident) => {
-        $crate::payload::codec::Raw::value($self.$name)
-    };
-    (@value text $self:ident $name:ident) => {
-        $crate::payload::Value::Bytes($crate::wire::trim_nul(&$self.$name))
-    };
-    (@value reserved $self:ident $name:ident) => {
-        $crate::payload::Value::Bytes(&$self.$name)
-    };
-
-    (@from_value number $type:ty, $info:path, $value:ident) => {
-        <$type as $crate::payload::codec::Raw>::from_value(&$info, $value)
-    };
-    (@from_value $kind:ident $type:ty, $info:path, $value:ident) => {
-        $info.array($value)
-    };
+/// Checks `values` against `fields`, in table order, as a builder does: the first bad one is
+/// the error (see [`FieldInfo::check`]).
+pub(crate) fn validate(fields: &[FieldInfo], values: &[Value<'_>]) -> Result<()> {
+    for (info, value) in fields.iter().zip(values) {
+        info.check(*value)?;
+    }
+    Ok(())
 }
 
-pub(crate) use payload_table;
+/// The first `size` bytes of `buf`, where a builder writes a payload of `size` bytes, or
+/// `buffer_too_small`.
+pub(crate) fn payload_buffer(buf: &mut [u8], size: usize) -> Result<&mut [u8]> {
+    let available = buf.len();
+    buf.get_mut(..size)
+        .ok_or(crate::frame::too_small(available, size))
+}
+
+/// Writes a data frame (reserved byte 0) carrying `payload` into `buf`; returns its size
+/// (bytes).
+pub(crate) fn data_frame(payload: &[u8], buf: &mut [u8]) -> Result<usize> {
+    FrameRepr::new(MessageType::Data, payload).build(buf)
+}
+
+/// The error of a table's `set_value` for `index`, past the last of its `count` fields:
+/// `out_of_range`, with no field, the detail the index and the valid ones.
+pub(crate) fn no_field(index: usize, count: usize) -> Error {
+    let detail = Detail::Range {
+        value: i64::try_from(index).unwrap_or(i64::MAX),
+        min: 0,
+        max: i64::try_from(count).unwrap_or(i64::MAX).saturating_sub(1),
+    };
+    Error::new(ErrorKind::OutOfRange).with_detail(detail)
+}
