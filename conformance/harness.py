@@ -8,7 +8,7 @@
     python3 conformance/harness.py --suite nmea -k bad-checksum  # a subset, for debugging
     python3 conformance/harness.py --junit report.xml            # JUnit XML for a CI dashboard
 
-The harness is the Python package's (`ilahrs.conformance`, generated/python/ilahrs/conformance.py;
+The harness is the Python package's (`ilahrs.conformance`, generated/python/ilahrs/conformance/;
 `ilahrs conformance` once the package is installed); this wrapper runs it with the repository's
 defaults: the suites of conformance/vectors, the registrations of conformance/bindings, runner
 commands run from the repository root. Standard library only, Python 3.10 or later.

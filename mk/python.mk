@@ -18,7 +18,8 @@ PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
 
 # The runtime modules of the package (generator/targets/python/runtime) are ruff-checked and
 # format-checked where they are written; mypy checks them as the package's modules, in
-# generated/python, where the generated tables they import sit beside them.
+# generated/python, where the generated tables they import sit beside them. lint-imports holds the
+# package's layers (.importlinter): nothing imports from a layer above its own.
 PY_RUNTIME := generator/targets/python/runtime
 
 lint-python: setup
@@ -27,6 +28,7 @@ lint-python: setup
 	$(VENV)/bin/mypy --exclude '^$(PY_RUNTIME)/' --exclude '(^|/)build/' --exclude '^\.venv/' $(PY_LINT_PATHS)
 	$(VENV)/bin/mypy --python-version 3.10 --cache-dir $(BUILD)/mypy-py310 -p ilahrs
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
+	$(VENV)/bin/lint-imports --config .importlinter
 
 # tests/cli/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
 # are installed from Debian's packages when missing.

@@ -1,7 +1,7 @@
 """How often damage passes the ICD's checksum, with and without strict decoding (E42).
 
 The device model (`ilahrs.Device`) streams one output format; its frames go through the
-simulator's fault injection (`ilahrs.simulate.Line` with `Faults`: each byte replaced by another
+simulator's fault injection (`ilahrs.edge.simulate.Line` with `Faults`: each byte replaced by another
 value with probability `--corrupt-rate`), and two stream decoders read what was written, one
 lenient (the default, E6) and one strict. A frame a decoder delivers that is not a frame the
 device sent, at that place in the stream, is damage delivered as valid: the 16-bit sum cannot see
@@ -26,7 +26,7 @@ from dataclasses import asdict, dataclass, field
 from itertools import cycle, islice
 
 import ilahrs
-from ilahrs.simulate import Faults, Line
+from ilahrs.edge.simulate import Faults, Line
 
 _BATCH = 2000
 """Frames written between two looks at the decoders."""

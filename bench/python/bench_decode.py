@@ -261,8 +261,7 @@ def two_way_capture(count: int) -> bytes:
 
 def two_way_section(count: int) -> None:
     """`ilahrs decode CAPTURE.pcapng --to csv` (output as columns) against message by message."""
-    import ilahrs.cli_capture as capture
-    import ilahrs.cli_decode as decode
+    from ilahrs.cli import capture, decode
 
     data = two_way_capture(count)
     path = Path(subprocess.check_output(["mktemp", "--suffix=.pcapng"], text=True).strip())

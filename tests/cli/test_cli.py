@@ -22,8 +22,8 @@ import simulators
 from simulators import ILAHRS, Simulator, ilahrs
 
 from ilahrs import Frame, build_command
-from ilahrs.cli_common import field_columns
-from ilahrs.cli_decode import BASE_COLUMNS
+from ilahrs.cli.common import field_columns
+from ilahrs.cli.decode import BASE_COLUMNS
 from ilahrs.pcapng import Direction, read
 
 pytest.importorskip("serial")

@@ -35,12 +35,12 @@ from pty_device import PtyDevice
 
 from ilahrs import build_command
 from ilahrs.__main__ import main
-from ilahrs.cli_device import CALIBRATIONS
+from ilahrs.cli.device import CALIBRATIONS
 from ilahrs.commands import COMMANDS
-from ilahrs.device import default_parameters
+from ilahrs.edge.serial import AhrsClient
 from ilahrs.payloads import PAYLOADS, Payload
 from ilahrs.pcapng import Direction, read
-from ilahrs.serial import AhrsClient
+from ilahrs.session.device import default_parameters
 from ilahrs.statemachine import (
     ACK,
     INITIAL,
@@ -326,7 +326,7 @@ def test_params(results: dict[Case, Result], state: str) -> None:
 @pytest.mark.parametrize(("state", "start"), [(s, c) for s in STATES for c in ("-", *STARTS)])
 def test_record(results: dict[Case, Result], state: str, start: str) -> None:
     """A capture with the device's answers in it, or one line. (The summary line goes to the
-    sys.stderr of when ilahrs.cli_device was imported, so the capture is checked instead.)"""
+    sys.stderr of when ilahrs.cli.device was imported, so the capture is checked instead.)"""
     result = results[("record", state, start)]
     _one_clear_outcome(result)
     if result.status == 0:

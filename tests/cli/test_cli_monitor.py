@@ -19,12 +19,12 @@ import pytest
 from simulators import ILAHRS
 from test_cli import simulator
 
-from ilahrs import cli_monitor
-from ilahrs.cli_common import variant_named
+from ilahrs.cli import monitor as cli_monitor
+from ilahrs.cli.common import variant_named
 from ilahrs.commands import COMMANDS
-from ilahrs.host import HostEvent, Output
 from ilahrs.nmea import NMEA_MAX_RATE_HZ
 from ilahrs.payloads import PAYLOADS
+from ilahrs.session.host import HostEvent, Output
 from ilahrs.statemachine import OUTPUT_FORMATS
 
 _ON_REQUEST = [n for n, i in COMMANDS.items() if i.starts_mode is not None and i.starts_mode != "continuous"]

@@ -2,7 +2,7 @@
 pseudo-terminal driven into each state first: the answer of every command in every state that
 answers it, the device's state never assumed; parameters compared and printed as the table
 encodes them (float32, the date encoding); parameter blocks never silently defaulted; failed
-calibrations, --baud, a closed pipe and --help. The sans-I/O part (`ilahrs.anystate`) against
+calibrations, --baud, a closed pipe and --help. The sans-I/O part (`ilahrs.session.anystate`) against
 the device model."""
 
 from __future__ import annotations
@@ -21,15 +21,15 @@ from simulators import ILAHRS, Simulator, ilahrs
 from test_cli import decoded, simulator
 
 import ilahrs as package
-from ilahrs import anystate
-from ilahrs.anystate import AnyStateRequest, Reply
-from ilahrs.cli_decode import kinds
+from ilahrs.cli.decode import kinds
 from ilahrs.codec import date_from_text, field_text, float32_text
+from ilahrs.edge.serial import AhrsClient
 from ilahrs.errors import IlahrsError
-from ilahrs.host import Acknowledged, DataBlock, Output
 from ilahrs.payloads import PAYLOADS
 from ilahrs.roles import LOAD_PARAMETERS
-from ilahrs.serial import AhrsClient
+from ilahrs.session import anystate
+from ilahrs.session.anystate import AnyStateRequest, Reply
+from ilahrs.session.host import Acknowledged, DataBlock, Output
 from ilahrs.statemachine import TIMER_FIELDS
 
 pytest.importorskip("serial")
@@ -354,8 +354,8 @@ def test_every_subcommand_shows_a_value_the_same_way() -> None:
     """One rule for each kind of value, whichever subcommand prints it: a clear status word reads
     OK (never an empty cell), a date its calendar date, in `send`/`params`/`monitor` rows as in
     `decode` rows."""
-    from ilahrs.cli_common import USW_CLEAR, fields_of, variant_named
-    from ilahrs.cli_decode import row_fields
+    from ilahrs.cli.common import USW_CLEAR, fields_of, variant_named
+    from ilahrs.cli.decode import row_fields
 
     variant = variant_named(None)
     bit = package.BitResult(usw=0)

@@ -15,9 +15,9 @@ import pytest
 from test_decode_captures import ANSWER_US, Line, flipped, on_request
 
 import ilahrs
-from ilahrs import cli_decode
-from ilahrs.cli_capture import open_source
-from ilahrs.cli_decode import CaptureDecoder, ColumnarCapture, RowWriter, kinds, summary
+from ilahrs.cli import decode as cli_decode
+from ilahrs.cli.capture import open_source
+from ilahrs.cli.decode import CaptureDecoder, ColumnarCapture, RowWriter, kinds, summary
 from ilahrs.statemachine import DEFAULT_ALIGNMENT_TIME_S
 
 pytest.importorskip("numpy")

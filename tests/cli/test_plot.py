@@ -15,7 +15,7 @@ from typing import Any
 import pytest
 
 from ilahrs import Frame, FullOutput, InitialAlignment, MessageType, ack_for, build_command
-from ilahrs.cli_common import variant_named
+from ilahrs.cli.common import variant_named
 from ilahrs.pcapng import Direction, PcapngWriter
 
 pyplot = pytest.importorskip("matplotlib.pyplot")
@@ -80,7 +80,7 @@ def capture(tmp_path: Path) -> Path:
 
 def drawn(capture: Path, png: Path, fields: str, monkeypatch: pytest.MonkeyPatch) -> Any:
     """Run `ilahrs plot` in this process and keep the Figure it drew (it closes it otherwise)."""
-    from ilahrs.cli_plot import plot
+    from ilahrs.cli.plot import plot
 
     pyplot.close("all")
     monkeypatch.setattr(pyplot, "close", lambda *args: None)

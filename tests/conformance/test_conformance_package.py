@@ -24,7 +24,7 @@ from typing import Any
 import pytest
 from junitparser import Failure, JUnitXml, Skipped
 
-from ilahrs.serial import AhrsClient
+from ilahrs.edge.serial import AhrsClient
 
 pytest.importorskip("serial")
 

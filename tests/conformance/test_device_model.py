@@ -19,13 +19,13 @@ import ilahrs
 from generator import build_spec
 from generator.model import TIMER_EVENTS
 from generator.targets.python import tables as behaviour
-from ilahrs import device as device_module
-from ilahrs import host as host_module
-from ilahrs import motion
 from ilahrs import statemachine as sm
-from ilahrs.device import Device
 from ilahrs.encodings import CALIBRATION_FAILED, CALIBRATION_NO_ESTIMATE
-from ilahrs.host import Acknowledged, DataBlock, Output
+from ilahrs.session import device as device_module
+from ilahrs.session import host as host_module
+from ilahrs.session import motion
+from ilahrs.session.device import Device
+from ilahrs.session.host import Acknowledged, DataBlock, Output
 
 SPEC = build_spec()
 MODEL = SPEC.state_machine

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from simulators import ILAHRS, ilahrs, simulator
 
-from ilahrs.serial import AhrsClient
+from ilahrs.edge.serial import AhrsClient
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")

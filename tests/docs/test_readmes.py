@@ -332,7 +332,7 @@ INDEX_INSTALL = re.compile(r"""pip install +["']?ilahrs\b|["'`]ilahrs\[""")
 def test_no_text_installs_ilahrs_from_an_index() -> None:
     """The package is on no index: READMEs and messages install it from the checkout or a wheel."""
     texts = [ROOT / readme for readme in READMES]
-    texts += sorted((ROOT / "generator" / "targets" / "python" / "runtime").iterdir())
+    texts += sorted(p for p in (ROOT / "generator" / "targets" / "python" / "runtime").rglob("*") if p.is_file())
     texts += [ROOT / "generator" / "targets" / "python" / "templates" / "README.md.j2"]
     found = [
         f"{path.relative_to(ROOT)}:{number}: {line.strip()}"

@@ -14,8 +14,8 @@ import pytest
 from simulators import Simulator, simulator
 
 import ilahrs
-from ilahrs.host import Acknowledged, DataBlock, Output
-from ilahrs.serial import LINE, AhrsClient, ClientError
+from ilahrs.edge.serial import LINE, AhrsClient, ClientError
+from ilahrs.session.host import Acknowledged, DataBlock, Output
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")

@@ -18,8 +18,8 @@ import pytest
 from simulators import simulator
 
 import ilahrs
-from ilahrs.host import Output
-from ilahrs.serial import AhrsClient
+from ilahrs.edge.serial import AhrsClient
+from ilahrs.session.host import Output
 
 pytest.importorskip("serial")
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="ptys are POSIX")

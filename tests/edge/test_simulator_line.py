@@ -10,9 +10,9 @@ import pytest
 from device_support import quick_parameters
 
 import ilahrs
-from ilahrs.device import Device
-from ilahrs.host import Discarded, Host, ProtocolError
-from ilahrs.simulate import Faults, Line, loopback_address
+from ilahrs.edge.simulate import Faults, Line, loopback_address
+from ilahrs.session.device import Device
+from ilahrs.session.host import Discarded, Host, ProtocolError
 
 
 def run_line(faults: Faults, seconds: float = 5.0) -> tuple[Line, list[dict[str, object]], bytes]:

@@ -17,8 +17,8 @@ import pytest
 
 import ilahrs
 from ilahrs import columnar
-from ilahrs.cli_capture import Chunk
-from ilahrs.cli_decode import BASE_COLUMNS, CaptureDecoder, ColumnarCsv, RowWriter, decode_columns, kinds, summary
+from ilahrs.cli.capture import Chunk
+from ilahrs.cli.decode import BASE_COLUMNS, CaptureDecoder, ColumnarCsv, RowWriter, decode_columns, kinds, summary
 from ilahrs.pcapng import Direction, PcapngWriter
 
 SEED = 20140311

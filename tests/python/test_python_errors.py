@@ -15,11 +15,11 @@ import pytest
 import ilahrs
 from ilahrs import statemachine
 from ilahrs.codec import PayloadBase
-from ilahrs.device import Device, default_parameters
 from ilahrs.encodings import date_is_valid, declination_is_valid
-from ilahrs.host import Host
 from ilahrs.machine import firmware_version
 from ilahrs.sentence import nmea_checksum, scaled
+from ilahrs.session.device import Device, default_parameters
+from ilahrs.session.host import Host
 
 HUGE_TEXT = "x" * 1_000_000
 HUGE_BYTES = b"\xaa" * 1_000_000

@@ -14,8 +14,8 @@ from generator import ROOT
 
 CHECK = """
 import ilahrs
-from ilahrs.device import Device
-from ilahrs.host import DataBlock, Host
+from ilahrs.session.device import Device
+from ilahrs.session.host import DataBlock, Host
 
 assert ilahrs.__file__.startswith(OUT), ilahrs.__file__
 info = ilahrs.COMMANDS["GetTemp"]

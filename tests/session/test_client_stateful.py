@@ -4,7 +4,7 @@ command of Table C.1 from whatever state the device is in, after pauses around t
 and the port closed and reopened in between.
 
 The device is `ilahrs.Device` behind a real pseudo-terminal, served by a thread the way
-`ilahrs simulate` serves it (`ilahrs.simulate.Line`, the line configured by `_configure_pty`, the
+`ilahrs simulate` serves it (`ilahrs.edge.simulate.Line`, the line configured by `_configure_pty`, the
 device's clock advanced with the wall clock), so pauses are real pauses. After every step:
 
 - every message the device wrote to the line reaches the client, in order: none lost, none invented
@@ -43,9 +43,9 @@ from pty_device import DRAIN, SHORT_TIMER, TICK, PtyDevice
 
 from ilahrs import IDLE_TIMEOUT, IlahrsError
 from ilahrs.commands import COMMANDS
+from ilahrs.edge.serial import AhrsClient
 from ilahrs.encodings import DECLINATION_COMPUTE, DECLINATION_MAX, DECLINATION_MIN
 from ilahrs.payloads import PAYLOADS, Payload
-from ilahrs.serial import AhrsClient
 from ilahrs.statemachine import (
     DEFAULT_UPDATE_RATE_HZ,
     STATES,

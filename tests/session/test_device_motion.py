@@ -6,8 +6,8 @@ from __future__ import annotations
 import statistics
 
 import ilahrs
-from ilahrs.device import Device, default_parameters
 from ilahrs.roles import ParameterBlock
+from ilahrs.session.device import Device, default_parameters
 
 SESSIONS = 300
 

@@ -9,7 +9,7 @@ import pytest
 from device_support import Pair
 
 import ilahrs
-from ilahrs.host import Acknowledged, DataBlock, Discarded, Host, Output, ProtocolError
+from ilahrs.session.host import Acknowledged, DataBlock, Discarded, Host, Output, ProtocolError
 
 SEED = 20140311
 

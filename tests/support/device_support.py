@@ -10,8 +10,8 @@ from collections.abc import Iterable
 
 import ilahrs
 from ilahrs import statemachine as sm
-from ilahrs.device import Device, default_parameters
-from ilahrs.host import Host, HostEvent
+from ilahrs.session.device import Device, default_parameters
+from ilahrs.session.host import Host, HostEvent
 from ilahrs.stream import StreamDecoder, StreamEvent
 
 

@@ -1,5 +1,5 @@
 """`ilahrs.Device` behind a real pseudo-terminal, served by a thread the way `ilahrs simulate` serves
-it (`ilahrs.simulate.Line`, the line configured by `_configure_pty`, the device's clock advanced with
+it (`ilahrs.edge.simulate.Line`, the line configured by `_configure_pty`, the device's clock advanced with
 the wall clock): the peer of the stateful client test and of the command-line matrix."""
 
 from __future__ import annotations
@@ -12,9 +12,9 @@ import termios
 import threading
 import time
 
-from ilahrs.device import Device, default_parameters
+from ilahrs.edge.simulate import Line, _configure_pty
 from ilahrs.roles import ParameterBlock
-from ilahrs.simulate import Line, _configure_pty
+from ilahrs.session.device import Device, default_parameters
 from ilahrs.statemachine import STATES, TIMER_FIELDS, TIMER_IS_RATE
 
 DRAIN = 5.0

@@ -16,8 +16,8 @@ from typing import Any
 
 import ilahrs
 from ilahrs import statemachine
-from ilahrs.host import Acknowledged, DataBlock, Discarded, Output, ProtocolError
 from ilahrs.pcapng import Capture, Direction
+from ilahrs.session.host import Acknowledged, DataBlock, Discarded, Output, ProtocolError
 
 PROTO = "ilahrs"
 ACK_TABLE = "acknowledgement"

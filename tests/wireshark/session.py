@@ -24,9 +24,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import ilahrs
-from ilahrs.device import Device
-from ilahrs.host import Acknowledged, DataBlock, HostEvent, Output
 from ilahrs.pcapng import Direction, PcapngWriter
+from ilahrs.session.device import Device
+from ilahrs.session.host import Acknowledged, DataBlock, HostEvent, Output
 
 EPOCH_US = 1_700_000_000_000_000
 """The capture's first timestamp (microseconds since 1970)."""

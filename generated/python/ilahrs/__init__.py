@@ -31,7 +31,6 @@ from .commands import (
     command_names,
     decode_command,
 )
-from .device import Device
 from .encodings import (
     DECLINATION_COMPUTE,
     VARIANTS,
@@ -46,7 +45,6 @@ from .encodings import (
 )
 from .errors import ErrorKind, IlahrsError
 from .frame import MAX_FRAME_SIZE, Frame, MessageType, checksum
-from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import PahrSentence
 from .payloads import (
     PAYLOADS,
@@ -67,6 +65,8 @@ from .payloads import (
     Payload,
     Quaternion,
 )
+from .session.device import Device
+from .session.host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .spec import SPEC_SHA256, SPEC_VERSION, WIRE_FINGERPRINT
 from .status import UnitStatusWord, UswFlag, UswMode
 from .stream import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE, StreamDecoder, StreamEvent

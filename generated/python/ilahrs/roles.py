@@ -1,7 +1,7 @@
 # Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The part each command plays in the flows of the serial client (`ilahrs.serial`) and the device
-model (`ilahrs.device`), found from the spec's structure by the generator, not by name: what a
+model (`ilahrs.session.device`), found from the spec's structure by the generator, not by name: what a
 command answers in the initial state, the block it takes and where that leads, the effects of its
 transitions, the timers (generator/targets/python/roles.py)."""
 

@@ -4,8 +4,8 @@
 
 Events are the commands of Table C.1 by ICD name (a code shared by several names is the name valid
 in the current mode: `command_event`, E14) and the events in EVENTS. A (state, event) pair with no
-entry is ignored: no answer, no change of state (E33). The device model (`ilahrs.device`) and the
-host session (`ilahrs.host`) both interpret this table (through `ilahrs.machine`); neither holds a
+entry is ignored: no answer, no change of state (E33). The device model (`ilahrs.session.device`) and the
+host session (`ilahrs.session.host`) both interpret this table (through `ilahrs.machine`); neither holds a
 transition of its own.
 
 What a transition sends: ACK (the acknowledgement of the message received), OUTPUT (one block of

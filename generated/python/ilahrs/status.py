@@ -11,7 +11,15 @@ from typing import Final
 from .compat import StrEnum
 from .errors import ErrorKind, IlahrsError, brief
 
-__all__ = ["USW_FAILURE_FLAGS", "USW_MODE_MASK", "USW_WARNING_FLAGS", "UnitStatusWord", "UswFlag", "UswMode"]
+__all__ = [
+    "USW_FAILURE_FLAGS",
+    "USW_MODES",
+    "USW_MODE_MASK",
+    "USW_WARNING_FLAGS",
+    "UnitStatusWord",
+    "UswFlag",
+    "UswMode",
+]
 
 
 class UswFlag(IntFlag):
@@ -64,10 +72,11 @@ USW_FAILURE_FLAGS: Final = UswFlag(0x007F)
 USW_WARNING_FLAGS: Final = UswFlag(0x7F00)
 """The flags of the warning (high) byte."""
 USW_MODE_MASK: Final = 0x8080
-_MODES: Final = {
+USW_MODES: Final = {
     0x0000: UswMode.READINESS,
     0x8080: UswMode.SLEEP,
 }
+"""The mode bits of the USW (under USW_MODE_MASK) -> the mode they name."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -98,7 +107,7 @@ class UnitStatusWord:
     @property
     def mode(self) -> UswMode:
         """The mode from bits 7 and 15."""
-        return _MODES.get(self.raw & USW_MODE_MASK, UswMode.UNKNOWN)
+        return USW_MODES.get(self.raw & USW_MODE_MASK, UswMode.UNKNOWN)
 
     @property
     def ok(self) -> bool:

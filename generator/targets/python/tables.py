@@ -11,7 +11,8 @@ from typing import Any
 
 from generator.model import ANSWER_ACK, ANSWER_OUTPUT, OUTPUT_MODE_PREFIX, TIMER_EVENTS, Field, Spec, Transition
 
-from .runtime import diagram, synthetic
+from .runtime import diagram
+from .runtime.session import synthetic
 
 
 def _machine(spec: Spec) -> Any:
@@ -102,7 +103,7 @@ def mermaid(spec: Spec) -> str:
 
 
 def quantity(field: Field) -> tuple[str, ...]:
-    """The synthetic quantities the virtual device puts in a model field (`ilahrs.synthetic`)."""
+    """The synthetic quantities the virtual device puts in a model field (`ilahrs.session.synthetic`)."""
     unit = field.unit.key if field.unit is not None else None
     return synthetic.quantity(field.name, unit, field.type.name, field.encoding, field.multiplexed_count or 0)
 

@@ -25,37 +25,28 @@ FILTERS = {**CODEC_FILTERS, **TABLE_FILTERS}
 GLOBALS = {**TABLE_GLOBALS, "roles": roles, "encoding_properties": ENCODING_PROPERTIES}
 
 PACKAGE = "python/ilahrs"
-# Generated modules: the spec's facts, from the bottom of the import graph up.
+RUNTIME = Path(__file__).resolve().parent / "runtime"
+"""The hand-written modules, copied as a tree: the folders are the package's layers, from the bottom
+of the import graph up (the contract of the repository's .importlinter holds them to it):
+
+- the top level: the generated tables (TABLES, BEHAVIOUR_TABLES) and the codec: what Python 3.10
+  lacks (compat), errors, frames, value encodings, payloads, sentences, commands, the stream
+  decoder, bulk and columnar decoding, the pcapng format;
+- session/: the protocol's behaviour, sans-I/O: the device model and the host session;
+- edge/: the I/O edges: the virtual device on a pty or loopback socket (and its test-only
+  misbehaviours), the serial client;
+- cli/: the `ilahrs` command, one module per subcommand; conformance/: the conformance suite, its
+  runners and the live run against a device."""
 TABLES = ("spec", "encodings", "status", "payloads", "commands", "nmea")
-# Runtime modules: what Python 3.10 lacks (compat), the codec (errors, frame, value encodings,
-# payloads, sentences, commands) and the stream decoder.
-CODEC = ("compat", "errors", "frame", "valuecodec", "codec", "sentence", "commandset", "stream", "bulk", "columnar")
-# The protocol's behaviour: the state-machine table and the roles of the commands (generated), the
-# device model and the host session (sans-I/O), then the edge: the virtual device on a pty or loopback
-# socket, the serial client, the command line.
+"""Generated modules: the spec's facts, from the bottom of the import graph up."""
 BEHAVIOUR_TABLES = ("statemachine", "roles")
-BEHAVIOUR = (
-    "diagram",
-    "machine",
-    "synthetic",
-    "motion",
-    "device",
-    "host",
-    "anystate",
-    "simulate",
-    "serial",
-    "__main__",
-)
-# The subcommands of the `ilahrs` command besides simulate and diagram (record, decode, send, params,
-# monitor, calibrate, plot).
-CLI = ("cli_common", "cli_capture", "cli_decode", "cli_device", "cli_monitor", "cli_plot", "cli")
-# What a spec must have for the package to be generated.
-# The conformance suite: the harness and its suites (package data, copied byte for byte from the
-# repository's conformance/vectors); with the state machine, the live run against a device and the
-# virtual device's test-only misbehaviours.
-CONFORMANCE = ("conformance",)
-LIVE = ("live", "misbehave")
+"""Generated with a state machine: its table and the roles of the commands."""
+BEHAVIOUR = ("session", "edge", "cli", "conformance/live.py", "__main__.py")
+"""Runtime folders and files that need the state machine (left out of a spec without one)."""
+ALIASES = {"serial": "edge.serial", "simulate": "edge.simulate", "anystate": "session.anystate", "cli_plot": "cli.plot"}
+"""Module paths the documentation named before the layers, kept as aliases of the modules' new places."""
 VECTORS = Path(__file__).resolve().parents[3] / "conformance" / "vectors"
+# What a spec must have for the package to be generated.
 REQUIRED = ("serial_line", "status_word", "nmea", "date", "declination", "calibration_success", "ack_payload")
 
 LINE_LENGTH = 120
@@ -71,22 +62,33 @@ def outputs(spec: Spec) -> list[Output | Runtime]:
     if missing:
         raise ValueError(f"the Python target needs the spec's {', '.join(missing)}")
     files: list[Output | Runtime] = [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in TABLES]
-    files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CODEC]
     if spec.state_machine is not None:
         files += [Output(f"{PACKAGE}/{name}.py", f"{name}.py.j2") for name in BEHAVIOUR_TABLES]
-        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in BEHAVIOUR]
-        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CLI]
-        files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in LIVE]
-    files += [Runtime(f"{PACKAGE}/{name}.py", f"{name}.py") for name in CONFORMANCE]
+        files += [Output(f"{PACKAGE}/{name}.py", "alias.py.j2", {"module": to}) for name, to in ALIASES.items()]
+    files += [Runtime(f"{PACKAGE}/{source}", source) for source in runtime_sources(spec)]
     files += [vectors_output(path) for path in sorted(VECTORS.glob("*.json"))]
     files += [
         Output(f"{PACKAGE}/__init__.py", "__init__.py.j2"),
         Output(f"{PACKAGE}/py.typed", "py.typed.j2"),
-        Runtime(f"{PACKAGE}/pcapng.py", "pcapng.py"),
-        Output("python/pyproject.toml", "pyproject.toml.j2"),
+        Output("python/pyproject.toml", "pyproject.toml.j2", {"packages": packages(spec)}),
         Output("python/README.md", "README.md.j2"),
     ]
     return files
+
+
+def runtime_sources(spec: Spec) -> list[str]:
+    """The Python files of runtime/ as paths relative to it, sorted; without a state machine, those
+    of BEHAVIOUR left out."""
+    sources = sorted(path.relative_to(RUNTIME).as_posix() for path in RUNTIME.rglob("*.py"))
+    if spec.state_machine is None:
+        sources = [s for s in sources if not any(s == b or s.startswith(f"{b}/") for b in BEHAVIOUR)]
+    return sources
+
+
+def packages(spec: Spec) -> list[str]:
+    """The package and its subpackages (pyproject.toml's `packages`)."""
+    folders = {source.rpartition("/")[0] for source in runtime_sources(spec)}
+    return ["ilahrs", *(f"ilahrs.{folder.replace('/', '.')}" for folder in sorted(folders - {""}))]
 
 
 def vectors_output(path: Path) -> Output:

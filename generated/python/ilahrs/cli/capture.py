@@ -1,0 +1,159 @@
+# Copied from generator/targets/python/runtime/cli/capture.py for spec/ilahrs.yaml,
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# Do not edit: change the runtime source and run `make generate`.
+"""Reading a capture for `ilahrs decode` and `ilahrs plot`: a pcapng file (`ilahrs.pcapng`, both
+directions with timestamps) or a raw byte dump (what a terminal program saves: device-to-host
+bytes, no timestamps), from a file or standard input, read in chunks so a large file needs little
+memory and a growing one can be followed.
+
+A file that starts with a pcapng Section Header Block is pcapng; any other file is a raw dump if
+a frame or a $PAHR sentence is found in its first RAW_PROBE bytes (else it is refused). A pcapng
+packet is read only from an interface of link type LINKTYPE_ILAHRS (the bytes of the serial
+line); a capture of another link type (Ethernet ...) is refused, naming it, and so is a block
+longer than `ilahrs.pcapng.MAX_BLOCK`, before it is read.
+"""
+
+from __future__ import annotations
+
+import os
+import struct
+import sys
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from typing import BinaryIO, Final
+
+from ..pcapng import LINKTYPE_ILAHRS, Direction, IncrementalReader, PcapngError
+from ..stream import StreamDecoder
+from .common import CliError
+
+__all__ = ["CHUNK", "RAW_PROBE", "Chunk", "Source", "open_source"]
+
+CHUNK: Final = 1 << 20
+"""Bytes read at a time."""
+RAW_PROBE: Final = 1 << 16
+"""A raw dump must hold a message within this many bytes from its start."""
+_FOLLOW_PAUSE: Final = 0.2
+_SHB: Final = struct.pack("<I", 0x0A0D0D0A)
+_LINKTYPES: Final = {
+    0: "NULL (BSD loopback)",
+    1: "ETHERNET",
+    101: "RAW (IP)",
+    105: "IEEE802_11 (Wi-Fi)",
+    113: "LINUX_SLL",
+    228: "IPV4",
+    229: "IPV6",
+    276: "LINUX_SLL2",
+}
+"""Names of the link types most often met, for the error that refuses them."""
+
+
+@dataclass(frozen=True, slots=True)
+class Chunk:
+    """Bytes as they crossed the line: `time` in seconds since the epoch (None in a raw dump),
+    `direction` INBOUND (device to host) or OUTBOUND (host to device)."""
+
+    time: float | None
+    direction: Direction
+    data: bytes
+    packet: int | None = None
+    """The packet's number in a pcapng file, from 1 (Wireshark's frame number); None in a raw dump."""
+
+
+class Source:
+    """An open capture: `kind` is "pcapng" or "raw"; `chunks()` yields its Chunks in order."""
+
+    def __init__(self, name: str, stream: BinaryIO, head: bytes, size: int | None) -> None:
+        self.name = name
+        self.kind = "pcapng" if head[:4] == _SHB else "raw"
+        self.size = size
+        """The file's size in bytes (None for a pipe)."""
+        self.position = 0
+        """Bytes read so far."""
+        self.interface = ""
+        """The pcapng interface description (port and line settings), once read."""
+        self._stream = stream
+        self._head = head
+
+    def close(self) -> None:
+        if self._stream is not sys.stdin.buffer:
+            self._stream.close()
+
+    def _read(self, follow: bool, stop: Callable[[], bool]) -> Iterator[bytes]:
+        if self._head:
+            head, self._head = self._head, b""
+            self.position += len(head)
+            yield head
+        while True:
+            data = self._stream.read(CHUNK)
+            if data:
+                self.position += len(data)
+                yield data
+                continue
+            if not follow or stop():
+                return
+            time.sleep(_FOLLOW_PAUSE)
+
+    def chunks(self, *, follow: bool = False, stop: Callable[[], bool] = lambda: False) -> Iterator[Chunk]:
+        """Every chunk; with `follow`, keep reading as the file grows until `stop()` says so.
+        CliError for a damaged or truncated pcapng file (after the chunks before the damage)."""
+        if self.kind == "raw":
+            for data in self._read(follow, stop):
+                yield Chunk(None, Direction.INBOUND, data)
+            return
+        reader = IncrementalReader()
+        number = 0
+        try:
+            for data in self._read(follow, stop):
+                for packet in reader.feed(data):
+                    number += 1
+                    interface = reader.capture.interfaces[packet.interface]
+                    if interface.linktype != LINKTYPE_ILAHRS:
+                        raise CliError(f"{self.name}: {_foreign(interface.linktype, number)}")
+                    if not self.interface:
+                        self.interface = interface.description or interface.name
+                    direction = Direction.OUTBOUND if packet.direction == Direction.OUTBOUND else Direction.INBOUND
+                    yield Chunk(packet.timestamp_us / 1_000_000, direction, packet.data, number)
+            reader.finish()
+        except PcapngError as exc:
+            raise CliError(f"{self.name}: {exc}") from exc
+
+
+def _foreign(linktype: int, number: int) -> str:
+    name = _LINKTYPES.get(linktype, "")
+    named = f"{linktype} ({name})" if name else str(linktype)
+    return f"packet {number} has link type {named}, not {LINKTYPE_ILAHRS} (LINKTYPE_USER0, an AHRS serial line)"
+
+
+def _looks_raw(head: bytes) -> bool:
+    decoder = StreamDecoder()
+    return bool(decoder.feed(head) or decoder.finish())
+
+
+def open_source(path: str) -> Source:
+    """Open a capture file ("-": standard input) and tell pcapng from raw; CliError for a missing
+    or unreadable file, an empty one, or one that is neither."""
+    if path == "-":
+        stream: BinaryIO = sys.stdin.buffer
+        size = None
+    else:
+        try:
+            stream = open(path, "rb")  # noqa: SIM115 - closed by Source.close
+            size = os.fstat(stream.fileno()).st_size
+        except FileNotFoundError as exc:
+            raise CliError(f"{path}: no such file") from exc
+        except IsADirectoryError as exc:
+            raise CliError(f"{path}: is a directory, not a capture") from exc
+        except OSError as exc:
+            raise CliError(f"{path}: {exc.strerror or exc}") from exc
+    head = stream.read(RAW_PROBE)
+    name = "standard input" if path == "-" else path
+    if not head:
+        if path != "-":
+            stream.close()
+        raise CliError(f"{name}: empty, not a capture")
+    source = Source(name, stream, head, size)
+    if source.kind == "raw" and not _looks_raw(head):
+        source.close()
+        raise CliError(f"{name}: neither pcapng nor a raw capture (no frame or $PAHR sentence in its first bytes)")
+    return source

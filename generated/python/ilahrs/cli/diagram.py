@@ -1,0 +1,29 @@
+# Copied from generator/targets/python/runtime/cli/diagram.py for spec/ilahrs.yaml,
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# Do not edit: change the runtime source and run `make generate`.
+"""`ilahrs diagram`: the state machine as a Mermaid diagram."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ..statemachine import mermaid
+from .arguments import OneLineParser
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
+    return commands.add_parser(
+        "diagram",
+        help="print the device state machine as a Mermaid diagram",
+        description="Print the device's state machine (ilahrs.statemachine, from the spec) as a Mermaid "
+        "stateDiagram on standard output: every state, and every transition with the event and what "
+        "the AHRS sends.",
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    sys.stdout.write(mermaid())
+    return 0

@@ -1,0 +1,235 @@
+# Copied from generator/targets/python/runtime/conformance/vectors.py for spec/ilahrs.yaml,
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# Do not edit: change the runtime source and run `make generate`.
+"""The suites: vectors as the format (conformance/vectors.schema.json) gives them, checked, with a
+session vector's events as typed values."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+__all__ = [
+    "KINDS",
+    "OPTIONS",
+    "SPECIAL_FLOATS",
+    "VECTORS_DIR",
+    "CommandEvent",
+    "DataEvent",
+    "Session",
+    "SessionEvent",
+    "Suite",
+    "SuiteError",
+    "TimerEvent",
+    "Vector",
+    "int_value",
+    "latin1",
+    "load_suites",
+    "name_token",
+    "parse_hex",
+    "session",
+    "session_event",
+]
+
+VECTORS_DIR = Path(__file__).resolve().parent.parent / "vectors"
+"""The suites shipped with the package."""
+KINDS = (
+    "checksum",
+    "frame_decode",
+    "frame_encode",
+    "command_encode",
+    "command_decode",
+    "ack",
+    "payload_decode",
+    "payload_encode",
+    "nmea_decode",
+    "nmea_encode",
+    "stream",
+    "session",
+)
+OPTIONS: dict[str, tuple[str, ...]] = {"strict": ("frame_decode", "stream")}
+"""The vector options this harness sends (`"options"` of a vector), and the kinds each applies to.
+A vector with an option not listed here fails: it is never sent without it."""
+SPECIAL_FLOATS = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
+_HEX_RE = re.compile(r"(?:[0-9A-Fa-f]{2})*")
+_NAME_RE = re.compile(r"[^\s=,%]+")
+_VERSION_RE = re.compile(r"[0-9]+(?:\.[0-9]+)*")
+
+
+class SuiteError(Exception):
+    """A suite file that does not follow the vector format."""
+
+
+def parse_hex(text: object, where: str) -> bytes:
+    """Vector hex: two hex digits per byte, either case, spaces allowed."""
+    if not isinstance(text, str) or not _HEX_RE.fullmatch(text.replace(" ", "")):
+        raise SuiteError(f"{where}: not a hex string: {text!r}")
+    return bytes.fromhex(text.replace(" ", ""))
+
+
+def latin1(text: str, where: str) -> bytes:
+    try:
+        return text.encode("latin-1")
+    except UnicodeEncodeError:
+        raise SuiteError(f"{where}: text must be Latin-1 (one byte per character): {text!r}") from None
+
+
+def name_token(value: object, where: str) -> str:
+    if not isinstance(value, str) or not _NAME_RE.fullmatch(value):
+        raise SuiteError(f"{where}: not a name: {value!r}")
+    return value
+
+
+def int_value(value: object, where: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise SuiteError(f"{where}: not an integer: {value!r}")
+    return value
+
+
+@dataclass
+class Vector:
+    suite: str
+    id: str
+    kind: str
+    input: Any
+    expect: Any
+    note: str | None
+    options: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def where(self) -> str:
+        return f"{self.suite}:{self.id}"
+
+    @property
+    def unknown_options(self) -> list[str]:
+        """Options this harness cannot send (not in OPTIONS, or not for this kind)."""
+        return [k for k in self.options if self.kind not in OPTIONS.get(k, ())]
+
+
+@dataclass(frozen=True)
+class CommandEvent:
+    """A session event: the host sends a command frame with this code (any byte, also codes no
+    command has)."""
+
+    code: int
+
+    @property
+    def token(self) -> str:
+        """The event as the runner protocol writes it: C:HH."""
+        return f"C:{self.code:02X}"
+
+
+@dataclass(frozen=True)
+class DataEvent:
+    """A session event: the host sends a data message with a payload of this size."""
+
+    size: int
+
+    @property
+    def token(self) -> str:
+        """The event as the runner protocol writes it: D:N."""
+        return f"D:{self.size}"
+
+
+@dataclass(frozen=True)
+class TimerEvent:
+    """A session event the host causes by waiting: the state machine's event of this name (a timer)."""
+
+    name: str
+
+    @property
+    def token(self) -> str:
+        """The event as the runner protocol writes it: E:NAME."""
+        return f"E:{self.name}"
+
+
+SessionEvent = CommandEvent | DataEvent | TimerEvent
+"""One event of a session vector."""
+
+
+@dataclass(frozen=True)
+class Session:
+    """The input of a session vector: the firmware of the model (None: the current one) and the
+    events, in order."""
+
+    firmware: str | None
+    events: tuple[SessionEvent, ...]
+
+
+def session_event(event: object, w: str) -> SessionEvent:
+    if not isinstance(event, dict) or len(event) != 1:
+        raise SuiteError(f'{w}: an event is {{"command": code}}, {{"data": size}} or {{"event": name}}')
+    ((key, value),) = event.items()
+    if key == "command":
+        code = int(value, 16) if isinstance(value, str) else int_value(value, w)
+        if not 0 <= code <= 0xFF:
+            raise SuiteError(f"{w}: a command code is a byte")
+        return CommandEvent(code)
+    if key == "data":
+        return DataEvent(int_value(value, w))
+    if key == "event":
+        return TimerEvent(name_token(value, w))
+    raise SuiteError(f"{w}: unknown session event {key!r}")
+
+
+def session(i: object, w: str) -> Session:
+    """The input of a session vector, checked."""
+    if not isinstance(i, dict):
+        raise SuiteError(f"{w}: input must be an object")
+    firmware = i.get("firmware", "-")
+    if firmware != "-" and not (isinstance(firmware, str) and _VERSION_RE.fullmatch(firmware)):
+        raise SuiteError(f"{w}: firmware is a version like 4.9.8.0")
+    events = i.get("events")
+    if not isinstance(events, list) or not events:
+        raise SuiteError(f"{w}: events must be a non-empty list")
+    return Session(None if firmware == "-" else firmware, tuple(session_event(event, w) for event in events))
+
+
+@dataclass
+class Suite:
+    name: str
+    path: Path
+    vectors: list[Vector]
+
+
+def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
+    vectors: list[Vector] = []
+    seen: set[str] = set()
+    for n, raw in enumerate(raws):
+        if not isinstance(raw, dict) or not all(k in raw for k in ("id", "kind", "input", "expect")):
+            raise SuiteError(f"{path}: vector {n} needs id, kind, input and expect")
+        if not isinstance(raw["id"], str) or raw["id"] in seen:
+            raise SuiteError(f"{path}: vector {n}: id missing or repeated: {raw['id']!r}")
+        if raw["kind"] not in KINDS:
+            raise SuiteError(f"{path}: {raw['id']}: unknown kind {raw['kind']!r}")
+        options = raw.get("options", {})
+        if not isinstance(options, dict):
+            raise SuiteError(f"{path}: {raw['id']}: options must be an object")
+        seen.add(raw["id"])
+        vector = Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note"), options)
+        vectors.append(vector)
+    return vectors
+
+
+def load_suites(directory: Path) -> list[Suite]:
+    paths = sorted(directory.glob("*.json"))
+    if not paths:
+        raise SuiteError(f"{directory}: no *.json suites")
+    suites = []
+    for path in paths:
+        try:
+            doc = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as err:
+            raise SuiteError(f"{path}: {err}") from None
+        if (
+            not isinstance(doc, dict)
+            or not isinstance(doc.get("suite"), str)
+            or not isinstance(doc.get("vectors"), list)
+        ):
+            raise SuiteError(f'{path}: a suite is {{"suite": str, "source": str, "vectors": [...]}}')
+        suites.append(Suite(doc["suite"], path, _suite_vectors(path, doc["suite"], doc["vectors"])))
+    return suites

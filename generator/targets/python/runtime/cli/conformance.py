@@ -1,0 +1,27 @@
+"""`ilahrs conformance`: the conformance suite against a runner or, live, a device
+(ilahrs.conformance)."""
+
+from __future__ import annotations
+
+import argparse
+
+from ..conformance import add_arguments
+from ..conformance import run as run_suites
+from .arguments import OneLineParser
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
+    parser = commands.add_parser(
+        "conformance",
+        help="run the conformance suite against a runner (--command) or a device (--device)",
+        description="Run the conformance vectors shipped with the package against a runner that speaks the "
+        "runner protocol (--command), or the session flows live against a device (--device).",
+    )
+    add_arguments(parser)
+    return parser
+
+
+def run(args: argparse.Namespace) -> int:
+    return run_suites(args)
