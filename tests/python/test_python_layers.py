@@ -20,7 +20,7 @@ from ilahrs.conformance import CommandEvent, DataEvent, TimerEvent, Vector, load
 from ilahrs.conformance.live import plan_flow
 from ilahrs.conformance.vectors import session
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 SUBCOMMANDS = {
     "calibrate",
     "conformance",
