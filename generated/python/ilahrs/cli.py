@@ -13,7 +13,7 @@ import math
 import re
 import sys
 from collections.abc import Callable, Iterable
-from typing import Final, NoReturn
+from typing import Any, Final, NoReturn
 
 from .cli_capture import Chunk, Source, open_source
 from .cli_common import BAUDRATE, CliError, lookup, variant_named
@@ -365,7 +365,7 @@ def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: 
         strict=args.strict,
         start=args.output_format if known else None,
     )
-    failure = _drive(source, decoder.feed, decoder.finish, follow=False)
+    failure = _drive(source, decoder.feed_packets, decoder.finish, follow=False, packets=True)
     if failure is not None:
         raise failure
     for line in summary(decoder, "ilahrs decode"):
@@ -374,16 +374,17 @@ def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: 
 
 
 def _drive(
-    source: Source, feed: Callable[[Chunk], None], finish: Callable[[], None], *, follow: bool
+    source: Source, feed: Callable[[Any], None], finish: Callable[[], None], *, follow: bool, packets: bool = False
 ) -> CliError | None:
     """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input; a
     closed pipe (BrokenPipeError) goes on to `ilahrs.__main__.main`, as in every subcommand. Returns
-    the error that cut the capture short, if any (the messages before it are written)."""
+    the error that cut the capture short, if any (the messages before it are written).
+    `packets`: feed the packets of a pcapng file as arrays (`Source.packets`), not as Chunks."""
     progress = Progress(source)
     failure: CliError | None = None
     try:
         try:
-            for chunk in source.chunks(follow=follow):
+            for chunk in source.packets() if packets else source.chunks(follow=follow):
                 feed(chunk)
                 progress.update()
                 if follow:

@@ -76,7 +76,7 @@ from .frame import (
 from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from .payloads import PAYLOADS
-from .pcapng import Direction
+from .pcapng import Direction, Packets
 from .statemachine import INITIAL, OUTPUT_FORMATS, command_event
 from .stream import IDLE_TIMEOUT, StreamDecoder, StreamEvent
 
@@ -404,11 +404,11 @@ class _Splitter:
         self.base += decided
         return located
 
-    def note(self, before: int, data: bytes, when: float | None, packet: int | None) -> None:
-        """`before` bytes, then `data` (a packet), decoded elsewhere as whole messages."""
+    def note(self, before: int, size: int, when: float | None, packet: int | None) -> None:
+        """`before` bytes, then a packet of `size` bytes, decoded elsewhere as whole messages."""
         self.fed += before
         self._packets.append((self.fed, when, packet))
-        self.fed += len(data)
+        self.fed += size
         self.last = when
 
     def packet_of(self, offset: int) -> tuple[float | None, int | None]:
@@ -522,36 +522,40 @@ class CaptureDecoder:
                 return None
         return host.streaming()
 
-    def stream(self, chunks: list[Chunk], outputs: list[int], *, apply: bool) -> int:
-        """The host's clock through `chunks` from the device, outputs[i] output frames completed
-        by chunks[i] (`Host.streamed`): how many chunks pass with no deadline passing. `apply`:
-        move the clocks (the caller then gives the same chunks to `streamed`)."""
-        host = self._host
-        assert host is not None and self._last is not None
-        last = self._last
-        steps: list[int] = []
-        for chunk in chunks:
-            now = chunk.time
-            assert now is not None
-            steps.append(round((now - last) * 1_000_000_000) if now > last else 0)
-            last = max(last, now)
-        done = host.streamed(steps, outputs[: len(steps)], apply=apply)
-        if apply:
-            self._last = last
-        return done
+    def steps(self, times: list[float], numpy: Any) -> list[int]:
+        """The steps of the host's clock (nanoseconds) to chunks from the device at `times`, as
+        `feed` takes them (a time before the latest one is no step)."""
+        assert self._last is not None
+        now = numpy.array(times, dtype=numpy.float64)
+        before = numpy.maximum.accumulate(numpy.concatenate(([self._last], now)))[:-1]
+        steps: list[int] = (
+            numpy.where(now > before, numpy.rint((now - before) * 1_000_000_000), 0).astype(numpy.int64).tolist()
+        )
+        return steps
 
-    def streamed(self, chunks: list[Chunk], table: str, count: int, size: int) -> None:
-        """`chunks` from the device were `count` whole output frames of `table` (`size` bytes),
-        decoded elsewhere: count them and move on as `feed` would have."""
+    def stream(self, steps: list[int], outputs: list[int], *, apply: bool) -> int:
+        """The host's clock through chunks from the device (`steps`: `steps` of their times),
+        outputs[i] output frames completed by chunk i (`Host.streamed`): how many chunks pass with
+        no deadline passing. `apply`: move the clocks (the caller then gives the same chunks to
+        `streamed`, which moves the decoder's clock)."""
+        host = self._host
+        assert host is not None
+        return host.streamed(steps, outputs[: len(steps)], apply=apply)
+
+    def streamed(self, chunks: _Run, table: str, count: int, size: int) -> None:
+        """The `chunks` from the device were `count` whole output frames of `table` (`size`
+        bytes), decoded elsewhere: count them and move on as `feed` would have."""
         start = self._start
         assert start is not None
         side, out = self._in, self._out
-        latest = max(chunk.time for chunk in chunks if chunk.time is not None)
+        latest = max(chunks.times)
+        assert self._last is not None
+        self._last = max(self._last, latest)
         if out.last is not None and latest - start - out.last >= IDLE_TIMEOUT:
             out.last = None  # nothing held: the idle line releases nothing
-        last = next(chunk for chunk in reversed(chunks) if chunk.data)
-        assert last.time is not None
-        side.note(size - len(last.data), last.data, last.time - start, last.packet)
+        last = max(i for i, n in enumerate(chunks.sizes) if n)
+        when = chunks.times[last]
+        side.note(size - chunks.sizes[last], chunks.sizes[last], when - start, chunks.packets[last])
         assert side.fed == side.base + size
         side.base += size
         side.forget(side.base)
@@ -954,8 +958,7 @@ class _Values:
 
     def of(self, data: bytes | bytearray, base: int, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
         """Each column's values for the frames of table `cls` at `starts` (`data` starts at `base`)."""
-        simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
-        if not simple or any(info.encoding not in (None, "usw", "calibration_success") for info in cls.FIELDS):
+        if not _simple(cls):
             here = [at - base + PAYLOAD_OFFSET for at in starts]
             blocks = [cls.parse(data[at : at + cls.SIZE]) for at in here]
             made = [row_fields(block, self._variant, raw=self._raw) for block in blocks]
@@ -978,11 +981,49 @@ class _Values:
             values[info.name] = column
         return values
 
+    def texts(self, data: bytes | bytearray, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
+        """`of` (`data` from 0) as csv.writer writes the values (`_csv_text`), each distinct
+        value of a column written once (numpy; else as `of`)."""
+        numpy = self._numpy
+        if numpy is None or not _simple(cls):
+            return {name: list(map(_csv_text, column)) for name, column in self.of(data, 0, cls, starts).items()}
+        fields = scales(cls, None if self._raw else self._variant)
+        if self._raw:
+            fields = [(info, 1, None) for info, _, _ in fields]
+        columns = table_columns(numpy, data, numpy.array(starts, dtype=numpy.int64), cls, fields)
+        values: dict[str, list[Any]] = {}
+        for info, _, _ in fields:
+            distinct, where = numpy.unique(columns[info.name], return_inverse=True)
+            known = distinct.tolist()
+            if info.encoding == "calibration_success" and not self._raw:
+                values[ACCURACY] = _spread(numpy, [_csv_text(_accuracy(v)) for v in known], where)
+                values[info.name] = _spread(numpy, [_csv_text(_outcome(v)) for v in known], where)
+                continue
+            if info.encoding == "calibration_success":
+                values[ACCURACY] = [""] * len(starts)
+            if info.encoding == "usw" and not self._raw:
+                values[info.name] = _spread(numpy, [_csv_text(_usw(v)) for v in known], where)
+            else:
+                values[info.name] = _spread(numpy, [str(v) for v in known], where)
+        return values
+
     def _mapped(self, column: list[Any], function: Callable[[Any], object]) -> list[Any]:
         """`function` of each value, each distinct value computed once."""
         known = self._known.setdefault(function, {})
         known.update((value, function(value)) for value in set(column).difference(known))
         return list(map(known.__getitem__, column))
+
+
+def _simple(cls: type[Any]) -> bool:
+    """Whether the fields of `cls` are numbers with no encoding but the USW's and a calibration's."""
+    simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
+    return simple and all(info.encoding in (None, "usw", "calibration_success") for info in cls.FIELDS)
+
+
+def _spread(numpy: Any, texts: list[str], where: Any) -> list[str]:
+    """texts[i] for each i in `where`."""
+    result: list[str] = numpy.array(texts, dtype=object)[where].tolist()
+    return result
 
 
 class ColumnarCapture:
@@ -1016,10 +1057,9 @@ class ColumnarCapture:
         self._wanted = set(selected)
         self._writer = RowWriter(out, "csv", self._wanted, variant, raw=raw)
         self._columns = [*BASE_COLUMNS, *decode_columns(self._wanted)]
-        self._csv = csv.writer(out, lineterminator="\n")
+        self._out = out
         self._values = _Values(self._numpy, variant, raw)
-        self._held: list[Chunk] = []
-        self._size = 0
+        self._held = _Run()
         self._last_in: float | None = None
         self._misses = 0
 
@@ -1045,34 +1085,91 @@ class ColumnarCapture:
 
     def feed(self, chunk: Chunk) -> None:
         inbound = chunk.direction == Direction.INBOUND and chunk.time is not None
-        if self._held:
-            if inbound and self._size < _STRETCH and not self._idle(chunk):
-                self._hold(chunk)
+        self._packet(chunk.time, inbound, chunk.data, chunk)
+
+    def feed_packets(self, found: Packets) -> None:
+        """`feed` of each of the packets `found` (directions INBOUND or OUTBOUND, numbered from
+        found.first, as `Source.packets` gives them), with no object made for the packets the
+        columns decode."""
+        data, ends, stamps, directions = found.data, found.ends, found.stamps, found.directions
+        number = found.first
+        start = index = 0
+        count = len(ends)
+        inbound = Direction.INBOUND
+        while index < count:
+            end = ends[index]
+            when = stamps[index] / 1_000_000
+            held = self._held
+            if held.sizes and directions[index] == inbound:
+                # `_packet` of each packet while held ones are: the same rule, without calls.
+                origin = self.decoder.start
+                assert origin is not None
+                last = self._last_in
+                pieces, sizes, times, numbers = held.pieces, held.sizes, held.times, held.packets
+                total = held.total
+                while total < _STRETCH:
+                    if last is None:
+                        if self.decoder.in_idle(when):
+                            break
+                    elif (when - origin) - (last - origin) >= IDLE_TIMEOUT:
+                        break
+                    pieces.append(data[start:end])
+                    sizes.append(end - start)
+                    times.append(when)
+                    numbers.append(number + index)
+                    total += end - start
+                    if end > start:
+                        last = when
+                    start = end
+                    index += 1
+                    if index == count or directions[index] != inbound:
+                        break
+                    end = ends[index]
+                    when = stamps[index] / 1_000_000
+                held.total = total
+                self._last_in = last
+                if index == count:
+                    break
+                end = ends[index]
+                when = stamps[index] / 1_000_000
+            self._packet(when, directions[index] == inbound, data[start:end], None, number + index)
+            start = end
+            index += 1
+
+    def _packet(
+        self, when: float | None, inbound: bool, data: bytes, chunk: Chunk | None, number: int | None = None
+    ) -> None:
+        held = self._held
+        if held.sizes:
+            if inbound and held.total < _STRETCH and not self._idle(when):
+                self._hold(when, data, chunk.packet if chunk is not None else number)
                 return
             self._flush()
-        if inbound and self._numpy is not None and self._streaming() is not None and not self._idle(chunk):
-            self._hold(chunk)
+        if inbound and self._numpy is not None and self._streaming() is not None and not self._idle(when):
+            self._hold(when, data, chunk.packet if chunk is not None else number)
             return
+        if chunk is None:
+            chunk = Chunk(when, Direction.INBOUND if inbound else Direction.OUTBOUND, data, number)
         self._write(self.decoder.feed(chunk))
 
     def finish(self) -> None:
         self._flush()
         self._write(self.decoder.finish())
 
-    def _hold(self, chunk: Chunk) -> None:
-        self._held.append(chunk)
-        self._size += len(chunk.data)
-        if chunk.data:
-            self._last_in = chunk.time
+    def _hold(self, when: float | None, data: bytes, packet: int | None) -> None:
+        assert when is not None
+        self._held.add(when, data, packet)
+        if data:
+            self._last_in = when
 
-    def _idle(self, chunk: Chunk) -> bool:
-        """Whether the device's line was idle before `chunk` (E41): a message cannot span it."""
+    def _idle(self, when: float | None) -> bool:
+        """Whether the device's line was idle before a chunk at `when` (E41): a message cannot span it."""
         decoder = self.decoder
-        last = self._last_in if self._held else None
+        last = self._last_in if self._held.sizes else None
         if last is None or decoder.start is None:
-            return decoder.in_idle(chunk.time)
-        assert chunk.time is not None
-        return (chunk.time - decoder.start) - (last - decoder.start) >= IDLE_TIMEOUT
+            return decoder.in_idle(when)
+        assert when is not None
+        return (when - decoder.start) - (last - decoder.start) >= IDLE_TIMEOUT
 
     def _write(self, messages: list[Message]) -> None:
         wanted = self._wanted
@@ -1084,20 +1181,20 @@ class ColumnarCapture:
         return self.decoder.streaming()
 
     def _flush(self) -> None:
-        held, self._held, self._size, self._last_in = self._held, [], 0, None
-        while held:
+        held, self._held, self._last_in = self._held, _Run(), None
+        while held.sizes:
             done = self._columnar(held)
             if done:
                 self._misses = 0
-                held = held[done:]
+                held = held.after(done)
                 continue
             self._misses += 1
-            slow = min(len(held), 1 << min(self._misses, 12))  # damage: fewer rescans of the same bytes
-            for chunk in held[:slow]:
+            slow = min(len(held.sizes), 1 << min(self._misses, 12))  # damage: fewer rescans of the same bytes
+            for chunk in held.chunks(slow):
                 self._write(self.decoder.feed(chunk))
-            held = held[slow:]
+            held = held.after(slow)
 
-    def _columnar(self, held: list[Chunk]) -> int:
+    def _columnar(self, held: _Run) -> int:
         """Decode the leading chunks of `held` as columns, if they are whole output frames that
         arrive in time; how many chunks were decoded (0: none)."""
         decoder = self.decoder
@@ -1106,7 +1203,7 @@ class ColumnarCapture:
         if table is None or numpy is None:
             return 0
         cls = PAYLOADS[table]
-        data = b"".join(chunk.data for chunk in held)
+        data = held.joined()
         scanner = Scanner(numpy, sentences=False, output=table)
         windows = scanner.scan(data, final=True)
         if not windows:
@@ -1128,24 +1225,24 @@ class ColumnarCapture:
         count = int(bad[0]) if len(bad) else len(starts)
         if not count:
             return 0
-        sizes = [len(chunk.data) for chunk in held]
-        chunk_ends = numpy.cumsum(numpy.array(sizes, dtype=numpy.int64))
+        chunk_ends = numpy.cumsum(numpy.array(held.sizes, dtype=numpy.int64))
         aligned = numpy.flatnonzero(numpy.isin(chunk_ends, ends[:count]) & (chunk_ends > 0))
         if not len(aligned):
             return 0
         used = int(aligned[-1]) + 1
         arrived = numpy.searchsorted(chunk_ends, ends[:count] - 1, side="right")
         per_chunk = numpy.bincount(arrived, minlength=used)[:used].tolist()
-        used = decoder.stream(held[:used], per_chunk, apply=False)
+        steps = decoder.steps(held.times[:used], numpy)
+        used = decoder.stream(steps, per_chunk, apply=False)
         aligned = aligned[aligned < used]
         if not len(aligned):
             return 0
         used = int(aligned[-1]) + 1
         total = int(chunk_ends[used - 1])
         count = int(numpy.searchsorted(ends[:count], total, side="right"))
-        taken = held[:used]
         base = decoder.inbound_bytes
-        decoder.stream(taken, per_chunk[:used], apply=True)
+        taken = held.first(used)
+        decoder.stream(steps[:used], per_chunk[:used], apply=True)
         decoder.streamed(taken, table, count, total)
         if table in self._wanted:
             found = {"starts": starts[:count], "lengths": lengths[:count], "arrived": arrived[:count]}
@@ -1153,32 +1250,100 @@ class ColumnarCapture:
         return used
 
     def _rows(
-        self, data: bytes, taken: list[Chunk], *, starts: Any, lengths: Any, arrived: Any, cls: type[Any], base: int
+        self, data: bytes, taken: _Run, *, starts: Any, lengths: Any, arrived: Any, cls: type[Any], base: int
     ) -> None:
         """The CSV rows of the output frames at `starts` in `data` (the bytes of `taken`, from
         `base` in the device's bytes), each in the chunk `arrived` says."""
         start = self.decoder.start
         assert start is not None
-        stamps = [f"{round(chunk.time - start, 6):.6f}" for chunk in taken if chunk.time is not None]
-        packets = [chunk.packet for chunk in taken]
         at = arrived.tolist()
+        times, packets = taken.times, taken.packets
+        stamps = {i: f"{round(times[i] - start, 6):.6f}" for i in set(at)}
         local = starts.tolist()
-        count = len(local)
-        values = self._values.of(data, 0, cls, local)
-        blank = [""] * count
-        name = cls.NAME
-        base_columns = [
+        values = self._values.texts(data, cls, local)
+        columns: list[list[str]] = [
             [stamps[i] for i in at],
-            ["in"] * count,
-            [name] * count,
-            [base + offset for offset in local],
-            [packets[i] for i in at],
-            lengths.tolist(),
-            blank,
-            blank,
+            list(map(str, [base + offset for offset in local])),
+            [str(packets[i]) for i in at] if None not in packets else [_csv_text(packets[i]) for i in at],
+            list(map(str, lengths.tolist())),
         ]
-        fields = (values.get(c, blank) for c in self._columns[len(BASE_COLUMNS) :])
-        self._csv.writerows(zip(*base_columns, *fields, strict=True))
+        # A row is its values and constant fields joined by commas; each run of constant fields is
+        # one item (repeated), so each row joins few items.
+        layout: list[Any] = [columns[0], "in", _csv_text(cls.NAME), *columns[1:], "", ""]
+        for name in self._columns[len(BASE_COLUMNS) :]:
+            layout.append(values.get(name, ""))
+        items: list[Any] = []
+        for item in layout:
+            if isinstance(item, str) and items and isinstance(items[-1], str):
+                items[-1] += "," + item
+            else:
+                items.append(item)
+        count = len(at)
+        rows = zip(*([item] * count if isinstance(item, str) else item for item in items), strict=True)
+        self._out.write("".join([",".join(row) + "\n" for row in rows]))
+
+
+class _Run:
+    """Chunks from the device held to be decoded as columns: their bytes, sizes, times and
+    packet numbers."""
+
+    __slots__ = ("packets", "pieces", "sizes", "times", "total")
+
+    def __init__(self) -> None:
+        self.pieces: list[bytes] = []
+        self.sizes: list[int] = []
+        self.times: list[float] = []
+        self.packets: list[int | None] = []
+        self.total = 0
+
+    def add(self, when: float, data: bytes, packet: int | None) -> None:
+        self.pieces.append(data)
+        self.sizes.append(len(data))
+        self.times.append(when)
+        self.packets.append(packet)
+        self.total += len(data)
+
+    def joined(self) -> bytes:
+        """The bytes of every chunk, back to back."""
+        if len(self.pieces) != 1:
+            self.pieces = [b"".join(self.pieces)]
+        return self.pieces[0]
+
+    def first(self, count: int) -> _Run:
+        """The first `count` chunks."""
+        return self._part(0, count)
+
+    def after(self, count: int) -> _Run:
+        """The chunks after the first `count`."""
+        return self._part(count, len(self.sizes))
+
+    def _part(self, low: int, high: int) -> _Run:
+        run = _Run()
+        start = sum(self.sizes[:low])
+        run.sizes, run.times, run.packets = self.sizes[low:high], self.times[low:high], self.packets[low:high]
+        run.total = sum(run.sizes)
+        run.pieces = [self.joined()[start : start + run.total]]
+        return run
+
+    def chunks(self, count: int) -> list[Chunk]:
+        """The first `count` chunks as Chunks."""
+        data = self.joined()
+        result: list[Chunk] = []
+        start = 0
+        for size, when, packet in zip(self.sizes[:count], self.times, self.packets, strict=False):
+            result.append(Chunk(when, Direction.INBOUND, data[start : start + size], packet))
+            start += size
+        return result
+
+
+def _csv_text(value: object) -> str:
+    """One field as csv.writer (QUOTE_MINIMAL, lineterminator \\n) writes it."""
+    if value is None:
+        return ""
+    text = str(value)
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
 
 
 _STRETCH: Final = 1 << 20
