@@ -36,10 +36,11 @@ import sys
 import time
 from bisect import bisect_right
 from collections import Counter
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any, Final, TextIO
 
+from .bulk import tables_by_size
 from .cli_capture import Chunk, Source
 from .cli_common import SENTENCE_KIND, field_columns, fields_of, lookup, usw_text
 from .codec import Payload, date_text, field_kind
@@ -58,17 +59,16 @@ from .commands import COMMAND_SET, COMMANDS, decode_command
 from .encodings import Variant, calibration_accuracy_deg, calibration_succeeded
 from .errors import ErrorKind, IlahrsError
 from .frame import (
-    CHECKSUM_SIZE,
+    BAD_CHECKSUM as FRAME_BAD_CHECKSUM,
+)
+from .frame import (
     HEADER,
     HEADER_SIZE,
-    MAX_MESSAGE_LENGTH,
     MESSAGE_LENGTH_OFFSET,
-    MESSAGE_TYPE_OFFSET,
-    MIN_MESSAGE_LENGTH,
+    NEED_MORE,
     PAYLOAD_OFFSET,
-    RESERVED_OFFSET,
-    STRICT_RESERVED,
     MessageType,
+    frame_at,
 )
 from .host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
@@ -192,16 +192,8 @@ def output_table(command: str) -> str | None:
     return OUTPUT_FORMATS[COMMANDS[name].starts_output or ""]
 
 
-def _by_size(direction: str) -> Mapping[int, list[str]]:
-    sizes: dict[int, list[str]] = {}
-    for name, table in PAYLOADS.items():
-        if direction == table.DIRECTION:
-            sizes.setdefault(table.SIZE, []).append(name)
-    return sizes
-
-
-_INBOUND_SIZES: Final = _by_size("device_to_host")
-_OUTBOUND_SIZES: Final = _by_size("host_to_device")
+_INBOUND_SIZES: Final = tables_by_size("device_to_host")
+_OUTBOUND_SIZES: Final = tables_by_size("host_to_device")
 
 
 @dataclass(frozen=True, slots=True)
@@ -228,15 +220,7 @@ Region = tuple[int, int, str]
 def _starts_frame(data: bytes | bytearray, pos: int) -> bool:
     """Whether a frame may start at `pos`: its header, a message type and a length that can be (as
     far as the bytes go)."""
-    head = bytes(data[pos : pos + PAYLOAD_OFFSET])
-    if not (head + HEADER[len(head) :]).startswith(HEADER):
-        return False
-    if len(head) > MESSAGE_TYPE_OFFSET and head[MESSAGE_TYPE_OFFSET] not in _MESSAGE_TYPES:
-        return False
-    if len(head) < PAYLOAD_OFFSET:
-        return True
-    length = head[MESSAGE_LENGTH_OFFSET] | head[MESSAGE_LENGTH_OFFSET + 1] << 8
-    return MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH
+    return frame_at(data, pos, min(len(data), pos + PAYLOAD_OFFSET)) == NEED_MORE
 
 
 def _starts_sentence(data: bytes | bytearray, pos: int) -> bool:
@@ -244,7 +228,7 @@ def _starts_sentence(data: bytes | bytearray, pos: int) -> bool:
     return PREFIX.startswith(head)
 
 
-_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
+_LENGTH_HIGH: Final = MESSAGE_LENGTH_OFFSET + 1
 _STARTS: Final = ((HEADER[0], _starts_frame), (PREFIX[0], _starts_sentence))
 
 
@@ -292,13 +276,11 @@ def _region_at(run: bytes | bytearray, pos: int, closed: bool) -> tuple[str, int
     """The reason and end of the damaged region at `pos`; None if more bytes could change them."""
     size = len(run)
     if _starts_frame(run, pos):
-        stop = size + 1
-        if size - pos >= PAYLOAD_OFFSET:
-            stop = pos + HEADER_SIZE + (run[pos + MESSAGE_LENGTH_OFFSET] | run[pos + MESSAGE_LENGTH_OFFSET + 1] << 8)
-        if stop <= size:
-            at = stop - CHECKSUM_SIZE
-            good = sum(run[pos + HEADER_SIZE : at]) & 0xFFFF == run[at] | run[at + 1] << 8
-            return (BAD_RESERVED if good else BAD_CHECKSUM), stop
+        found = frame_at(run, pos, size)  # a whole frame here was refused when strict (E42)
+        if found > 0:
+            return BAD_RESERVED, pos + found
+        if found == FRAME_BAD_CHECKSUM:
+            return BAD_CHECKSUM, pos + HEADER_SIZE + (run[pos + MESSAGE_LENGTH_OFFSET] | run[pos + _LENGTH_HIGH] << 8)
         return (TRUNCATED, _next_start(run, pos + 1)) if closed else None
     if _starts_sentence(run, pos):
         lf = run.find(b"\n", pos, pos + MAX_SENTENCE_LENGTH)
@@ -663,7 +645,7 @@ class CaptureDecoder:
         inbound = direction == Direction.INBOUND
         if inbound and self._output is not None and size == PAYLOADS[self._output].SIZE:
             return self._output, PAYLOADS[self._output].parse(frame.payload)
-        candidates = (_INBOUND_SIZES if inbound else _OUTBOUND_SIZES).get(size, [])
+        candidates = (_INBOUND_SIZES if inbound else _OUTBOUND_SIZES).get(size, ())
         if len(candidates) == 1:
             return candidates[0], PAYLOADS[candidates[0]].parse(frame.payload)
         return UNDETERMINED, None
@@ -1201,7 +1183,7 @@ class ColumnarCapture:
             return 0
         cls = PAYLOADS[table]
         data = held.joined()
-        scanner = Scanner(numpy, sentences=False, output=table)
+        scanner = Scanner(numpy, sentences=False, output=table, strict=self._strict)
         windows = scanner.scan(data, final=True)
         if not windows:
             return 0
@@ -1211,10 +1193,6 @@ class ColumnarCapture:
         ends = starts + lengths
         kinds = numpy.concatenate([w.kinds for w in windows])
         good = (types == int(MessageType.DATA)) & (kinds == KINDS.index(table))
-        if self._strict:
-            buf = numpy.frombuffer(data, dtype=numpy.uint8)
-            for kind, reserved in STRICT_RESERVED.items():
-                good &= (types != kind) | (buf[starts + RESERVED_OFFSET] == reserved)
         good[1:] &= starts[1:] == ends[:-1]
         if len(starts):
             good[0] &= int(starts[0]) == 0
