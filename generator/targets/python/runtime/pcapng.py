@@ -389,7 +389,7 @@ class BulkReader:
             raise self._error
         return packets
 
-    def _walk(self, found: _Found) -> int:
+    def _walk(self, found: _Found) -> int:  # noqa: PLR0912, PLR0915 - one loop per packet, no call
         """Read the complete blocks in the buffer into `found`; where the first incomplete one
         starts. A PcapngError carries, as its second argument, where the damaged block starts."""
         reader, buffer = self._reader, self._buffer
@@ -397,7 +397,10 @@ class BulkReader:
         if self._offset == 0 and size >= 4 and _WORD["<"].unpack_from(buffer)[0] != _SHB:
             raise PcapngError("not a pcapng file (no section header block at offset 0)", 0)
         head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
-        enhanced = self._enhanced
+        epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
+        known = reader.capture.interfaces
+        starts, stops, stamps = found.starts, found.stops, found.stamps
+        directions, interfaces, originals = found.directions, found.interfaces, found.originals
         pos = 0
         while size - pos >= 12:
             at = self._offset + pos
@@ -409,6 +412,7 @@ class BulkReader:
                         raise PcapngError(f"section header at offset {at} has no byte-order magic")
                     reader.order = _MAGICS[magic]
                     head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
+                    epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
                     kind, length = head.unpack_from(buffer, pos)
                 if length < 12 or length % 4 or length > MAX_BLOCK:
                     _check_length(at, length)
@@ -418,44 +422,40 @@ class BulkReader:
                 if trailer != length:
                     raise PcapngError(f"block at offset {at}: its lengths differ ({length}, {trailer})")
                 if kind == _EPB and length >= 32:
-                    enhanced(found, pos, length, at)
+                    # _Reader.packet, its checks in its order, into `found`
+                    interface, high, low, captured, original = epb.unpack_from(buffer, pos + 8)
+                    if interface >= len(known):
+                        raise PcapngError(f"packet at offset {at} names interface {interface}, which is not described")
+                    if 32 + captured > length:
+                        raise PcapngError(f"packet at offset {at} holds {captured} bytes but its block is shorter")
+                    start = pos + 28
+                    options = start + captured + (-captured % 4)
+                    stop = pos + length - 4
+                    bits: int = Direction.UNKNOWN
+                    if stop - options == 12:
+                        code, width, value, end = flags.unpack_from(buffer, options)
+                        if code == _EPB_FLAGS and width == 4 and end == _OPT_END:
+                            bits = _DIRECTIONS[value & _DIRECTION_MASK]
+                        else:
+                            bits = _packet_direction(bytes(buffer[options:stop]), reader.order, at + 28 + captured)
+                    elif stop != options:
+                        bits = _packet_direction(bytes(buffer[options:stop]), reader.order, at + 28 + captured)
+                    resolution = known[interface].resolution
+                    ticks = high << 32 | low
+                    starts.append(start)
+                    stops.append(start + captured)
+                    stamps.append(ticks if resolution == 1_000_000 else ticks * 1_000_000 // resolution)
+                    directions.append(bits)
+                    interfaces.append(interface)
+                    originals.append(original)
                 else:
                     self._other(found, kind, pos, length, at)
+                    known = reader.capture.interfaces
             except PcapngError as exc:
                 exc.args = (*exc.args[:1], pos)
                 raise
             pos += length
         return pos
-
-    def _enhanced(self, found: _Found, pos: int, length: int, at: int) -> None:
-        """The Enhanced Packet Block at `pos` (at least 32 bytes): _Reader.packet, into `found`."""
-        buffer, order = self._buffer, self._reader.order
-        known = self._reader.capture.interfaces
-        interface, high, low, captured, original = _EPB_HEAD[order].unpack_from(buffer, pos + 8)
-        if interface >= len(known):
-            raise PcapngError(f"packet at offset {at} names interface {interface}, which is not described")
-        if 32 + captured > length:
-            raise PcapngError(f"packet at offset {at} holds {captured} bytes but its block is shorter")
-        start = pos + 28
-        options = start + captured + (-captured % 4)
-        stop = pos + length - 4
-        bits: int = Direction.UNKNOWN
-        if stop - options == 12:
-            code, size, value, end = _FLAGS[order].unpack_from(buffer, options)
-            if code == _EPB_FLAGS and size == 4 and end == _OPT_END:
-                bits = _DIRECTIONS[value & _DIRECTION_MASK]
-            else:
-                bits = _packet_direction(bytes(buffer[options:stop]), order, at + 28 + captured)
-        elif stop != options:
-            bits = _packet_direction(bytes(buffer[options:stop]), order, at + 28 + captured)
-        resolution = known[interface].resolution
-        ticks = high << 32 | low
-        found.starts.append(start)
-        found.stops.append(start + captured)
-        found.stamps.append(ticks if resolution == 1_000_000 else ticks * 1_000_000 // resolution)
-        found.directions.append(bits)
-        found.interfaces.append(interface)
-        found.originals.append(original)
 
     def _other(self, found: _Found, kind: int, pos: int, length: int, at: int) -> None:
         """A block other than a whole Enhanced Packet Block: read by _Reader (a Simple Packet
