@@ -21,7 +21,7 @@ what `ilahrs.columns` (numpy) adds for the same capture beyond the columns it re
 
 Last, `ilahrs decode` of a two-direction pcapng capture to CSV (commands, answers and --two-way
 output frames, the device model's): messages/s message by message and with the output decoded
-as columns (ColumnarCapture).
+as columns (ColumnarCapture, the packets read as arrays: Source.packets), as `ilahrs decode` does.
 
     .venv/bin/python bench/python/bench_decode.py [--frames N] [--repeat R] [--rss-mib M] [--two-way N]
 """
@@ -282,8 +282,8 @@ def two_way_section(count: int) -> None:
 
         def columnar() -> int:
             decoder = decode.ColumnarCapture(io.StringIO(), kinds, variant, raw=False)
-            for chunk in capture.open_source(str(path)).chunks():
-                decoder.feed(chunk)
+            for found in capture.open_source(str(path)).packets():
+                decoder.feed_packets(found)
             decoder.finish()
             return sum(decoder.counts.values())
 

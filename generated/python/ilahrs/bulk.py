@@ -30,33 +30,39 @@ from typing import Any, Final, TypeVar
 from .codec import PayloadBase, maker
 from .errors import ErrorKind, IlahrsError, brief, require_flag
 from .frame import (
-    CHECKSUM_SIZE,
     HEADER,
     HEADER_SIZE,
     LENGTH_BIAS,
-    MAX_MESSAGE_LENGTH,
-    MESSAGE_LENGTH_OFFSET,
     MESSAGE_TYPE_OFFSET,
-    MIN_MESSAGE_LENGTH,
     PAYLOAD_OFFSET,
-    RESERVED_OFFSET,
-    STRICT_RESERVED,
     MessageType,
+    frame_at,
 )
+from .payloads import PAYLOADS
 
-__all__ = ["decode_output", "payload_offsets"]
+__all__ = ["capture_bytes", "decode_output", "payload_class", "payload_offsets", "tables_by_size"]
 
 _P = TypeVar("_P")
-_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 _DATA: Final = int(MessageType.DATA)
-_LENGTH_HIGH: Final = MESSAGE_LENGTH_OFFSET + 1
 _BATCH: Final = 4096
 """decode_output makes the blocks in batches of this many."""
 
 Capture = bytes | bytearray | memoryview
 
 
-def _capture(data: object) -> bytes | bytearray:
+def tables_by_size(direction: str) -> dict[int, tuple[str, ...]]:
+    """The payload tables sent in `direction` ("device_to_host" or "host_to_device") by payload
+    size: the one place a frame's size is mapped to the tables it may hold."""
+    sizes: dict[int, tuple[str, ...]] = {}
+    for name, table in PAYLOADS.items():
+        if direction == table.DIRECTION:
+            sizes[table.SIZE] = (*sizes.get(table.SIZE, ()), name)
+    return sizes
+
+
+def capture_bytes(data: object) -> bytes | bytearray:
+    """A capture given as a byte string, as bytes or bytearray; IlahrsError(MALFORMED) for
+    anything else."""
     if isinstance(data, (bytes, bytearray)):
         return data
     if isinstance(data, memoryview):
@@ -65,7 +71,8 @@ def _capture(data: object) -> bytes | bytearray:
     raise IlahrsError(ErrorKind.MALFORMED, None, "data", detail)
 
 
-def _payload_class(payload: object) -> type[Any]:
+def payload_class(payload: object) -> type[Any]:
+    """`payload` if it is a payload class; IlahrsError(MALFORMED) otherwise."""
     if isinstance(payload, type) and issubclass(payload, PayloadBase):
         return payload
     raise IlahrsError(ErrorKind.MALFORMED, None, "payload", f"{brief(payload)} is not a payload class")
@@ -75,31 +82,22 @@ def payload_offsets(data: Capture, size: int, *, strict: bool = False) -> Iterat
     """Where the payload of each accepted DATA frame with a `size`-byte payload starts in `data`,
     in order. The frames are those `StreamDecoder(strict=strict)` accepts when fed `data` and
     finished: a valid $PAHR sentence never holds a frame header, so frames alone decide."""
-    return _offsets(_capture(data), size, require_flag(strict, "strict"))
+    return _offsets(capture_bytes(data), size, require_flag(strict, "strict"))
 
 
 def _offsets(data: bytes | bytearray, size: int, strict: bool = False) -> Iterator[int]:
     find = data.find
     total = len(data)
-    wanted = size + LENGTH_BIAS
-    refuse = STRICT_RESERVED if strict else {}
+    wanted = HEADER_SIZE + size + LENGTH_BIAS
     pos = find(HEADER)
     while pos >= 0:
-        if pos + PAYLOAD_OFFSET <= total and data[pos + MESSAGE_TYPE_OFFSET] in _MESSAGE_TYPES:
-            length = data[pos + MESSAGE_LENGTH_OFFSET] | data[pos + _LENGTH_HIGH] << 8
-            end = pos + HEADER_SIZE + length
-            if MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH and end <= total:
-                at = end - CHECKSUM_SIZE
-                if sum(data[pos + HEADER_SIZE : at]) & 0xFFFF == data[at] | data[at + 1] << 8:
-                    reserved = data[pos + RESERVED_OFFSET]
-                    if refuse and refuse.get(data[pos + MESSAGE_TYPE_OFFSET], reserved) != reserved:
-                        pos = find(HEADER, pos + 1)  # no frame when strict (E42)
-                        continue
-                    if length == wanted and data[pos + MESSAGE_TYPE_OFFSET] == _DATA:
-                        yield pos + PAYLOAD_OFFSET
-                    pos = find(HEADER, end)
-                    continue
-        pos = find(HEADER, pos + 1)
+        used = frame_at(data, pos, total, strict=strict)
+        if used > 0:
+            if used == wanted and data[pos + MESSAGE_TYPE_OFFSET] == _DATA:
+                yield pos + PAYLOAD_OFFSET
+            pos = find(HEADER, pos + used)
+        else:
+            pos = find(HEADER, pos + 1)
 
 
 def decode_output(data: Capture, payload: type[_P], *, strict: bool = False) -> Iterator[_P]:
@@ -108,8 +106,8 @@ def decode_output(data: Capture, payload: type[_P], *, strict: bool = False) -> 
     refuse data frames whose reserved byte is not the AHRS's, E42).
     IlahrsError(MALFORMED) at once for a capture that is not a byte string or a `payload` that is
     not a payload class."""
-    capture = _capture(data)
-    cls = _payload_class(payload)
+    capture = capture_bytes(data)
+    cls = payload_class(payload)
     return _decode(capture, cls, require_flag(strict, "strict"))
 
 

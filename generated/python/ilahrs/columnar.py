@@ -59,7 +59,7 @@ from itertools import accumulate
 from types import ModuleType
 from typing import Any, Final
 
-from .bulk import Capture, _capture, _payload_class
+from .bulk import Capture, capture_bytes, payload_class, tables_by_size
 from .codec import FieldInfo, Payload, PayloadBase, field_kind, variant_of
 from .encodings import VARIANTS, Variant
 from .errors import ErrorKind, IlahrsError, brief
@@ -73,7 +73,10 @@ from .frame import (
     MESSAGE_TYPE_OFFSET,
     MIN_MESSAGE_LENGTH,
     PAYLOAD_OFFSET,
+    RESERVED_OFFSET,
+    STRICT_RESERVED,
     MessageType,
+    frame_at,
 )
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from .payloads import PAYLOADS
@@ -116,10 +119,10 @@ def columns(
     string or a damaged pcapng file, a `payload` that is not a payload class or an unknown backend
     (or numpy asked for and not installed); IlahrsError(OUT_OF_RANGE) for a `variant` that is not
     one."""
-    cls = _payload_class(payload)
+    cls = payload_class(payload)
     found = variant_of(variant)
     numpy = numpy_for(backend)
-    recording = Recording.of(_capture(data))
+    recording = Recording.of(capture_bytes(data))
     scanner = Scanner(numpy, sentences=False)
     kind = KINDS.index(cls.NAME)
     wanted = HEADER_SIZE + cls.SIZE + LENGTH_BIAS
@@ -139,10 +142,10 @@ def columns_by_kind(
     """Every payload table's blocks and every $PAHR sentence in the device-to-host capture `data`
     as a column set per kind (see the module's note), in `KINDS` order, kinds not found left out.
     Errors as `columns`'s (a non-payload `output` is MALFORMED)."""
-    table = None if output is None else _payload_class(output).NAME
+    table = None if output is None else payload_class(output).NAME
     found = variant_of(variant)
     numpy = numpy_for(backend)
-    recording = Recording.of(_capture(data))
+    recording = Recording.of(capture_bytes(data))
     scanner = Scanner(numpy, output=table)
     classes = {code: PAYLOADS[name] for code, name in enumerate(KINDS[:SENTENCE])}
     sets = _Sets(numpy, classes, found)
@@ -253,24 +256,24 @@ class Scanner:
     `scan(data)` decides the messages starting in `data` up to MAX_MESSAGE_SIZE before its end (all
     of it with `final`), returns them as Windows and says how far it decided (`decided`, relative
     to `data`); the next call continues with the bytes from there. `output` (a table name) gives
-    frames of its size that table, as with a host that sent the output's command."""
+    frames of its size that table, as with a host that sent the output's command. `strict`: the
+    messages of a `StreamDecoder(strict=True)` (E42)."""
 
-    def __init__(self, numpy: ModuleType | None, *, sentences: bool = True, output: str | None = None) -> None:
+    def __init__(
+        self, numpy: ModuleType | None, *, sentences: bool = True, output: str | None = None, strict: bool = False
+    ) -> None:
         self.numpy = numpy
         self.sentences = sentences
+        self.strict = strict
         self.base = 0
         """Offset in the capture of the next `data` given."""
         self.reached = 0
         """Offset in the capture of the end of the last accepted message."""
         self.decided = 0
-        sizes: dict[int, list[int]] = {}
-        for code, name in enumerate(KINDS[:SENTENCE]):
-            if PAYLOADS[name].DIRECTION == "device_to_host":
-                sizes.setdefault(HEADER_SIZE + PAYLOADS[name].SIZE + LENGTH_BIAS, []).append(code)
         by_length = [UNEXPLAINED] * (max(HEADER_SIZE + MAX_MESSAGE_LENGTH, MAX_MESSAGE_SIZE) + 1)
-        for length, codes in sizes.items():
-            if len(codes) == 1:
-                by_length[length] = codes[0]
+        for size, names in tables_by_size("device_to_host").items():
+            if len(names) == 1:
+                by_length[HEADER_SIZE + size + LENGTH_BIAS] = KINDS.index(names[0])
         if output is not None:
             by_length[HEADER_SIZE + PAYLOADS[output].SIZE + LENGTH_BIAS] = KINDS.index(output)
         self._by_length = by_length
@@ -288,9 +291,10 @@ class Scanner:
             end = min(total, high + MAX_MESSAGE_SIZE)
             reached = self.reached - self.base
             if numpy is None:
-                window = _scan_stdlib(data, low, high, end, reached, sentences=self.sentences)
+                window = _scan_stdlib(data, low, high, end, reached, sentences=self.sentences, strict=self.strict)
             else:
-                window = _scan_numpy(numpy, data, buf, (low, high, end), reached, sentences=self.sentences)
+                span = (low, high, end)
+                window = _scan_numpy(numpy, data, buf, span, reached, sentences=self.sentences, strict=self.strict)
             if len(window.starts):
                 self.reached = self.base + int(window.starts[-1]) + int(window.lengths[-1])
             self._finish(window)
@@ -331,7 +335,9 @@ def _sentence(data: bytes | bytearray, pos: int, end: int) -> PahrSentence | Non
         return None
 
 
-def _scan_stdlib(data: bytes | bytearray, low: int, high: int, end: int, reached: int, *, sentences: bool) -> Window:
+def _scan_stdlib(
+    data: bytes | bytearray, low: int, high: int, end: int, reached: int, *, sentences: bool, strict: bool = False
+) -> Window:
     """The messages starting in low..high, the bytes up to `end` known, none before `reached`."""
     starts: list[int] = []
     lengths: list[int] = []
@@ -351,7 +357,7 @@ def _scan_stdlib(data: bytes | bytearray, low: int, high: int, end: int, reached
             break
         used = 0
         if at == frame:
-            used = _frame(data, at, end)
+            used = max(frame_at(data, at, end, strict=strict), 0)
             if used:
                 types.append(data[at + MESSAGE_TYPE_OFFSET])
         else:
@@ -375,20 +381,6 @@ def _scan_stdlib(data: bytes | bytearray, low: int, high: int, end: int, reached
     return Window(None, data, starts, lengths, types, sentences=found)
 
 
-def _frame(data: bytes | bytearray, pos: int, end: int) -> int:
-    """The size of the valid frame at `pos` (its bytes before `end`), 0 if none."""
-    if pos + PAYLOAD_OFFSET > end or data[pos + MESSAGE_TYPE_OFFSET] not in _MESSAGE_TYPES:
-        return 0
-    length = data[pos + MESSAGE_LENGTH_OFFSET] | data[pos + _LENGTH_HIGH] << 8
-    stop = pos + HEADER_SIZE + length
-    if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH or stop > end:
-        return 0
-    at = stop - CHECKSUM_SIZE
-    if sum(data[pos + HEADER_SIZE : at]) & 0xFFFF != data[at] | data[at + 1] << 8:
-        return 0
-    return stop - pos
-
-
 def _matches(numpy: ModuleType, buf: Any, span: tuple[int, int, int], pattern: bytes) -> Any:
     """Where `pattern` starts in low..high, wholly before `end` (`span`: low, high, end)."""
     low, high, end = span
@@ -402,9 +394,18 @@ def _matches(numpy: ModuleType, buf: Any, span: tuple[int, int, int], pattern: b
 
 
 def _scan_numpy(
-    numpy: ModuleType, data: bytes | bytearray, buf: Any, span: tuple[int, int, int], reached: int, *, sentences: bool
+    numpy: ModuleType,
+    data: bytes | bytearray,
+    buf: Any,
+    span: tuple[int, int, int],
+    reached: int,
+    *,
+    sentences: bool,
+    strict: bool = False,
 ) -> Window:
-    """_scan_stdlib with numpy: every valid message is found at once, then the leftmost kept."""
+    """_scan_stdlib with numpy: every valid message is found at once, then the leftmost kept. The
+    frames are those `frame_at` accepts, its rule checked on every candidate at once (property
+    tested against it: tests/test_frame_rule.py)."""
     low, high, end = span
     starts = _matches(numpy, buf, (max(low, reached), high, end), HEADER)
     starts = starts[starts + PAYLOAD_OFFSET <= end]
@@ -423,6 +424,9 @@ def _scan_numpy(
         at = starts + length - CHECKSUM_SIZE
         sent = buf[at].astype(numpy.uint16) | buf[at + 1].astype(numpy.uint16) << 8
         ok = (sums[at - first] - sums[starts + HEADER_SIZE - first]) == sent
+        if strict:
+            for kind, reserved in STRICT_RESERVED.items():
+                ok &= (types != kind) | (buf[starts + RESERVED_OFFSET] == reserved)
         starts, types, length = starts[ok], types[ok], length[ok]
     found: dict[int, PahrSentence] = {}
     if sentences:

@@ -39,6 +39,11 @@ from .spec import (
 )
 
 __all__ = [
+    "BAD_CHECKSUM",
+    "BAD_HEADER",
+    "BAD_LENGTH",
+    "BAD_MESSAGE_TYPE",
+    "BAD_RESERVED",
     "CHECKSUM_SIZE",
     "FRAME_OVERHEAD",
     "HEADER",
@@ -52,12 +57,15 @@ __all__ = [
     "MIN_FRAME_SIZE",
     "MIN_MESSAGE_LENGTH",
     "MIN_PAYLOAD_SIZE",
+    "NEED_MORE",
     "PAYLOAD_OFFSET",
+    "REFUSALS",
     "RESERVED_OFFSET",
     "STRICT_RESERVED",
     "Frame",
     "MessageType",
     "checksum",
+    "frame_at",
 ]
 
 _LENGTH: Final = struct.Struct("<H")
@@ -100,40 +108,15 @@ class Frame:
         data = require_bytes(data, "data")
         require_flag(strict, "strict")
         size = len(data)
-        for index, expected in enumerate(HEADER):
-            if size <= index:
-                raise IlahrsError(ErrorKind.TRUNCATED, size, None, "input ends inside the header")
-            if data[index] != expected:
-                detail = f"byte {data[index]:#04x}, expected {expected:#04x}"
-                raise IlahrsError(ErrorKind.BAD_HEADER, index, "header", detail)
-        if size < PAYLOAD_OFFSET:
-            raise IlahrsError(ErrorKind.TRUNCATED, size, None, "input ends before the message length")
-        message_type = data[MESSAGE_TYPE_OFFSET]
-        if message_type not in _MESSAGE_TYPES:
-            detail = f"message type {message_type}"
-            raise IlahrsError(ErrorKind.BAD_MESSAGE_TYPE, MESSAGE_TYPE_OFFSET, "message_type", detail)
-        (length,) = _LENGTH.unpack_from(data, MESSAGE_LENGTH_OFFSET)
-        if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH:
-            raise IlahrsError(
-                ErrorKind.BAD_LENGTH,
-                MESSAGE_LENGTH_OFFSET,
-                "message_length",
-                f"message length {length} outside {MIN_MESSAGE_LENGTH}..{MAX_MESSAGE_LENGTH}",
-            )
-        end = HEADER_SIZE + length
-        if size < end:
-            raise IlahrsError(ErrorKind.TRUNCATED, size, None, f"the frame needs {end} bytes")
-        at = end - CHECKSUM_SIZE
-        (sent,) = _LENGTH.unpack_from(data, at)
-        computed = sum(data[HEADER_SIZE:at]) & 0xFFFF
-        if sent != computed:
-            raise IlahrsError(ErrorKind.BAD_CHECKSUM, at, "checksum", f"sent {sent:#06x}, computed {computed:#06x}")
-        if size > end:
-            raise IlahrsError(ErrorKind.TRAILING_DATA, end, None, f"{size - end} bytes after the frame")
-        reserved = data[RESERVED_OFFSET]
-        if strict and STRICT_RESERVED.get(message_type, reserved) != reserved:
-            detail = f"reserved byte {reserved:#04x}, the AHRS sends {STRICT_RESERVED[message_type]:#04x}"
-            raise IlahrsError(ErrorKind.BAD_RESERVED, RESERVED_OFFSET, "reserved", detail)
+        found = frame_at(data, 0, size, strict=strict)
+        if found < 0:
+            if found != BAD_RESERVED or size <= _frame_size(data):
+                raise _refusal(data, found)
+            found = _frame_size(data)
+        if size > found:
+            raise IlahrsError(ErrorKind.TRAILING_DATA, found, None, f"{size - found} bytes after the frame")
+        at = found - CHECKSUM_SIZE
+        message_type, reserved = data[MESSAGE_TYPE_OFFSET], data[RESERVED_OFFSET]
         return cls(message_type, data[PAYLOAD_OFFSET:at], reserved)
 
     def build(self) -> bytes:
@@ -176,6 +159,109 @@ class Frame:
         """The checksum this frame carries on the wire."""
         self._check_types()
         return sum(self._body()) & 0xFFFF
+
+
+NEED_MORE: Final = -1
+"""`frame_at`: the bytes so far may begin a frame; more are needed to tell."""
+BAD_HEADER: Final = -2
+"""`frame_at`: not a frame, its header is not HEADER."""
+BAD_MESSAGE_TYPE: Final = -3
+"""`frame_at`: not a frame, its message type is not one."""
+BAD_LENGTH: Final = -4
+"""`frame_at`: not a frame, its message length is outside MIN_MESSAGE_LENGTH..MAX_MESSAGE_LENGTH."""
+BAD_CHECKSUM: Final = -5
+"""`frame_at`: not a frame, its checksum fails."""
+BAD_RESERVED: Final = -6
+"""`frame_at`: not a frame when decoding is strict, its reserved byte is not the AHRS's (E42)."""
+REFUSALS: Final = {
+    BAD_HEADER: ErrorKind.BAD_HEADER,
+    BAD_MESSAGE_TYPE: ErrorKind.BAD_MESSAGE_TYPE,
+    BAD_LENGTH: ErrorKind.BAD_LENGTH,
+    BAD_CHECKSUM: ErrorKind.BAD_CHECKSUM,
+    BAD_RESERVED: ErrorKind.BAD_RESERVED,
+    NEED_MORE: ErrorKind.TRUNCATED,
+}
+"""The error kind of each answer of `frame_at` that is not a frame."""
+
+
+def frame_at(
+    data: bytes | bytearray | memoryview, pos: int = 0, end: int | None = None, *, strict: bool = False
+) -> int:
+    """The frame rule, in the order spec/README.md gives its checks: the size of the valid frame
+    that starts at `pos` in data[:end] (end: len(data)), a positive number; NEED_MORE if the bytes
+    up to `end` may begin one and more are needed to tell; else why there is none (BAD_HEADER,
+    BAD_MESSAGE_TYPE, BAD_LENGTH, BAD_CHECKSUM, BAD_RESERVED: negative, REFUSALS gives their error
+    kinds). `strict`: a frame whose reserved byte is not the one the AHRS writes in frames of its
+    message type is none (STRICT_RESERVED, E42). Every decoder of this package decides with it.
+
+    >>> frame_at(bytes.fromhex("00 AA 55 01 3C 09 00 01 02 03 4C 00"), 1)
+    11
+    >>> frame_at(bytes.fromhex("AA 55 01 3C 09 00 01 02 03 4C 00"), strict=True) == BAD_RESERVED
+    True
+    >>> frame_at(bytes.fromhex("AA 55 01 3C 09 00 01"), 0) == NEED_MORE
+    True
+    """
+    available = (len(data) if end is None else end) - pos
+    if available < PAYLOAD_OFFSET or data[pos : pos + HEADER_SIZE] != HEADER:
+        for index, expected in enumerate(HEADER):
+            if available <= index:
+                return NEED_MORE
+            if data[pos + index] != expected:
+                return BAD_HEADER
+        if available < PAYLOAD_OFFSET:
+            return NEED_MORE
+    message_type = data[pos + MESSAGE_TYPE_OFFSET]
+    if message_type not in _MESSAGE_TYPES:
+        return BAD_MESSAGE_TYPE
+    length = data[pos + MESSAGE_LENGTH_OFFSET] | data[pos + MESSAGE_LENGTH_OFFSET + 1] << 8
+    if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH:
+        return BAD_LENGTH
+    total = HEADER_SIZE + length
+    if available < total:
+        return NEED_MORE
+    at = pos + total - CHECKSUM_SIZE
+    if sum(data[pos + HEADER_SIZE : at]) & 0xFFFF != data[at] | data[at + 1] << 8:
+        return BAD_CHECKSUM
+    if strict:
+        reserved = data[pos + RESERVED_OFFSET]
+        if STRICT_RESERVED.get(message_type, reserved) != reserved:
+            return BAD_RESERVED
+    return total
+
+
+def _frame_size(data: bytes | bytearray | memoryview) -> int:
+    """The size the message length of the frame at the start of `data` gives it."""
+    (length,) = _LENGTH.unpack_from(data, MESSAGE_LENGTH_OFFSET)
+    return HEADER_SIZE + int(length)
+
+
+def _refusal(data: bytes | bytearray | memoryview, found: int) -> IlahrsError:
+    """The error Frame.parse raises for `data`, which frame_at answered `found` (not a frame)."""
+    size = len(data)
+    kind = REFUSALS[found]
+    if found == BAD_HEADER or (found == NEED_MORE and size < HEADER_SIZE):
+        index = next(i for i, byte in enumerate(HEADER) if i >= size or data[i] != byte)
+        if index >= size:
+            return IlahrsError(kind, size, None, "input ends inside the header")
+        return IlahrsError(kind, index, "header", f"byte {data[index]:#04x}, expected {HEADER[index]:#04x}")
+    if found == NEED_MORE and size < PAYLOAD_OFFSET:
+        return IlahrsError(kind, size, None, "input ends before the message length")
+    if found == NEED_MORE:
+        return IlahrsError(kind, size, None, f"the frame needs {_frame_size(data)} bytes")
+    if found == BAD_MESSAGE_TYPE:
+        return IlahrsError(kind, MESSAGE_TYPE_OFFSET, "message_type", f"message type {data[MESSAGE_TYPE_OFFSET]}")
+    if found == BAD_LENGTH:
+        length = _frame_size(data) - HEADER_SIZE
+        detail = f"message length {length} outside {MIN_MESSAGE_LENGTH}..{MAX_MESSAGE_LENGTH}"
+        return IlahrsError(kind, MESSAGE_LENGTH_OFFSET, "message_length", detail)
+    at = _frame_size(data) - CHECKSUM_SIZE
+    if found == BAD_CHECKSUM:
+        (sent,) = _LENGTH.unpack_from(data, at)
+        computed = sum(data[HEADER_SIZE:at]) & 0xFFFF
+        return IlahrsError(kind, at, "checksum", f"sent {sent:#06x}, computed {computed:#06x}")
+    reserved, message_type = data[RESERVED_OFFSET], data[MESSAGE_TYPE_OFFSET]
+    detail = f"reserved byte {reserved:#04x}, the AHRS sends {STRICT_RESERVED[message_type]:#04x}"
+    return IlahrsError(kind, RESERVED_OFFSET, "reserved", detail)
 
 
 def _is_int(value: object) -> bool:

@@ -40,10 +40,11 @@ import sys
 import time
 from bisect import bisect_right
 from collections import Counter
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any, Final, TextIO
 
+from ..bulk import tables_by_size
 from ..codec import Payload, date_text, field_kind
 from ..columnar import (
     COMMAND,
@@ -60,21 +61,20 @@ from ..commands import COMMAND_SET, COMMANDS, decode_command
 from ..encodings import Variant, calibration_accuracy_deg, calibration_succeeded
 from ..errors import ErrorKind, IlahrsError
 from ..frame import (
-    CHECKSUM_SIZE,
+    BAD_CHECKSUM as FRAME_BAD_CHECKSUM,
+)
+from ..frame import (
     HEADER,
     HEADER_SIZE,
-    MAX_MESSAGE_LENGTH,
     MESSAGE_LENGTH_OFFSET,
-    MESSAGE_TYPE_OFFSET,
-    MIN_MESSAGE_LENGTH,
+    NEED_MORE,
     PAYLOAD_OFFSET,
-    RESERVED_OFFSET,
-    STRICT_RESERVED,
     MessageType,
+    frame_at,
 )
 from ..nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from ..payloads import PAYLOADS
-from ..pcapng import Direction
+from ..pcapng import Direction, Packets
 from ..session.host import Acknowledged, DataBlock, Discarded, Host, HostEvent, Output, ProtocolError
 from ..statemachine import INITIAL, OUTPUT_FORMATS, command_event
 from ..stream import IDLE_TIMEOUT, StreamDecoder, StreamEvent
@@ -197,16 +197,8 @@ def output_table(command: str) -> str | None:
     return OUTPUT_FORMATS[COMMANDS[name].starts_output or ""]
 
 
-def _by_size(direction: str) -> Mapping[int, list[str]]:
-    sizes: dict[int, list[str]] = {}
-    for name, table in PAYLOADS.items():
-        if direction == table.DIRECTION:
-            sizes.setdefault(table.SIZE, []).append(name)
-    return sizes
-
-
-_INBOUND_SIZES: Final = _by_size("device_to_host")
-_OUTBOUND_SIZES: Final = _by_size("host_to_device")
+_INBOUND_SIZES: Final = tables_by_size("device_to_host")
+_OUTBOUND_SIZES: Final = tables_by_size("host_to_device")
 
 
 @dataclass(frozen=True, slots=True)
@@ -233,15 +225,7 @@ Region = tuple[int, int, str]
 def _starts_frame(data: bytes | bytearray, pos: int) -> bool:
     """Whether a frame may start at `pos`: its header, a message type and a length that can be (as
     far as the bytes go)."""
-    head = bytes(data[pos : pos + PAYLOAD_OFFSET])
-    if not (head + HEADER[len(head) :]).startswith(HEADER):
-        return False
-    if len(head) > MESSAGE_TYPE_OFFSET and head[MESSAGE_TYPE_OFFSET] not in _MESSAGE_TYPES:
-        return False
-    if len(head) < PAYLOAD_OFFSET:
-        return True
-    length = head[MESSAGE_LENGTH_OFFSET] | head[MESSAGE_LENGTH_OFFSET + 1] << 8
-    return MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH
+    return frame_at(data, pos, min(len(data), pos + PAYLOAD_OFFSET)) == NEED_MORE
 
 
 def _starts_sentence(data: bytes | bytearray, pos: int) -> bool:
@@ -249,7 +233,7 @@ def _starts_sentence(data: bytes | bytearray, pos: int) -> bool:
     return PREFIX.startswith(head)
 
 
-_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
+_LENGTH_HIGH: Final = MESSAGE_LENGTH_OFFSET + 1
 _STARTS: Final = ((HEADER[0], _starts_frame), (PREFIX[0], _starts_sentence))
 
 
@@ -297,13 +281,11 @@ def _region_at(run: bytes | bytearray, pos: int, closed: bool) -> tuple[str, int
     """The reason and end of the damaged region at `pos`; None if more bytes could change them."""
     size = len(run)
     if _starts_frame(run, pos):
-        stop = size + 1
-        if size - pos >= PAYLOAD_OFFSET:
-            stop = pos + HEADER_SIZE + (run[pos + MESSAGE_LENGTH_OFFSET] | run[pos + MESSAGE_LENGTH_OFFSET + 1] << 8)
-        if stop <= size:
-            at = stop - CHECKSUM_SIZE
-            good = sum(run[pos + HEADER_SIZE : at]) & 0xFFFF == run[at] | run[at + 1] << 8
-            return (BAD_RESERVED if good else BAD_CHECKSUM), stop
+        found = frame_at(run, pos, size)  # a whole frame here was refused when strict (E42)
+        if found > 0:
+            return BAD_RESERVED, pos + found
+        if found == FRAME_BAD_CHECKSUM:
+            return BAD_CHECKSUM, pos + HEADER_SIZE + (run[pos + MESSAGE_LENGTH_OFFSET] | run[pos + _LENGTH_HIGH] << 8)
         return (TRUNCATED, _next_start(run, pos + 1)) if closed else None
     if _starts_sentence(run, pos):
         lf = run.find(b"\n", pos, pos + MAX_SENTENCE_LENGTH)
@@ -406,11 +388,11 @@ class _Splitter:
         self.base += decided
         return located
 
-    def note(self, before: int, data: bytes, when: float | None, packet: int | None) -> None:
-        """`before` bytes, then `data` (a packet), decoded elsewhere as whole messages."""
+    def note(self, before: int, size: int, when: float | None, packet: int | None) -> None:
+        """`before` bytes, then a packet of `size` bytes, decoded elsewhere as whole messages."""
         self.fed += before
         self._packets.append((self.fed, when, packet))
-        self.fed += len(data)
+        self.fed += size
         self.last = when
 
     def packet_of(self, offset: int) -> tuple[float | None, int | None]:
@@ -524,36 +506,40 @@ class CaptureDecoder:
                 return None
         return host.streaming()
 
-    def stream(self, chunks: list[Chunk], outputs: list[int], *, apply: bool) -> int:
-        """The host's clock through `chunks` from the device, outputs[i] output frames completed
-        by chunks[i] (`Host.streamed`): how many chunks pass with no deadline passing. `apply`:
-        move the clocks (the caller then gives the same chunks to `streamed`)."""
-        host = self._host
-        assert host is not None and self._last is not None
-        last = self._last
-        steps: list[int] = []
-        for chunk in chunks:
-            now = chunk.time
-            assert now is not None
-            steps.append(round((now - last) * 1_000_000_000) if now > last else 0)
-            last = max(last, now)
-        done = host.streamed(steps, outputs[: len(steps)], apply=apply)
-        if apply:
-            self._last = last
-        return done
+    def steps(self, times: list[float], numpy: Any) -> list[int]:
+        """The steps of the host's clock (nanoseconds) to chunks from the device at `times`, as
+        `feed` takes them (a time before the latest one is no step)."""
+        assert self._last is not None
+        now = numpy.array(times, dtype=numpy.float64)
+        before = numpy.maximum.accumulate(numpy.concatenate(([self._last], now)))[:-1]
+        steps: list[int] = (
+            numpy.where(now > before, numpy.rint((now - before) * 1_000_000_000), 0).astype(numpy.int64).tolist()
+        )
+        return steps
 
-    def streamed(self, chunks: list[Chunk], table: str, count: int, size: int) -> None:
-        """`chunks` from the device were `count` whole output frames of `table` (`size` bytes),
-        decoded elsewhere: count them and move on as `feed` would have."""
+    def stream(self, steps: list[int], outputs: list[int], *, apply: bool) -> int:
+        """The host's clock through chunks from the device (`steps`: `steps` of their times),
+        outputs[i] output frames completed by chunk i (`Host.streamed`): how many chunks pass with
+        no deadline passing. `apply`: move the clocks (the caller then gives the same chunks to
+        `streamed`, which moves the decoder's clock)."""
+        host = self._host
+        assert host is not None
+        return host.streamed(steps, outputs[: len(steps)], apply=apply)
+
+    def streamed(self, chunks: _Run, table: str, count: int, size: int) -> None:
+        """The `chunks` from the device were `count` whole output frames of `table` (`size`
+        bytes), decoded elsewhere: count them and move on as `feed` would have."""
         start = self._start
         assert start is not None
         side, out = self._in, self._out
-        latest = max(chunk.time for chunk in chunks if chunk.time is not None)
+        latest = max(chunks.times)
+        assert self._last is not None
+        self._last = max(self._last, latest)
         if out.last is not None and latest - start - out.last >= IDLE_TIMEOUT:
             out.last = None  # nothing held: the idle line releases nothing
-        last = next(chunk for chunk in reversed(chunks) if chunk.data)
-        assert last.time is not None
-        side.note(size - len(last.data), last.data, last.time - start, last.packet)
+        last = max(i for i, n in enumerate(chunks.sizes) if n)
+        when = chunks.times[last]
+        side.note(size - chunks.sizes[last], chunks.sizes[last], when - start, chunks.packets[last])
         assert side.fed == side.base + size
         side.base += size
         side.forget(side.base)
@@ -664,7 +650,7 @@ class CaptureDecoder:
         inbound = direction == Direction.INBOUND
         if inbound and self._output is not None and size == PAYLOADS[self._output].SIZE:
             return self._output, PAYLOADS[self._output].parse(frame.payload)
-        candidates = (_INBOUND_SIZES if inbound else _OUTBOUND_SIZES).get(size, [])
+        candidates = (_INBOUND_SIZES if inbound else _OUTBOUND_SIZES).get(size, ())
         if len(candidates) == 1:
             return candidates[0], PAYLOADS[candidates[0]].parse(frame.payload)
         return UNDETERMINED, None
@@ -956,8 +942,7 @@ class _Values:
 
     def of(self, data: bytes | bytearray, base: int, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
         """Each column's values for the frames of table `cls` at `starts` (`data` starts at `base`)."""
-        simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
-        if not simple or any(info.encoding not in (None, "usw", "calibration_success") for info in cls.FIELDS):
+        if not _simple(cls):
             here = [at - base + PAYLOAD_OFFSET for at in starts]
             blocks = [cls.parse(data[at : at + cls.SIZE]) for at in here]
             made = [row_fields(block, self._variant, raw=self._raw) for block in blocks]
@@ -980,11 +965,49 @@ class _Values:
             values[info.name] = column
         return values
 
+    def texts(self, data: bytes | bytearray, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
+        """`of` (`data` from 0) as csv.writer writes the values (`_csv_text`), each distinct
+        value of a column written once (numpy; else as `of`)."""
+        numpy = self._numpy
+        if numpy is None or not _simple(cls):
+            return {name: list(map(_csv_text, column)) for name, column in self.of(data, 0, cls, starts).items()}
+        fields = scales(cls, None if self._raw else self._variant)
+        if self._raw:
+            fields = [(info, 1, None) for info, _, _ in fields]
+        columns = table_columns(numpy, data, numpy.array(starts, dtype=numpy.int64), cls, fields)
+        values: dict[str, list[Any]] = {}
+        for info, _, _ in fields:
+            distinct, where = numpy.unique(columns[info.name], return_inverse=True)
+            known = distinct.tolist()
+            if info.encoding == "calibration_success" and not self._raw:
+                values[ACCURACY] = _spread(numpy, [_csv_text(_accuracy(v)) for v in known], where)
+                values[info.name] = _spread(numpy, [_csv_text(_outcome(v)) for v in known], where)
+                continue
+            if info.encoding == "calibration_success":
+                values[ACCURACY] = [""] * len(starts)
+            if info.encoding == "usw" and not self._raw:
+                values[info.name] = _spread(numpy, [_csv_text(_usw(v)) for v in known], where)
+            else:
+                values[info.name] = _spread(numpy, [str(v) for v in known], where)
+        return values
+
     def _mapped(self, column: list[Any], function: Callable[[Any], object]) -> list[Any]:
         """`function` of each value, each distinct value computed once."""
         known = self._known.setdefault(function, {})
         known.update((value, function(value)) for value in set(column).difference(known))
         return list(map(known.__getitem__, column))
+
+
+def _simple(cls: type[Any]) -> bool:
+    """Whether the fields of `cls` are numbers with no encoding but the USW's and a calibration's."""
+    simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
+    return simple and all(info.encoding in (None, "usw", "calibration_success") for info in cls.FIELDS)
+
+
+def _spread(numpy: Any, texts: list[str], where: Any) -> list[str]:
+    """texts[i] for each i in `where`."""
+    result: list[str] = numpy.array(texts, dtype=object)[where].tolist()
+    return result
 
 
 class ColumnarCapture:
@@ -1018,10 +1041,9 @@ class ColumnarCapture:
         self._wanted = set(selected)
         self._writer = RowWriter(out, "csv", self._wanted, variant, raw=raw)
         self._columns = [*BASE_COLUMNS, *decode_columns(self._wanted)]
-        self._csv = csv.writer(out, lineterminator="\n")
+        self._out = out
         self._values = _Values(self._numpy, variant, raw)
-        self._held: list[Chunk] = []
-        self._size = 0
+        self._held = _Run()
         self._last_in: float | None = None
         self._misses = 0
 
@@ -1047,34 +1069,91 @@ class ColumnarCapture:
 
     def feed(self, chunk: Chunk) -> None:
         inbound = chunk.direction == Direction.INBOUND and chunk.time is not None
-        if self._held:
-            if inbound and self._size < _STRETCH and not self._idle(chunk):
-                self._hold(chunk)
+        self._packet(chunk.time, inbound, chunk.data, chunk)
+
+    def feed_packets(self, found: Packets) -> None:
+        """`feed` of each of the packets `found` (directions INBOUND or OUTBOUND, numbered from
+        found.first, as `Source.packets` gives them), with no object made for the packets the
+        columns decode."""
+        data, ends, stamps, directions = found.data, found.ends, found.stamps, found.directions
+        number = found.first
+        start = index = 0
+        count = len(ends)
+        inbound = Direction.INBOUND
+        while index < count:
+            end = ends[index]
+            when = stamps[index] / 1_000_000
+            held = self._held
+            if held.sizes and directions[index] == inbound:
+                # `_packet` of each packet while held ones are: the same rule, without calls.
+                origin = self.decoder.start
+                assert origin is not None
+                last = self._last_in
+                pieces, sizes, times, numbers = held.pieces, held.sizes, held.times, held.packets
+                total = held.total
+                while total < _STRETCH:
+                    if last is None:
+                        if self.decoder.in_idle(when):
+                            break
+                    elif (when - origin) - (last - origin) >= IDLE_TIMEOUT:
+                        break
+                    pieces.append(data[start:end])
+                    sizes.append(end - start)
+                    times.append(when)
+                    numbers.append(number + index)
+                    total += end - start
+                    if end > start:
+                        last = when
+                    start = end
+                    index += 1
+                    if index == count or directions[index] != inbound:
+                        break
+                    end = ends[index]
+                    when = stamps[index] / 1_000_000
+                held.total = total
+                self._last_in = last
+                if index == count:
+                    break
+                end = ends[index]
+                when = stamps[index] / 1_000_000
+            self._packet(when, directions[index] == inbound, data[start:end], None, number + index)
+            start = end
+            index += 1
+
+    def _packet(
+        self, when: float | None, inbound: bool, data: bytes, chunk: Chunk | None, number: int | None = None
+    ) -> None:
+        held = self._held
+        if held.sizes:
+            if inbound and held.total < _STRETCH and not self._idle(when):
+                self._hold(when, data, chunk.packet if chunk is not None else number)
                 return
             self._flush()
-        if inbound and self._numpy is not None and self._streaming() is not None and not self._idle(chunk):
-            self._hold(chunk)
+        if inbound and self._numpy is not None and self._streaming() is not None and not self._idle(when):
+            self._hold(when, data, chunk.packet if chunk is not None else number)
             return
+        if chunk is None:
+            chunk = Chunk(when, Direction.INBOUND if inbound else Direction.OUTBOUND, data, number)
         self._write(self.decoder.feed(chunk))
 
     def finish(self) -> None:
         self._flush()
         self._write(self.decoder.finish())
 
-    def _hold(self, chunk: Chunk) -> None:
-        self._held.append(chunk)
-        self._size += len(chunk.data)
-        if chunk.data:
-            self._last_in = chunk.time
+    def _hold(self, when: float | None, data: bytes, packet: int | None) -> None:
+        assert when is not None
+        self._held.add(when, data, packet)
+        if data:
+            self._last_in = when
 
-    def _idle(self, chunk: Chunk) -> bool:
-        """Whether the device's line was idle before `chunk` (E41): a message cannot span it."""
+    def _idle(self, when: float | None) -> bool:
+        """Whether the device's line was idle before a chunk at `when` (E41): a message cannot span it."""
         decoder = self.decoder
-        last = self._last_in if self._held else None
+        last = self._last_in if self._held.sizes else None
         if last is None or decoder.start is None:
-            return decoder.in_idle(chunk.time)
-        assert chunk.time is not None
-        return (chunk.time - decoder.start) - (last - decoder.start) >= IDLE_TIMEOUT
+            return decoder.in_idle(when)
+        assert when is not None
+        return (when - decoder.start) - (last - decoder.start) >= IDLE_TIMEOUT
 
     def _write(self, messages: list[Message]) -> None:
         wanted = self._wanted
@@ -1086,20 +1165,20 @@ class ColumnarCapture:
         return self.decoder.streaming()
 
     def _flush(self) -> None:
-        held, self._held, self._size, self._last_in = self._held, [], 0, None
-        while held:
+        held, self._held, self._last_in = self._held, _Run(), None
+        while held.sizes:
             done = self._columnar(held)
             if done:
                 self._misses = 0
-                held = held[done:]
+                held = held.after(done)
                 continue
             self._misses += 1
-            slow = min(len(held), 1 << min(self._misses, 12))  # damage: fewer rescans of the same bytes
-            for chunk in held[:slow]:
+            slow = min(len(held.sizes), 1 << min(self._misses, 12))  # damage: fewer rescans of the same bytes
+            for chunk in held.chunks(slow):
                 self._write(self.decoder.feed(chunk))
-            held = held[slow:]
+            held = held.after(slow)
 
-    def _columnar(self, held: list[Chunk]) -> int:
+    def _columnar(self, held: _Run) -> int:
         """Decode the leading chunks of `held` as columns, if they are whole output frames that
         arrive in time; how many chunks were decoded (0: none)."""
         decoder = self.decoder
@@ -1108,8 +1187,8 @@ class ColumnarCapture:
         if table is None or numpy is None:
             return 0
         cls = PAYLOADS[table]
-        data = b"".join(chunk.data for chunk in held)
-        scanner = Scanner(numpy, sentences=False, output=table)
+        data = held.joined()
+        scanner = Scanner(numpy, sentences=False, output=table, strict=self._strict)
         windows = scanner.scan(data, final=True)
         if not windows:
             return 0
@@ -1119,10 +1198,6 @@ class ColumnarCapture:
         ends = starts + lengths
         kinds = numpy.concatenate([w.kinds for w in windows])
         good = (types == int(MessageType.DATA)) & (kinds == KINDS.index(table))
-        if self._strict:
-            buf = numpy.frombuffer(data, dtype=numpy.uint8)
-            for kind, reserved in STRICT_RESERVED.items():
-                good &= (types != kind) | (buf[starts + RESERVED_OFFSET] == reserved)
         good[1:] &= starts[1:] == ends[:-1]
         if len(starts):
             good[0] &= int(starts[0]) == 0
@@ -1130,24 +1205,24 @@ class ColumnarCapture:
         count = int(bad[0]) if len(bad) else len(starts)
         if not count:
             return 0
-        sizes = [len(chunk.data) for chunk in held]
-        chunk_ends = numpy.cumsum(numpy.array(sizes, dtype=numpy.int64))
+        chunk_ends = numpy.cumsum(numpy.array(held.sizes, dtype=numpy.int64))
         aligned = numpy.flatnonzero(numpy.isin(chunk_ends, ends[:count]) & (chunk_ends > 0))
         if not len(aligned):
             return 0
         used = int(aligned[-1]) + 1
         arrived = numpy.searchsorted(chunk_ends, ends[:count] - 1, side="right")
         per_chunk = numpy.bincount(arrived, minlength=used)[:used].tolist()
-        used = decoder.stream(held[:used], per_chunk, apply=False)
+        steps = decoder.steps(held.times[:used], numpy)
+        used = decoder.stream(steps, per_chunk, apply=False)
         aligned = aligned[aligned < used]
         if not len(aligned):
             return 0
         used = int(aligned[-1]) + 1
         total = int(chunk_ends[used - 1])
         count = int(numpy.searchsorted(ends[:count], total, side="right"))
-        taken = held[:used]
         base = decoder.inbound_bytes
-        decoder.stream(taken, per_chunk[:used], apply=True)
+        taken = held.first(used)
+        decoder.stream(steps[:used], per_chunk[:used], apply=True)
         decoder.streamed(taken, table, count, total)
         if table in self._wanted:
             found = {"starts": starts[:count], "lengths": lengths[:count], "arrived": arrived[:count]}
@@ -1155,32 +1230,100 @@ class ColumnarCapture:
         return used
 
     def _rows(
-        self, data: bytes, taken: list[Chunk], *, starts: Any, lengths: Any, arrived: Any, cls: type[Any], base: int
+        self, data: bytes, taken: _Run, *, starts: Any, lengths: Any, arrived: Any, cls: type[Any], base: int
     ) -> None:
         """The CSV rows of the output frames at `starts` in `data` (the bytes of `taken`, from
         `base` in the device's bytes), each in the chunk `arrived` says."""
         start = self.decoder.start
         assert start is not None
-        stamps = [f"{round(chunk.time - start, 6):.6f}" for chunk in taken if chunk.time is not None]
-        packets = [chunk.packet for chunk in taken]
         at = arrived.tolist()
+        times, packets = taken.times, taken.packets
+        stamps = {i: f"{round(times[i] - start, 6):.6f}" for i in set(at)}
         local = starts.tolist()
-        count = len(local)
-        values = self._values.of(data, 0, cls, local)
-        blank = [""] * count
-        name = cls.NAME
-        base_columns = [
+        values = self._values.texts(data, cls, local)
+        columns: list[list[str]] = [
             [stamps[i] for i in at],
-            ["in"] * count,
-            [name] * count,
-            [base + offset for offset in local],
-            [packets[i] for i in at],
-            lengths.tolist(),
-            blank,
-            blank,
+            list(map(str, [base + offset for offset in local])),
+            [str(packets[i]) for i in at] if None not in packets else [_csv_text(packets[i]) for i in at],
+            list(map(str, lengths.tolist())),
         ]
-        fields = (values.get(c, blank) for c in self._columns[len(BASE_COLUMNS) :])
-        self._csv.writerows(zip(*base_columns, *fields, strict=True))
+        # A row is its values and constant fields joined by commas; each run of constant fields is
+        # one item (repeated), so each row joins few items.
+        layout: list[Any] = [columns[0], "in", _csv_text(cls.NAME), *columns[1:], "", ""]
+        for name in self._columns[len(BASE_COLUMNS) :]:
+            layout.append(values.get(name, ""))
+        items: list[Any] = []
+        for item in layout:
+            if isinstance(item, str) and items and isinstance(items[-1], str):
+                items[-1] += "," + item
+            else:
+                items.append(item)
+        count = len(at)
+        rows = zip(*([item] * count if isinstance(item, str) else item for item in items), strict=True)
+        self._out.write("".join([",".join(row) + "\n" for row in rows]))
+
+
+class _Run:
+    """Chunks from the device held to be decoded as columns: their bytes, sizes, times and
+    packet numbers."""
+
+    __slots__ = ("packets", "pieces", "sizes", "times", "total")
+
+    def __init__(self) -> None:
+        self.pieces: list[bytes] = []
+        self.sizes: list[int] = []
+        self.times: list[float] = []
+        self.packets: list[int | None] = []
+        self.total = 0
+
+    def add(self, when: float, data: bytes, packet: int | None) -> None:
+        self.pieces.append(data)
+        self.sizes.append(len(data))
+        self.times.append(when)
+        self.packets.append(packet)
+        self.total += len(data)
+
+    def joined(self) -> bytes:
+        """The bytes of every chunk, back to back."""
+        if len(self.pieces) != 1:
+            self.pieces = [b"".join(self.pieces)]
+        return self.pieces[0]
+
+    def first(self, count: int) -> _Run:
+        """The first `count` chunks."""
+        return self._part(0, count)
+
+    def after(self, count: int) -> _Run:
+        """The chunks after the first `count`."""
+        return self._part(count, len(self.sizes))
+
+    def _part(self, low: int, high: int) -> _Run:
+        run = _Run()
+        start = sum(self.sizes[:low])
+        run.sizes, run.times, run.packets = self.sizes[low:high], self.times[low:high], self.packets[low:high]
+        run.total = sum(run.sizes)
+        run.pieces = [self.joined()[start : start + run.total]]
+        return run
+
+    def chunks(self, count: int) -> list[Chunk]:
+        """The first `count` chunks as Chunks."""
+        data = self.joined()
+        result: list[Chunk] = []
+        start = 0
+        for size, when, packet in zip(self.sizes[:count], self.times, self.packets, strict=False):
+            result.append(Chunk(when, Direction.INBOUND, data[start : start + size], packet))
+            start += size
+        return result
+
+
+def _csv_text(value: object) -> str:
+    """One field as csv.writer (QUOTE_MINIMAL, lineterminator \\n) writes it."""
+    if value is None:
+        return ""
+    text = str(value)
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
 
 
 _STRETCH: Final = 1 << 20
@@ -1339,7 +1482,7 @@ def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: 
         strict=args.strict,
         start=args.output_format if known else None,
     )
-    failure = _drive(source, decoder.feed, decoder.finish, follow=False)
+    failure = _drive(source, decoder.feed_packets, decoder.finish, follow=False, packets=True)
     if failure is not None:
         raise failure
     for line in summary(decoder, "ilahrs decode"):
@@ -1348,16 +1491,17 @@ def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: 
 
 
 def _drive(
-    source: Source, feed: Callable[[Chunk], None], finish: Callable[[], None], *, follow: bool
+    source: Source, feed: Callable[[Any], None], finish: Callable[[], None], *, follow: bool, packets: bool = False
 ) -> CliError | None:
     """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input; a
     closed pipe (BrokenPipeError) goes on to `ilahrs.__main__.main`, as in every subcommand. Returns
-    the error that cut the capture short, if any (the messages before it are written)."""
+    the error that cut the capture short, if any (the messages before it are written).
+    `packets`: feed the packets of a pcapng file as arrays (`Source.packets`), not as Chunks."""
     progress = Progress(source)
     failure: CliError | None = None
     try:
         try:
-            for chunk in source.chunks(follow=follow):
+            for chunk in source.packets() if packets else source.chunks(follow=follow):
                 feed(chunk)
                 progress.update()
                 if follow:

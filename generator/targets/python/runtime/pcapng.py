@@ -29,20 +29,25 @@ readable up to its last complete block (`read(..., partial=True)`). Standard lib
 
 from __future__ import annotations
 
+import operator
 import struct
+from array import array
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from enum import IntEnum
+from itertools import accumulate
 from typing import BinaryIO, Final
 
 __all__ = [
     "LINKTYPE_ILAHRS",
     "MAX_BLOCK",
+    "BulkReader",
     "Capture",
     "Direction",
     "IncrementalReader",
     "Interface",
     "Packet",
+    "Packets",
     "PcapngError",
     "PcapngWriter",
     "line_description",
@@ -274,16 +279,71 @@ def _check_length(at: int, length: int) -> None:
         raise PcapngError(f"block at offset {at} claims {length} bytes, more than the {MAX_BLOCK >> 20} MiB allowed")
 
 
-class IncrementalReader:
-    """A pcapng file block by block, as its bytes arrive (a file that is still being written, a
-    pipe, a large file read in chunks): `feed(data)` returns the packets of the blocks it
-    completes; the bytes of an unfinished block are held (`pending`). Raises PcapngError as `read`
-    does, naming offsets in the whole file."""
+@dataclass(frozen=True, slots=True)
+class Packets:
+    """Consecutive packets of a file as arrays, no object per packet: `data` holds their bytes
+    back to back, packet i's being data[ends[i - 1]:ends[i]] (from 0 for the first); `stamps`
+    their timestamps (microseconds since the epoch), `directions` their Direction values (one
+    byte each), `interfaces` their interface numbers and `originals` their lengths on the line.
+    `first`: the number of the first one in the file, from 0."""
+
+    data: bytes
+    ends: array[int]
+    stamps: array[int]
+    directions: bytes
+    interfaces: array[int]
+    originals: array[int]
+    first: int = 0
+
+    def __len__(self) -> int:
+        return len(self.ends)
+
+    def packet(self, index: int) -> Packet:
+        """Packet `index` (from 0 in these) as an object."""
+        start = self.ends[index - 1] if index else 0
+        data = self.data[start : self.ends[index]]
+        direction = Direction(self.directions[index])
+        return Packet(self.stamps[index], direction, data, self.interfaces[index], self.originals[index])
+
+
+_BLOCK_HEAD: Final = {order: struct.Struct(order + "II") for order in "<>"}
+_EPB_HEAD: Final = {order: struct.Struct(order + "IIIII") for order in "<>"}
+_WORD: Final = {order: struct.Struct(order + "I") for order in "<>"}
+_MAGICS: Final = {struct.pack("<I", _MAGIC): "<", struct.pack(">I", _MAGIC): ">"}
+_FLAGS: Final = {order: struct.Struct(order + "HHII") for order in "<>"}
+"""An Enhanced Packet Block's options as ilahrs writes them: epb_flags, then opt_endofopt."""
+_DIRECTIONS: Final = bytes(
+    bits if bits in (Direction.INBOUND, Direction.OUTBOUND) else Direction.UNKNOWN for bits in range(4)
+)
+
+
+class _Found:
+    """Packets found in a reader's buffer: where their bytes are, and the rest of `Packets`."""
+
+    __slots__ = ("directions", "interfaces", "originals", "stamps", "starts", "stops")
+
+    def __init__(self) -> None:
+        self.starts: list[int] = []
+        self.stops: list[int] = []
+        self.stamps: array[int] = array("q")
+        self.directions = bytearray()
+        self.interfaces: array[int] = array("L")
+        self.originals: array[int] = array("q")
+
+
+class BulkReader:
+    """A pcapng file block by block, as its bytes arrive, its packets given as arrays (`Packets`):
+    for a reader of many packets (a long capture), with every check `read` makes and its error
+    messages. `feed(data)` returns the packets of the blocks it completes; the bytes of an
+    unfinished block are held (`pending`). A damaged block gives the packets before it, and its
+    PcapngError comes at the next `feed` or at `finish`, naming offsets in the whole file."""
 
     def __init__(self) -> None:
         self._reader = _Reader(b"")
         self._buffer = bytearray()
         self._offset = 0
+        self._count = 0
+        self._error: PcapngError | None = None
 
     @property
     def capture(self) -> Capture:
@@ -300,48 +360,177 @@ class IncrementalReader:
         """File offset of the first byte not yet part of a complete block."""
         return self._offset
 
-    def feed(self, data: bytes | bytearray | memoryview) -> list[Packet]:
+    def feed(self, data: bytes | bytearray | memoryview) -> Packets:
+        if self._error is not None:
+            raise self._error
         self._buffer += data
-        reader, buffer = self._reader, self._buffer
-        packets = reader.capture.packets
-        if self._offset == 0 and len(buffer) >= 4 and struct.unpack_from("<I", buffer)[0] != _SHB:
-            raise PcapngError("not a pcapng file (no section header block at offset 0)")
+        buffer = self._buffer
+        found = _Found()
         pos = 0
-        while len(buffer) - pos >= 12:
-            at = self._offset + pos
-            (kind,) = struct.unpack_from("<I", buffer, pos)
-            if kind == _SHB:
-                magic = bytes(buffer[pos + 8 : pos + 12])
-                if magic not in (struct.pack("<I", _MAGIC), struct.pack(">I", _MAGIC)):
-                    raise PcapngError(f"section header at offset {at} has no byte-order magic")
-                reader.order = "<" if magic == struct.pack("<I", _MAGIC) else ">"
-            kind, length = struct.unpack_from(reader.order + "II", buffer, pos)
-            _check_length(at, length)
-            if pos + length > len(buffer):
-                break
-            (trailer,) = struct.unpack_from(reader.order + "I", buffer, pos + length - 4)
-            if trailer != length:
-                raise PcapngError(f"block at offset {at}: its lengths differ ({length}, {trailer})")
-            body = bytes(buffer[pos + 8 : pos + length - 4])
-            handler = {_SHB: reader.section, _IDB: reader.interface, _EPB: reader.packet, _SPB: reader.simple_packet}
-            if kind in handler:
-                handler[kind](at, body)
-            pos += length
+        try:
+            pos = self._walk(found)
+        except PcapngError as exc:
+            self._error = exc
+            pos = exc.args[1]
+            exc.args = exc.args[:1]
+        view = memoryview(buffer)
+        try:
+            joined = b"".join(map(view.__getitem__, map(slice, found.starts, found.stops)))
+        finally:
+            view.release()
         del buffer[:pos]
         self._offset += pos
-        done = list(packets)
-        packets.clear()
-        return done
+        ends = array("q", accumulate(map(operator.sub, found.stops, found.starts)))
+        packets = Packets(
+            joined, ends, found.stamps, bytes(found.directions), found.interfaces, found.originals, self._count
+        )
+        self._count += len(ends)
+        if self._error is not None and not len(ends):
+            raise self._error
+        return packets
+
+    def _walk(self, found: _Found) -> int:  # noqa: PLR0912, PLR0915 - one loop per packet, no call
+        """Read the complete blocks in the buffer into `found`; where the first incomplete one
+        starts. A PcapngError carries, as its second argument, where the damaged block starts."""
+        reader, buffer = self._reader, self._buffer
+        size = len(buffer)
+        if self._offset == 0 and size >= 4 and _WORD["<"].unpack_from(buffer)[0] != _SHB:
+            raise PcapngError("not a pcapng file (no section header block at offset 0)", 0)
+        head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
+        epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
+        known = reader.capture.interfaces
+        starts, stops, stamps = found.starts, found.stops, found.stamps
+        directions, interfaces, originals = found.directions, found.interfaces, found.originals
+        pos = 0
+        while size - pos >= 12:
+            at = self._offset + pos
+            try:
+                kind, length = head.unpack_from(buffer, pos)  # the SHB's type reads the same either way
+                if kind == _SHB:
+                    magic = bytes(buffer[pos + 8 : pos + 12])
+                    if magic not in _MAGICS:
+                        raise PcapngError(f"section header at offset {at} has no byte-order magic")
+                    reader.order = _MAGICS[magic]
+                    head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
+                    epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
+                    kind, length = head.unpack_from(buffer, pos)
+                if length < 12 or length % 4 or length > MAX_BLOCK:
+                    _check_length(at, length)
+                if pos + length > size:
+                    break
+                (trailer,) = word.unpack_from(buffer, pos + length - 4)
+                if trailer != length:
+                    raise PcapngError(f"block at offset {at}: its lengths differ ({length}, {trailer})")
+                if kind == _EPB and length >= 32:
+                    # _Reader.packet, its checks in its order, into `found`
+                    interface, high, low, captured, original = epb.unpack_from(buffer, pos + 8)
+                    if interface >= len(known):
+                        raise PcapngError(f"packet at offset {at} names interface {interface}, which is not described")
+                    if 32 + captured > length:
+                        raise PcapngError(f"packet at offset {at} holds {captured} bytes but its block is shorter")
+                    start = pos + 28
+                    options = start + captured + (-captured % 4)
+                    stop = pos + length - 4
+                    bits: int = Direction.UNKNOWN
+                    if stop - options == 12:
+                        code, width, value, end = flags.unpack_from(buffer, options)
+                        if code == _EPB_FLAGS and width == 4 and end == _OPT_END:
+                            bits = _DIRECTIONS[value & _DIRECTION_MASK]
+                        else:
+                            bits = _packet_direction(bytes(buffer[options:stop]), reader.order, at + 28 + captured)
+                    elif stop != options:
+                        bits = _packet_direction(bytes(buffer[options:stop]), reader.order, at + 28 + captured)
+                    resolution = known[interface].resolution
+                    ticks = high << 32 | low
+                    starts.append(start)
+                    stops.append(start + captured)
+                    stamps.append(ticks if resolution == 1_000_000 else ticks * 1_000_000 // resolution)
+                    directions.append(bits)
+                    interfaces.append(interface)
+                    originals.append(original)
+                else:
+                    self._other(found, kind, pos, length, at)
+                    known = reader.capture.interfaces
+            except PcapngError as exc:
+                exc.args = (*exc.args[:1], pos)
+                raise
+            pos += length
+        return pos
+
+    def _other(self, found: _Found, kind: int, pos: int, length: int, at: int) -> None:
+        """A block other than a whole Enhanced Packet Block: read by _Reader (a Simple Packet
+        Block's packet into `found`), skipped if unknown."""
+        reader, buffer = self._reader, self._buffer
+        body = bytes(buffer[pos + 8 : pos + length - 4])
+        if kind in (_SHB, _IDB, _EPB):
+            {_SHB: reader.section, _IDB: reader.interface, _EPB: reader.packet}[kind](at, body)
+        elif kind == _SPB:
+            reader.simple_packet(at, body)
+            (original,) = _WORD[reader.order].unpack_from(buffer, pos + 8)
+            reader.capture.packets.clear()
+            found.starts.append(pos + 12)
+            found.stops.append(min(pos + 12 + original, pos + length - 4))
+            found.stamps.append(0)
+            found.directions.append(Direction.UNKNOWN)
+            found.interfaces.append(0)
+            found.originals.append(original)
 
     def finish(self, *, partial: bool = False) -> None:
-        """The input has ended: PcapngError if it ends inside a block (unless `partial`, which
-        marks the capture truncated)."""
+        """The input has ended: the error of a damaged block, if any; PcapngError if the input
+        ends inside a block (unless `partial`, which marks the capture truncated)."""
+        if self._error is not None:
+            raise self._error
         if self._offset == 0 and len(self._buffer) < 12:
             raise PcapngError("not a pcapng file (no section header block at offset 0)")
         if self._buffer:
             if not partial:
                 raise PcapngError(f"file ends inside the block at offset {self._offset} ({len(self._buffer)} bytes)")
             self._reader.capture.truncated = True
+
+
+def _packet_direction(options: bytes, order: str, at: int) -> int:
+    """The direction an Enhanced Packet Block's options give (the last epb_flags option)."""
+    direction = Direction.UNKNOWN
+    for code, value in _options(options, order, at):
+        if code == _EPB_FLAGS and len(value) == 4:
+            (flags,) = struct.unpack(order + "I", value)
+            direction = Direction(_DIRECTIONS[flags & _DIRECTION_MASK])
+    return direction
+
+
+class IncrementalReader:
+    """A pcapng file block by block, as its bytes arrive (a file that is still being written, a
+    pipe, a large file read in chunks): `feed(data)` returns the packets of the blocks it
+    completes; the bytes of an unfinished block are held (`pending`). Raises PcapngError as `read`
+    does, naming offsets in the whole file: for a damaged block, after the packets before it
+    (at the next `feed`, or at `finish`). `BulkReader` gives the packets as arrays."""
+
+    def __init__(self) -> None:
+        self._bulk = BulkReader()
+
+    @property
+    def capture(self) -> Capture:
+        """The interfaces and application seen so far (packets are returned, not kept)."""
+        return self._bulk.capture
+
+    @property
+    def pending(self) -> int:
+        """Bytes of a block not yet complete."""
+        return self._bulk.pending
+
+    @property
+    def offset(self) -> int:
+        """File offset of the first byte not yet part of a complete block."""
+        return self._bulk.offset
+
+    def feed(self, data: bytes | bytearray | memoryview) -> list[Packet]:
+        found = self._bulk.feed(data)
+        return [found.packet(index) for index in range(len(found))]
+
+    def finish(self, *, partial: bool = False) -> None:
+        """The input has ended: PcapngError if it ends inside a block (unless `partial`, which
+        marks the capture truncated)."""
+        self._bulk.finish(partial=partial)
 
 
 def read(stream: BinaryIO, *, partial: bool = False) -> Capture:

@@ -22,16 +22,12 @@ from .errors import ErrorKind, IlahrsError, brief, require_bytes, require_flag
 from .frame import (
     CHECKSUM_SIZE,
     HEADER,
-    HEADER_SIZE,
-    MAX_MESSAGE_LENGTH,
-    MESSAGE_LENGTH_OFFSET,
     MESSAGE_TYPE_OFFSET,
-    MIN_MESSAGE_LENGTH,
+    NEED_MORE,
     PAYLOAD_OFFSET,
     RESERVED_OFFSET,
-    STRICT_RESERVED,
     Frame,
-    MessageType,
+    frame_at,
 )
 from .nmea import MAX_SENTENCE_LENGTH, PREFIX, PahrSentence
 from .spec import IDLE_BYTE_TIMES, IDLE_TIMEOUT, MAX_MESSAGE_SIZE
@@ -45,7 +41,6 @@ _NEED_MORE: Final = -1
 _INVALID: Final = 0
 _FRAME_START: Final = HEADER[0]
 _SENTENCE_START: Final = PREFIX[0]
-_MESSAGE_TYPES: Final = frozenset(int(t) for t in MessageType)
 _CR: Final = 0x0D
 _LF: Final = 0x0A
 _CHUNK: Final = 1 << 16
@@ -85,7 +80,7 @@ class StreamDecoder:
 
     def __init__(self, strict: bool = False) -> None:
         self._buffer = bytearray()
-        self._strict: dict[int, int] = dict(STRICT_RESERVED) if require_flag(strict, "strict") else {}
+        self._strict = require_flag(strict, "strict")
         self.discarded = 0
         """Input bytes that belong to no accepted message."""
 
@@ -171,30 +166,10 @@ def _next_start(buffer: bytearray, pos: int, size: int) -> int:
     return min(candidates) if candidates else size
 
 
-def _frame_at(buffer: bytearray, pos: int, size: int, strict: dict[int, int]) -> tuple[int, StreamEvent | None]:
-    available = size - pos
-    for index in range(1, HEADER_SIZE):
-        if available <= index:
-            return _NEED_MORE, None
-        if buffer[pos + index] != HEADER[index]:
-            return _INVALID, None
-    if available < PAYLOAD_OFFSET:
-        return _NEED_MORE, None
-    if buffer[pos + MESSAGE_TYPE_OFFSET] not in _MESSAGE_TYPES:
-        return _INVALID, None
-    length = buffer[pos + MESSAGE_LENGTH_OFFSET] | buffer[pos + MESSAGE_LENGTH_OFFSET + 1] << 8
-    if not MIN_MESSAGE_LENGTH <= length <= MAX_MESSAGE_LENGTH:
-        return _INVALID, None
-    total = HEADER_SIZE + length
-    if available < total:
-        return _NEED_MORE, None
-    at = pos + total - CHECKSUM_SIZE
-    if sum(buffer[pos + HEADER_SIZE : at]) & 0xFFFF != buffer[at] | buffer[at + 1] << 8:
-        return _INVALID, None
-    if strict:
-        reserved = buffer[pos + RESERVED_OFFSET]
-        if strict.get(buffer[pos + MESSAGE_TYPE_OFFSET], reserved) != reserved:
-            return _INVALID, None
+def _frame_at(buffer: bytearray, pos: int, size: int, strict: bool) -> tuple[int, StreamEvent | None]:
+    total = frame_at(buffer, pos, size, strict=strict)
+    if total < 0:
+        return (_NEED_MORE if total == NEED_MORE else _INVALID), None
     raw = bytes(buffer[pos : pos + total])
     frame = Frame(raw[MESSAGE_TYPE_OFFSET], raw[PAYLOAD_OFFSET : total - CHECKSUM_SIZE], raw[RESERVED_OFFSET])
     return total, StreamEvent(raw, frame=frame)

@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import BinaryIO, Final
 
-from ..pcapng import LINKTYPE_ILAHRS, Direction, IncrementalReader, PcapngError
+from ..pcapng import LINKTYPE_ILAHRS, BulkReader, Direction, IncrementalReader, Packets, PcapngError
 from ..stream import StreamDecoder
 from .common import CliError
 
@@ -114,6 +114,57 @@ class Source:
             reader.finish()
         except PcapngError as exc:
             raise CliError(f"{self.name}: {exc}") from exc
+
+    def packets(self) -> Iterator[Packets]:
+        """The packets of a pcapng file as arrays (`ilahrs.pcapng.Packets`), a read at a time:
+        what `chunks` gives, without an object per packet. Directions are INBOUND or OUTBOUND as
+        in a Chunk, `first` counts from 1 (a Chunk's `packet`). Errors as `chunks`'s."""
+        reader = BulkReader()
+        try:
+            for data in self._read(False, lambda: True):
+                found = reader.feed(data)
+                if not len(found):
+                    continue
+                interfaces = reader.capture.interfaces
+                if not self.interface:
+                    first = interfaces[found.interfaces[0]]
+                    self.interface = first.description or first.name
+                foreign = [n for n, i in enumerate(interfaces) if i.linktype != LINKTYPE_ILAHRS]
+                cut = len(found)
+                if foreign:
+                    cut = next((k for k, n in enumerate(found.interfaces) if n in foreign), cut)
+                yield _inbound_or_outbound(found, cut)
+                if cut < len(found):
+                    number = found.first + cut + 1
+                    linktype = interfaces[found.interfaces[cut]].linktype
+                    raise CliError(f"{self.name}: {_foreign(linktype, number)}")
+            reader.finish()
+        except PcapngError as exc:
+            raise CliError(f"{self.name}: {exc}") from exc
+
+
+_AS_CHUNKS: Final = bytes(
+    Direction.OUTBOUND if bits == Direction.OUTBOUND else Direction.INBOUND for bits in range(256)
+)
+
+
+def _inbound_or_outbound(found: Packets, count: int) -> Packets:
+    """The first `count` of `found`, numbered from 1, their directions INBOUND or OUTBOUND."""
+    directions = found.directions.translate(_AS_CHUNKS)
+    if count == len(found):
+        return Packets(
+            found.data, found.ends, found.stamps, directions, found.interfaces, found.originals, found.first + 1
+        )
+    end = found.ends[count - 1] if count else 0
+    return Packets(
+        found.data[:end],
+        found.ends[:count],
+        found.stamps[:count],
+        directions[:count],
+        found.interfaces[:count],
+        found.originals[:count],
+        found.first + 1,
+    )
 
 
 def _foreign(linktype: int, number: int) -> str:

@@ -397,7 +397,7 @@ class Host:
             events.append(ProtocolError(ErrorKind.TIMEOUT, "missing", detail, owed.item, None, owed.source))
             self._owed = []
             self._enter(self._target)
-        if not self._owed and self._timer_deadline is not None and self._timer_deadline < self._now:
+        if self._overdue(self._now):
             timed = timer_transition(self._state)
             assert timed is not None
             event, transition = timed
@@ -426,22 +426,18 @@ class Host:
         steps are applied up to the first at which a deadline would pass (where `advance` reports
         a missing output); returns how many were applied (all of them: nothing was reported).
         `apply` False: only count them, the session unchanged."""
-        now, deadline, index = self._now, self._timer_deadline, self._timer_index
-        self._arm_timer()
-        span = None if self._timer_deadline is None else self._timer_deadline - self._now
-        self._timer_deadline = clock_deadline = deadline
-        clock = now
+        now, deadline = self._now, self._timer_deadline
+        span = self._timer_span()
         done = 0
         for step, count in zip(steps, outputs, strict=True):
-            if step and clock_deadline is not None and clock_deadline < clock + step:
-                break
-            clock += step
+            if step and self._overdue(self._now + step):
+                break  # `advance` by this step would report the missing output
+            self._now += step
             if count and span is not None:
-                clock_deadline = clock + span
+                self._timer_deadline = self._now + span  # as `receive` of an output re-arms the timer
             done += 1
-        self._now, self._timer_deadline = clock, clock_deadline
         if not apply:
-            self._now, self._timer_deadline, self._timer_index = now, deadline, index
+            self._now, self._timer_deadline = now, deadline
         return done
 
     # --- Matching messages against what is owed --------------------------------------------------
@@ -549,19 +545,28 @@ class Host:
         else:
             self._enter(state)
 
+    def _overdue(self, now: int) -> bool:
+        """The output-timer rule: whether, nothing being owed, the state's timer has expired by
+        `now` (its item is then missing). `advance` and `streamed` both decide with it."""
+        return not self._owed and self._timer_deadline is not None and self._timer_deadline < now
+
     def _arm_timer(self) -> None:
         self._timer_index = 0
+        span = self._timer_span()
+        self._timer_deadline = None if span is None else self._now + span
+
+    def _timer_span(self) -> int | None:
+        """How long (ns) the state's timer waits from its start or last item (None: no timer)."""
         timer = STATES[self._state].timer
         if timer is None:
-            self._timer_deadline = None
-            return
+            return None
         seconds = self.setting(timer)
         if TIMER_IS_RATE.get(timer):
             rate = seconds
             if self._output is not None and OUTPUT_FORMATS.get(self._output) is None:
                 rate = min(rate, NMEA_MAX_RATE_HZ)
             seconds = 1.0 / rate
-        self._timer_deadline = self._now + round((seconds + self.reply_timeout) * _NS)
+        return round((seconds + self.reply_timeout) * _NS)
 
     def _learn(self, block: Payload) -> None:
         """Remember the timer parameters a block carries (one the host sends or reads)."""
