@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 from test_decode_columns_capture import CAPTURES, VARIANT, message_csv
 
-from ilahrs import cli_decode
-from ilahrs.cli_capture import open_source
-from ilahrs.cli_decode import ColumnarCapture, kinds, summary
+from ilahrs.cli import decode as cli_decode
+from ilahrs.cli.capture import open_source
+from ilahrs.cli.decode import ColumnarCapture, kinds, summary
 from ilahrs.pcapng import BulkReader, Direction, IncrementalReader, PcapngError, PcapngWriter, read
 
 pytest.importorskip("numpy")
