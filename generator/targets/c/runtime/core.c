@@ -289,7 +289,8 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
     size_t at = len; /* truncated */
     const char *part = NULL;
     if (size == -ILAHRS_ERR_BAD_HEADER) {
-        for (at = 0; data[at] == ilahrs_frame_header[at]; at++) {
+        /* The first header byte that differs: the last one if every one before it matches. */
+        for (at = 0; at + 1u < ILAHRS_FRAME_HEADER_SIZE && data[at] == ilahrs_frame_header[at]; at++) {
         }
         part = NAME_FRAME_HEADER;
     } else if (size == -ILAHRS_ERR_BAD_MESSAGE_TYPE) {
