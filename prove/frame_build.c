@@ -16,12 +16,12 @@ int main(void)
     Frama_C_make_unknown((char *)prove_bytes, PROVE_LONG);
     frame.message_type = Frama_C_unsigned_char_interval(0, 255);
     frame.reserved = Frama_C_unsigned_char_interval(0, 255);
+    frame.payload = Frama_C_nondet(0, 1) ? prove_bytes : NULL;
+    /* A payload too long: refused, whatever the buffer. */
+    frame.payload_size = Frama_C_size_t_interval(ILAHRS_FRAME_MAX_PAYLOAD + 1u, SIZE_MAX);
+    (void)ilahrs_frame_build(&frame, PROVE_OUT(0), Frama_C_size_t_interval(0, SIZE_MAX), &err);
     frame.payload_size = Frama_C_size_t_interval(0, ILAHRS_FRAME_MAX_PAYLOAD);
     //@ split frame.payload_size;
-    if (Frama_C_nondet(0, 1)) {
-        frame.payload_size = Frama_C_size_t_interval(ILAHRS_FRAME_MAX_PAYLOAD + 1u, SIZE_MAX - ILAHRS_FRAME_OVERHEAD);
-    }
-    frame.payload = Frama_C_nondet(0, 1) ? prove_bytes : NULL;
     need = frame.payload_size + ILAHRS_FRAME_OVERHEAD;
     if (Frama_C_nondet(0, 1)) {
         cap = Frama_C_size_t_interval(0, need - 1u);

@@ -233,6 +233,8 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len)
         sum += (uint32_t)acc + (uint32_t)(acc >> 32);
     }
 #endif
+    /*@ loop invariant i <= len;
+        loop assigns i, sum; */
     for (; i < len; i++) {
         sum += data[i];
     }
@@ -253,6 +255,8 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
     size_t at;
     size_t size;
+    /*@ loop invariant at <= ILAHRS_FRAME_HEADER_SIZE && (at <= n || n == 0);
+        loop assigns at; */
     for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
         if (p[at] != ilahrs_frame_header[at]) {
             return -ILAHRS_ERR_BAD_HEADER;
