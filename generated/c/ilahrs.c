@@ -1651,6 +1651,8 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len)
         sum += (uint32_t)acc + (uint32_t)(acc >> 32);
     }
 #endif
+    /*@ loop invariant i <= len;
+        loop assigns i, sum; */
     for (; i < len; i++) {
         sum += data[i];
     }
@@ -1671,6 +1673,8 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
     size_t at;
     size_t size;
+    /*@ loop invariant at <= ILAHRS_FRAME_HEADER_SIZE && (at <= n || n == 0);
+        loop assigns at; */
     for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
         if (p[at] != ilahrs_frame_header[at]) {
             return -ILAHRS_ERR_BAD_HEADER;
@@ -1707,7 +1711,8 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
     size_t at = len; /* truncated */
     const char *part = NULL;
     if (size == -ILAHRS_ERR_BAD_HEADER) {
-        for (at = 0; data[at] == ilahrs_frame_header[at]; at++) {
+        /* The first header byte that differs: the last one if every one before it matches. */
+        for (at = 0; at + 1u < ILAHRS_FRAME_HEADER_SIZE && data[at] == ilahrs_frame_header[at]; at++) {
         }
         part = NAME_FRAME_HEADER;
     } else if (size == -ILAHRS_ERR_BAD_MESSAGE_TYPE) {
@@ -2478,13 +2483,13 @@ static unsigned digit_value(uint8_t c)
  */
 /* The digits of a number in base 10 or 16 from q, with at most one point among them: its
  * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
- * XORed into *sum. Returns where the number ends. */
-static inline const uint8_t *pahr_digits(const uint8_t *q, unsigned base, uint32_t *m, const uint8_t **point,
-                                         unsigned *sum)
+ * XORed into *sum. Returns where the number ends: at the star at the latest, which is no digit. */
+static inline const uint8_t *pahr_digits(const uint8_t *q, const uint8_t *star, unsigned base, uint32_t *m,
+                                         const uint8_t **point, unsigned *sum)
 {
     unsigned x = *sum;
     uint32_t v = 0;
-    for (;; q++) {
+    for (; q < star; q++) {
         unsigned c = *q;
         unsigned d = c - '0';
         if (d > 9u) {
@@ -2523,9 +2528,9 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     digits = q + negative;
 #if FAST
     /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
-    q = f->hex ? pahr_digits(digits, 16u, &m, &point, sum) : pahr_digits(digits, 10u, &m, &point, sum);
+    q = f->hex ? pahr_digits(digits, star, 16u, &m, &point, sum) : pahr_digits(digits, star, 10u, &m, &point, sum);
 #else
-    q = pahr_digits(digits, f->hex ? 16u : 10u, &m, &point, sum);
+    q = pahr_digits(digits, star, f->hex ? 16u : 10u, &m, &point, sum);
 #endif
     *at = q;
     whole = (size_t)((point != NULL ? point : q) - digits);
@@ -2803,6 +2808,8 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     size_t k;
     uint8_t sum = 0;
     copy_forward(buf, (const uint8_t *)PAHR_PREFIX, PAHR_PREFIX_LENGTH);
+    /* (For Frama-C: each field, and each digit count below, analysed on its own.) */
+    /*@ loop unroll ILAHRS_PAHR_FIELD_COUNT; */
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         const pahr_field_t *f = &ilahrs_pahr_fields[k];
         int32_t value = pahr_get(in, k);
@@ -2820,6 +2827,7 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
             n -= n > 1u;
         }
         n += f->decimals;
+        /*@ loop unroll 10; */ /* a 32-bit magnitude has at most 10 digits */
         for (i = 1, rest = m / base; rest != 0; rest /= base) {
             i++; /* digits of m */
         }

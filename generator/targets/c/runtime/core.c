@@ -237,6 +237,8 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len)
         sum += (uint32_t)acc + (uint32_t)(acc >> 32);
     }
 #endif
+    /*@ loop invariant i <= len;
+        loop assigns i, sum; */
     for (; i < len; i++) {
         sum += data[i];
     }
@@ -257,6 +259,8 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
     size_t at;
     size_t size;
+    /*@ loop invariant at <= ILAHRS_FRAME_HEADER_SIZE && (at <= n || n == 0);
+        loop assigns at; */
     for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
         if (p[at] != ilahrs_frame_header[at]) {
             return -ILAHRS_ERR_BAD_HEADER;
@@ -293,7 +297,8 @@ bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, 
     size_t at = len; /* truncated */
     const char *part = NULL;
     if (size == -ILAHRS_ERR_BAD_HEADER) {
-        for (at = 0; data[at] == ilahrs_frame_header[at]; at++) {
+        /* The first header byte that differs: the last one if every one before it matches. */
+        for (at = 0; at + 1u < ILAHRS_FRAME_HEADER_SIZE && data[at] == ilahrs_frame_header[at]; at++) {
         }
         part = NAME_FRAME_HEADER;
     } else if (size == -ILAHRS_ERR_BAD_MESSAGE_TYPE) {

@@ -82,13 +82,13 @@ static unsigned digit_value(uint8_t c)
  */
 /* The digits of a number in base 10 or 16 from q, with at most one point among them: its
  * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
- * XORed into *sum. Returns where the number ends. */
-static inline const uint8_t *pahr_digits(const uint8_t *q, unsigned base, uint32_t *m, const uint8_t **point,
-                                         unsigned *sum)
+ * XORed into *sum. Returns where the number ends: at the star at the latest, which is no digit. */
+static inline const uint8_t *pahr_digits(const uint8_t *q, const uint8_t *star, unsigned base, uint32_t *m,
+                                         const uint8_t **point, unsigned *sum)
 {
     unsigned x = *sum;
     uint32_t v = 0;
-    for (;; q++) {
+    for (; q < star; q++) {
         unsigned c = *q;
         unsigned d = c - '0';
         if (d > 9u) {
@@ -127,9 +127,9 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     digits = q + negative;
 #if FAST
     /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
-    q = f->hex ? pahr_digits(digits, 16u, &m, &point, sum) : pahr_digits(digits, 10u, &m, &point, sum);
+    q = f->hex ? pahr_digits(digits, star, 16u, &m, &point, sum) : pahr_digits(digits, star, 10u, &m, &point, sum);
 #else
-    q = pahr_digits(digits, f->hex ? 16u : 10u, &m, &point, sum);
+    q = pahr_digits(digits, star, f->hex ? 16u : 10u, &m, &point, sum);
 #endif
     *at = q;
     whole = (size_t)((point != NULL ? point : q) - digits);
@@ -407,6 +407,8 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
     size_t k;
     uint8_t sum = 0;
     copy_forward(buf, (const uint8_t *)PAHR_PREFIX, PAHR_PREFIX_LENGTH);
+    /* (For Frama-C: each field, and each digit count below, analysed on its own.) */
+    /*@ loop unroll ILAHRS_PAHR_FIELD_COUNT; */
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         const pahr_field_t *f = &ilahrs_pahr_fields[k];
         int32_t value = pahr_get(in, k);
@@ -424,6 +426,7 @@ size_t ilahrs_pahr_build(const ilahrs_pahr_t *in, char *text, size_t cap, ilahrs
             n -= n > 1u;
         }
         n += f->decimals;
+        /*@ loop unroll 10; */ /* a 32-bit magnitude has at most 10 digits */
         for (i = 1, rest = m / base; rest != 0; rest /= base) {
             i++; /* digits of m */
         }

@@ -1,0 +1,29 @@
+/* WP: the frame check the parsers and the stream decoder share never reads past the caller's
+ * length, and a frame it accepts is never longer than the input (so the stream decoder's
+ * `*len = n - size` cannot wrap), with every runtime error ruled out (-wp-rte). The contracts are
+ * on prototypes of ilahrs.c's static functions, which this file then includes; the loop invariants
+ * are in the runtime sources. Run by `make prove-wp`. */
+#include <stdint.h>
+#include "ilahrs.h"
+
+/*@ requires \valid_read(data + (0 .. len - 1));
+    assigns \nothing; */
+static uint32_t sum_bytes(const uint8_t *data, size_t len);
+
+/*@ requires \valid_read(p + (0 .. ILAHRS_FRAME_PAYLOAD_OFFSET - 1));
+    requires \valid(frame);
+    requires \separated(frame, p + (0 .. ILAHRS_FRAME_PAYLOAD_OFFSET - 1));
+    assigns frame->message_type, frame->reserved; */
+static void frame_get_fields(ilahrs_frame_t *frame, const uint8_t *p);
+
+/*@ requires \valid_read(p + (0 .. n - 1));
+    requires \valid(frame);
+    requires \separated(frame, p + (0 .. n - 1));
+    requires n <= 0x7FFFFFFF;
+    assigns *frame;
+    ensures \result <= (int)n;
+    ensures \result > 0 ==> frame->payload == p + ILAHRS_FRAME_PAYLOAD_OFFSET
+                         && ILAHRS_FRAME_PAYLOAD_OFFSET + frame->payload_size + ILAHRS_FRAME_CHECKSUM_SIZE == \result; */
+static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame);
+
+#include "ilahrs.c"
