@@ -32,8 +32,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from .load import SpecError
-from .model import Command, Field, Payload, Spec
+from ..load import SpecError
+from ..model import Command, Field, Payload, Spec
 
 WIRE = "wire-breaking"
 API = "api-breaking"
@@ -794,7 +794,7 @@ def _bump_of(cls: str) -> str:
 
 
 def main(argv: list[str] | None = None, build: Callable[[Path], Spec] | None = None) -> int:
-    from . import DEFAULT_SPEC, build_spec
+    from .. import DEFAULT_SPEC, build_spec
 
     build = build or build_spec
     parser = argparse.ArgumentParser(
