@@ -117,8 +117,8 @@ class Spec:
     errata: tuple[Erratum, ...]
     state_machine: StateMachine | None = None
     serial_line: SerialLine | None = None
-    # 64 bits of the hash of the wire-relevant part (generator/diff.py, wire_facts): equal for two
-    # specs a device and a host agree on, whatever their docs and names. Filled in by layout.
+    # 64 bits of the hash of the wire-relevant part (generator/diff/fingerprint.py, wire_facts): equal
+    # for two specs a device and a host agree on, whatever their docs and names. Filled in by layout.
     wire_fingerprint: int = 0
 
     def payload(self, name: str) -> Payload:
