@@ -206,16 +206,17 @@ class _Differ:
                 old.type.name if kinds_differ else 0,
                 new.type.name if kinds_differ else 0,
             ),
-            ("scale", "FIELD_SCALE_CHANGED", scale_of(old, self.old), scale_of(new, self.new)),
+            ("scale", "FIELD_SCALE_CHANGED", *_shared_scales(old, self.old, new, self.new)),
             ("unit", "FIELD_TYPE_CHANGED", unit(old), unit(new)),
             ("default", "FIELD_DEFAULT_CHANGED", old.default, new.default),
         ]
         checks += [
-            (a, "FIELD_ENCODING_CHANGED", getattr(old, a), getattr(new, a))
-            for a in ("encoding", "multiplexed_count", "multiplexed_quantities")
+            (a, "FIELD_ENCODING_CHANGED", getattr(old, a), getattr(new, a)) for a in ("encoding", "multiplexed_count")
         ]
         checks += [(a, "FIELD_TYPE_CHANGED", getattr(old, a), getattr(new, a)) for a in ("range", "enum")]
-        checks += [(a, "DOC_CHANGED", getattr(old, a), getattr(new, a)) for a in ("doc", "icd_name", "erratum")]
+        # What a multiplexed field carries in turn is named in prose: no binding reads the names.
+        prose = ("doc", "icd_name", "erratum", "multiplexed_quantities")
+        checks += [(a, "DOC_CHANGED", getattr(old, a), getattr(new, a)) for a in prose]
         for attr, rule, a, b in checks:
             if a != b:
                 self.add(rule, f"{where}.{attr}", a, b)
@@ -378,3 +379,13 @@ def _command_wire(c: Command, spec: Spec, renames: dict[str, str]) -> tuple[Any,
 def compare(old: Spec, new: Spec) -> list[Change]:
     """Every change from `old` to `new`, each with its rule."""
     return _Differ(old, new).run()
+
+
+def _shared_scales(old: Field, old_spec: Spec, new: Field, new_spec: Spec) -> tuple[Any, Any]:
+    """The two fields' scales, a divisor taken from a variant parameter compared only over the
+    variants both specs have: a variant added or removed is its own rule, not a scale change."""
+    a, b = scale_of(old, old_spec), scale_of(new, new_spec)
+    if a is None or b is None or not isinstance(a[1], list) or not isinstance(b[1], list):
+        return a, b
+    shared = {part for part, _ in a[1]} & {part for part, _ in b[1]}
+    return (a[0], [x for x in a[1] if x[0] in shared]), (b[0], [x for x in b[1] if x[0] in shared])

@@ -45,6 +45,7 @@ RULES: dict[str, tuple[str, str]] = {
     "FIELD_REMOVED_FROM_LAYOUT": (WIRE, "bytes that carried a field are gone from the table"),
     "FIELD_ADDED_TO_LAYOUT": (WIRE, "a field takes bytes that were not in the table"),
     "ENUM_VALUE_CHANGED": (WIRE, "an enum name stands for another number"),
+    "ENUM_CHANGED": (WIRE, "an enum's range of external values changed: a byte on the line means another thing"),
     "FRAME_CHANGED": (WIRE, "the frame (header, fields, checksum, message types, length bounds) changed"),
     "BYTE_ORDER_CHANGED": (WIRE, "the byte order changed"),
     "SERIAL_LINE_CHANGED": (WIRE, "the serial line settings changed"),
@@ -61,7 +62,6 @@ RULES: dict[str, tuple[str, str]] = {
     "FIELD_TYPE_CHANGED": (API, "a field's type, unit, enum or accepted range changed without changing its bytes"),
     "FIELD_DEFAULT_CHANGED": (API, "a builder fills a field with another value when none is given"),
     "UNIT_CHANGED": (API, "a unit's suffix (part of accessor names) changed"),
-    "ENUM_CHANGED": (API, "an enum's range of external values changed"),
     # additive
     "COMMAND_ADDED": (ADDITIVE, "a new command on a new code"),
     "PAYLOAD_ADDED": (ADDITIVE, "a new payload table"),
