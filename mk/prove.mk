@@ -33,7 +33,22 @@ test-prove: setup-prove generated/c/ilahrs.c generated/c/ilahrs.h
 prove-wp: setup-prove
 	@mkdir -p $(PROVE_OUT)
 	@test -f $$HOME/.why3.conf || why3 config detect >/dev/null
-	frama-c -cpp-extra-args="-Igenerated/c" prove/wp_frame.c -wp -wp-rte \
+	frama-c -cpp-extra-args="-Igenerated/c -Iprove" prove/wp_frame.c -wp -wp-rte \
 		-wp-fct frame_check,sum_bytes,frame_get_fields -wp-prover qed,z3,cvc4 -wp-timeout 10 -wp-par 2 \
 		| tee $(PROVE_OUT)/wp_frame.log | grep -v ': Valid\|: trivial'
 	! grep -q '\[Failed\]\|\[Unknown\]\|Timeout' $(PROVE_OUT)/wp_frame.log
+
+# WP over the stream decoder's bookkeeping (prove/wp_stream.c): scan(), scan_held(), push, next,
+# poll, finish, idle, init keep the decoder's invariant (ilahrs_held_ok(), ilahrs.h) and read and
+# write only within the held buffer and the caller's input, with no runtime error; candidate() and
+# frame_candidate() against their contracts. Not yet in make prove-wp: 3 goals remain open
+# (prove/README.md).
+.PHONY: prove-wp-stream
+prove-wp-stream: setup-prove
+	@mkdir -p $(PROVE_OUT)
+	@test -f $$HOME/.why3.conf || why3 config detect >/dev/null
+	frama-c -cpp-extra-args="-Igenerated/c -Iprove" prove/wp_stream.c -wp -wp-rte \
+		-wp-fct scan,scan_held,push_decide,ilahrs_stream_push,ilahrs_stream_next,ilahrs_stream_poll,ilahrs_stream_finish,ilahrs_stream_idle,ilahrs_stream_init,candidate,frame_candidate,copy_forward \
+		-wp-prover qed,z3,cvc4 -wp-timeout 20 -wp-par 2 \
+		| tee $(PROVE_OUT)/wp_stream.log | grep -v ': Valid\|: trivial'
+	! grep -q '\[Failed\]\|\[Unknown\]\|Timeout' $(PROVE_OUT)/wp_stream.log

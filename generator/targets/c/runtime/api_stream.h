@@ -47,6 +47,23 @@ typedef struct ilahrs_stream {
     uint8_t held[ILAHRS_MAX_MESSAGE_SIZE]; /**< Bytes kept while a message is incomplete. */
 } ilahrs_stream_t;
 
+/*@ // The decoder's invariant, in ACSL (make prove-wp proves every function keeps it): the held
+    // bytes held[start .. start + count) lie within the buffer, and those waiting at its front
+    // (start 0) are an undecided candidate: shorter than the buffer, a sentence shorter than the
+    // longest, a frame whose length field is read shorter than that length, itself within the
+    // longest frame. frame_size() reads the length field as the decoder does.
+    logic integer ilahrs_frame_size(uint8_t *p) = ILAHRS_FRAME_HEADER_SIZE
+        + (p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET] | (p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET + 1] << 8));
+    predicate ilahrs_waiting(uint8_t *p, integer n) =
+        0 < n < ILAHRS_MAX_MESSAGE_SIZE
+        && (p[0] == ILAHRS_FRAME_HEADER_0 && n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+            ==> n < ilahrs_frame_size(p) <= ILAHRS_FRAME_MAX_SIZE)
+        && (p[0] == '$' ==> n < ILAHRS_PAHR_MAX_LENGTH);
+    predicate ilahrs_held_ok(ilahrs_stream_t *s) =
+        s->start + s->count <= ILAHRS_MAX_MESSAGE_SIZE
+        && (s->start == 0 && s->count != 0 ==> ilahrs_waiting(&s->held[0], s->count));
+*/
+
 /** Empty the decoder (`discarded` back to 0, `strict` off). Same as zero-initialising it. */
 void ilahrs_stream_init(ilahrs_stream_t *stream);
 

@@ -33,6 +33,10 @@
 static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
 {
     size_t i;
+    /*@ loop invariant i <= n;
+        loop invariant \forall integer k; 0 <= k < i ==> dst[k] == \at(src[k], Pre);
+        loop invariant \forall integer k; i <= k < n ==> src[k] == \at(src[k], Pre);
+        loop assigns i, dst[0 .. n - 1]; */
     for (i = 0; i < n; i++) {
         OPAQUE(i);
         dst[i] = src[i];

@@ -147,6 +147,9 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
 {
     const uint8_t *p = *data;
     size_t n = *len;
+    /*@ loop invariant \base_addr(p) == \base_addr(*data) && *data <= p && p + n == *data + *len;
+        loop invariant seen <= n && (seen == 0 || (p == *data && ilahrs_waiting(p, seen)));
+        loop assigns p, n, seen, s->discarded, *msg; */
     for (; n != 0; p++, n--, seen = 0) {
         int r = may_start(*p) ? candidate(s, p, n, seen, msg) : INVALID;
         if (r > 0) {
@@ -243,6 +246,10 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
     /* Held bytes after a message handed out go first. Then, and after every byte pushed without a
      * message, the held bytes are a candidate waiting for input (start is 0). */
     bool found = (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
+    /*@ loop invariant ilahrs_held_ok(s) && (!found ==> s->start == 0);
+        loop invariant \base_addr(*data) == \base_addr(\at(*data, Pre)) && \at(*data, Pre) <= *data;
+        loop invariant *data + *len == \at(*data + *len, Pre) && *len <= \at(*len, Pre);
+        loop assigns found, *s, *msg, *data, *len; */
     while (!found && *len != 0) {
         if (s->count == 0) {
             /* In place in the input; a candidate that waits at its end moves to `held`. */
@@ -264,6 +271,8 @@ bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
+    /*@ loop invariant ilahrs_held_ok(s);
+        loop assigns *s, *msg; */
     while (!scan_held(s, msg, 0)) {
         if (s->count == 0) {
             return false;

@@ -1,0 +1,25 @@
+/* ACSL for the WP proof of the stream decoder (prove/wp_stream.c): the frame check's contract (that of
+ * prove/wp_frame.c, proved there, and one postcondition not yet proved: see prove/README.md),
+ * and where the stream decoder's bytes lie (its invariant, ilahrs_held_ok(), is in ilahrs.h). */
+#ifndef PROVE_CONTRACTS_H
+#define PROVE_CONTRACTS_H
+#include <stdint.h>
+#include "ilahrs.h"
+
+/*@ // p[0 .. n) lies within the decoder's held buffer.
+    predicate in_held(ilahrs_stream_t *s, uint8_t *p, integer n) =
+        \base_addr(p) == \base_addr(&s->held[0]) && &s->held[0] <= p
+        && p + n <= &s->held[0] + ILAHRS_MAX_MESSAGE_SIZE;
+*/
+
+/*@ requires \valid_read(p + (0 .. n - 1));
+    requires \valid(frame);
+    requires \separated(frame, p + (0 .. n - 1));
+    assigns *frame;
+    ensures \result <= n;
+    ensures \result > 0 ==> frame->payload == p + ILAHRS_FRAME_PAYLOAD_OFFSET
+                         && ILAHRS_FRAME_PAYLOAD_OFFSET + frame->payload_size + ILAHRS_FRAME_CHECKSUM_SIZE == \result;
+    ensures \result == -ILAHRS_ERR_TRUNCATED && n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+            ==> n < ilahrs_frame_size(p) <= ILAHRS_FRAME_MAX_SIZE; */
+static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame);
+#endif
