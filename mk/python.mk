@@ -38,8 +38,8 @@ test-python: setup
 	$(PY) -m pytest tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
-# version under build/python-versions/ with the pinned pytest, hypothesis and pyserial only, the
-# package installed with pip). The tests are the folders whose tests use the package and nothing else
+# version under build/python-versions/ with the pinned pytest and pyserial only, the package
+# installed with pip). The tests are the folders whose tests use the package and nothing else
 # of the repository (tests/session: the device and host sessions; tests/edge: the serial client, the
 # simulator, pcapng), less the three long runs the main run covers (the pty flows, the stateful
 # client, hundreds of motion sessions); then the conformance harness runs the Python runner on every

@@ -30,6 +30,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+
+# The Python-versions run (tools/test-python-versions) installs pytest and pyserial only.
+pytest.importorskip("hypothesis")
+
 from hypothesis import HealthCheck, Phase, event, settings
 from hypothesis import strategies as st
 from hypothesis.stateful import (
