@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from test_decode_columns_capture import CAPTURES, VARIANT, message_csv
 
-from ilahrs.cli import decode as cli_decode
+from ilahrs.cli import columnar_capture
 from ilahrs.cli.capture import open_source
 from ilahrs.cli.decode import ColumnarCapture, kinds, summary
 from ilahrs.pcapng import BulkReader, Direction, IncrementalReader, PcapngError, PcapngWriter, read
@@ -34,7 +34,7 @@ def bulk_csv(path: Path, selected: list[str], **options: object) -> tuple[str, l
 def test_packets_as_arrays_give_the_rows_and_summary_of_the_messages(
     name: str, stretch: int, strict: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setattr(cli_decode, "_STRETCH", stretch)
+    monkeypatch.setattr(columnar_capture, "_STRETCH", stretch)
     path = CAPTURES[name]().save(tmp_path / f"{name}.pcapng")
     for selected in (kinds(), ["full_output", "damaged", "Stop"]):
         expected = message_csv(path, selected, strict=strict)

@@ -15,7 +15,7 @@ import pytest
 from test_decode_captures import ANSWER_US, Line, flipped, on_request
 
 import ilahrs
-from ilahrs.cli import decode as cli_decode
+from ilahrs.cli import columnar_capture
 from ilahrs.cli.capture import open_source
 from ilahrs.cli.decode import CaptureDecoder, ColumnarCapture, RowWriter, kinds, summary
 from ilahrs.statemachine import DEFAULT_ALIGNMENT_TIME_S
@@ -129,7 +129,7 @@ CAPTURES["retry"] = retry
 def test_columns_give_the_rows_and_summary_of_the_messages(
     name: str, stretch: int, strict: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setattr(cli_decode, "_STRETCH", stretch)
+    monkeypatch.setattr(columnar_capture, "_STRETCH", stretch)
     path = CAPTURES[name]().save(tmp_path / f"{name}.pcapng")
     for selected in (kinds(), ["full_output", "damaged", "Stop"]):
         expected = message_csv(path, selected, strict=strict)

@@ -32,8 +32,8 @@ from ..spec import SERIAL_LINE
 from ..statemachine import CALIBRATION_TYPES, INITIAL, TIMER_EVENTS, TIMER_FIELDS, command_event
 from ..statemachine import lookup as transition
 from .capture import Chunk
+from .capture_decoder import CaptureDecoder
 from .common import SENTENCE_KIND, CliError, fields_of, lookup, open_client, parse_assignments
-from .decode import CaptureDecoder
 
 if TYPE_CHECKING:
     from ..edge.serial import AhrsClient

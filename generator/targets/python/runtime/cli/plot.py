@@ -49,8 +49,10 @@ from ..pcapng import Direction
 from ..spec import UNITS
 from .arguments import OneLineParser, output_format_argument, variant_argument
 from .capture import open_source
+from .capture_decoder import CaptureDecoder
 from .common import SENTENCE_KIND, CliError, fields_of, lookup, variant_named
-from .decode import CaptureDecoder, Message, output_table
+from .decode import output_table
+from .rows import Message
 
 __all__ = ["GAP_PERIODS", "Quantity", "figure", "plot", "plottable"]
 
