@@ -21,15 +21,14 @@ import argparse
 import contextlib
 import curses
 import math
-import signal
 import time
 from collections import deque
-from collections.abc import Iterable, Iterator
-from types import FrameType
+from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any, Final
 
 from ..codec import FieldInfo, Payload
 from ..commands import COMMANDS
+from ..edge.signals import sigterm_as_interrupt
 from ..encodings import Variant
 from ..errors import IlahrsError
 from ..nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -242,21 +241,6 @@ def _loop(screen: Any, view: _View) -> None:
                 return
 
 
-@contextlib.contextmanager
-def _sigterm_as_interrupt() -> Iterator[None]:
-    """SIGTERM ends the view as Ctrl-C does: the terminal restored, Stop sent."""
-
-    def handler(signum: int, frame: FrameType | None) -> None:
-        del signum, frame
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, handler)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-
-
 def _lost(port: str, exc: OSError) -> CliError:
     detail = exc.strerror or str(exc) or type(exc).__name__
     return CliError(f"{port}: lost the device ({detail})")
@@ -270,7 +254,7 @@ def monitor(port: str, baud: int, command: str, variant: Variant, *, strict: boo
     client = open_client(port, baud, strict=strict)
     alive = True
     try:
-        with _sigterm_as_interrupt():
+        with sigterm_as_interrupt():
             try:
                 client.stop()
                 client.read_parameters()  # the configured rate

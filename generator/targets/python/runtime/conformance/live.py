@@ -31,16 +31,14 @@ import argparse
 import importlib
 import json
 import re
-import signal
 import sys
 import time
-from collections.abc import Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from types import FrameType
 from typing import IO, Any, Final
 
 from ..commands import COMMAND_SET, COMMANDS
+from ..edge.signals import sigterm_as_interrupt
 from ..errors import IlahrsError
 from ..frame import Frame, MessageType
 from ..nmea import NMEA_MAX_RATE_HZ, PahrSentence
@@ -494,21 +492,6 @@ class Parameters:
         return why
 
 
-@contextmanager
-def _terminate_as_interrupt() -> Iterator[None]:
-    """SIGTERM raises KeyboardInterrupt, so the parameters are restored as on Ctrl-C."""
-
-    def handler(signum: int, frame: FrameType | None) -> None:
-        del signum, frame
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, handler)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-
-
 def _flows(args: argparse.Namespace) -> list[Vector]:
     suites = {s.name: s for s in load_suites(args.vectors)}
     if "sessions" not in suites:
@@ -703,7 +686,7 @@ def run_live(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
     start = time.monotonic()
     status: int | None = None
     try:
-        with _terminate_as_interrupt():
+        with sigterm_as_interrupt():
             try:
                 _run_flows(args, device, report, out)
             except KeyboardInterrupt:

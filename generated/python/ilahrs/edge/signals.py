@@ -1,0 +1,30 @@
+# Copied from generator/targets/python/runtime/edge/signals.py for spec/ilahrs.yaml,
+# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# Do not edit: change the runtime source and run `make generate`.
+"""SIGTERM as Ctrl-C: a long-running command that restores something on Ctrl-C (the terminal and
+Stop for `ilahrs monitor`, the device's parameters for live conformance runs) does the same when it
+is terminated."""
+
+from __future__ import annotations
+
+import signal
+from collections.abc import Iterator
+from contextlib import contextmanager
+from types import FrameType
+
+__all__ = ["sigterm_as_interrupt"]
+
+
+@contextmanager
+def sigterm_as_interrupt() -> Iterator[None]:
+    """Within the block, SIGTERM raises KeyboardInterrupt; the previous handler is put back after."""
+
+    def handler(signum: int, frame: FrameType | None) -> None:
+        del signum, frame
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)

@@ -1,0 +1,27 @@
+"""SIGTERM as Ctrl-C: a long-running command that restores something on Ctrl-C (the terminal and
+Stop for `ilahrs monitor`, the device's parameters for live conformance runs) does the same when it
+is terminated."""
+
+from __future__ import annotations
+
+import signal
+from collections.abc import Iterator
+from contextlib import contextmanager
+from types import FrameType
+
+__all__ = ["sigterm_as_interrupt"]
+
+
+@contextmanager
+def sigterm_as_interrupt() -> Iterator[None]:
+    """Within the block, SIGTERM raises KeyboardInterrupt; the previous handler is put back after."""
+
+    def handler(signum: int, frame: FrameType | None) -> None:
+        del signum, frame
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
