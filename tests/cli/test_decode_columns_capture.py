@@ -10,6 +10,7 @@ import subprocess
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from test_decode_captures import ANSWER_US, Line, flipped, on_request
@@ -39,11 +40,18 @@ def message_csv(path: Path, selected: list[str], **options: object) -> tuple[str
     return out.getvalue(), summary(decoder, "ilahrs decode")
 
 
-def columnar_csv(path: Path, selected: list[str], **options: object) -> tuple[str, list[str]]:
+def columnar_csv(path: Path, selected: list[str], *, packets: bool = False, **options: object) -> tuple[str, list[str]]:
+    """The rows and summary of ColumnarCapture fed the capture's chunks (`feed`), or its packets as
+    arrays (`Source.packets`, `feed_packets`: what `ilahrs decode CAPTURE.pcapng` does)."""
     out = io.StringIO()
     decoder = ColumnarCapture(out, selected, VARIANT, raw=False, **options)  # type: ignore[arg-type]
-    for chunk in open_source(str(path)).chunks():
-        decoder.feed(chunk)
+    source = open_source(str(path))
+    if packets:
+        for found in source.packets():
+            decoder.feed_packets(found)
+    else:
+        for chunk in source.chunks():
+            decoder.feed(chunk)
     decoder.finish()
     return out.getvalue(), summary(decoder, "ilahrs decode")
 
@@ -123,17 +131,18 @@ def retry() -> Line:
 CAPTURES["retry"] = retry
 
 
+@pytest.mark.parametrize("packets", [False, True], ids=["chunks", "packets"])
 @pytest.mark.parametrize("strict", [False, True], ids=["lenient", "strict"])
 @pytest.mark.parametrize("stretch", [1 << 20, 700], ids=["1MiB", "700B"])
 @pytest.mark.parametrize("name", list(CAPTURES))
 def test_columns_give_the_rows_and_summary_of_the_messages(
-    name: str, stretch: int, strict: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+    name: str, stretch: int, strict: bool, *, packets: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(columnar_capture, "_STRETCH", stretch)
     path = CAPTURES[name]().save(tmp_path / f"{name}.pcapng")
     for selected in (kinds(), ["full_output", "damaged", "Stop"]):
         expected = message_csv(path, selected, strict=strict)
-        got = columnar_csv(path, selected, strict=strict)
+        got = columnar_csv(path, selected, strict=strict, packets=packets)
         assert got[0].count("\n") > (10 if selected == kinds() else 2)
         assert got == expected
 
@@ -145,7 +154,7 @@ def test_a_capture_begun_mid_stream_with_output_format(tmp_path: Path) -> None:
     stream(line, 3.0, all_damage)
     line.inbound(line.send(ilahrs.build_command("Stop")))
     path = line.save(tmp_path / "mid.pcapng")
-    options = {"output": "full_output", "output_known": True, "start": "AHRScont1"}
+    options: dict[str, Any] = {"output": "full_output", "output_known": True, "start": "AHRScont1"}
     expected = message_csv(path, kinds(), **options)
     assert expected[0].count("full_output") > 200
     assert columnar_csv(path, kinds(), **options) == expected

@@ -1,46 +1,15 @@
-"""`ilahrs decode CAPTURE.pcapng --to csv` reads the capture's packets as arrays (Source.packets,
-ilahrs.pcapng.BulkReader) and feeds them to ColumnarCapture.feed_packets: the rows and the summary
-are those of the message-by-message path, byte for byte, on clean and damaged captures."""
+"""ilahrs.pcapng.BulkReader, the reader `ilahrs decode CAPTURE.pcapng` feeds the columnar path with
+(packets as arrays, tests/cli/test_decode_columns_capture.py): the packets before a damaged block
+are kept, then its error, as IncrementalReader and `read` report it."""
 
 from __future__ import annotations
 
 import io
 import struct
-from pathlib import Path
 
 import pytest
-from test_decode_columns_capture import CAPTURES, VARIANT, message_csv
 
-from ilahrs.cli import columnar_capture
-from ilahrs.cli.capture import open_source
-from ilahrs.cli.decode import ColumnarCapture, kinds, summary
 from ilahrs.pcapng import BulkReader, Direction, IncrementalReader, PcapngError, PcapngWriter, read
-
-pytest.importorskip("numpy")
-
-
-def bulk_csv(path: Path, selected: list[str], **options: object) -> tuple[str, list[str]]:
-    out = io.StringIO()
-    decoder = ColumnarCapture(out, selected, VARIANT, raw=False, **options)  # type: ignore[arg-type]
-    for found in open_source(str(path)).packets():
-        decoder.feed_packets(found)
-    decoder.finish()
-    return out.getvalue(), summary(decoder, "ilahrs decode")
-
-
-@pytest.mark.parametrize("strict", [False, True], ids=["lenient", "strict"])
-@pytest.mark.parametrize("stretch", [1 << 20, 700], ids=["1MiB", "700B"])
-@pytest.mark.parametrize("name", list(CAPTURES))
-def test_packets_as_arrays_give_the_rows_and_summary_of_the_messages(
-    name: str, stretch: int, strict: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    monkeypatch.setattr(columnar_capture, "_STRETCH", stretch)
-    path = CAPTURES[name]().save(tmp_path / f"{name}.pcapng")
-    for selected in (kinds(), ["full_output", "damaged", "Stop"]):
-        expected = message_csv(path, selected, strict=strict)
-        got = bulk_csv(path, selected, strict=strict)
-        assert got[0].count("\n") > (10 if selected == kinds() else 2)
-        assert got == expected
 
 
 def test_a_damaged_block_comes_after_the_packets_before_it() -> None:
