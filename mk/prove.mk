@@ -12,7 +12,9 @@ PROVE_OUT := $(BUILD)/prove
 # The analyses make test runs (about 2 minutes on 2 cores): the frame and payload parsers.
 PROVE_QUICK ?= frame_parse payload_parse
 
-TEST_TARGETS += test-prove
+# `make test-prove` (frame_parse and payload_parse on both builds' paths, ~1 minute plus the
+# packages' install) is not yet in `make test`: the full suite is at its 30-minute bound; `make prove`
+# runs every driver.
 
 .PHONY: setup-prove prove test-prove
 

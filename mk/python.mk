@@ -39,7 +39,8 @@ test-python: setup
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
 # version under build/python-versions/ with the pinned pytest and pyserial only, the package
-# installed with pip). The tests are the folders whose tests use the package and nothing else
+# installed with pip; the version of the repository's venv is left out: the whole suite runs on it
+# there). The tests are the folders whose tests use the package and nothing else
 # of the repository (tests/session: the device and host sessions; tests/edge: the serial client, the
 # simulator, pcapng), less the three long runs the main run covers (the pty flows, the stateful
 # client, hundreds of motion sessions); then the conformance harness runs the Python runner on every
@@ -49,7 +50,8 @@ PY_PACKAGE_TESTS := tests/session tests/edge
 PY_VERSION_TESTS := $(PY_PACKAGE_TESTS) -k "not full_flow and not whatever_the_user_does and not ratchet"
 
 test-python-versions: setup
-	tools/test-python-versions $(BUILD)/python-versions $(PY_VERSION_TESTS)
+	ILAHRS_COVERED_PYTHON=$$($(PY) -c 'import sys; print("%d.%d" % sys.version_info[:2])') \
+	    tools/test-python-versions $(BUILD)/python-versions $(PY_VERSION_TESTS)
 
 # How often damage passes the ICD's checksum, with and without strict decoding (E42): the device
 # model's output through the simulator's byte corruption (1 %, seeded), 5,000,000 frames, ~2 minutes
