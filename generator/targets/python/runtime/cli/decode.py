@@ -6,6 +6,11 @@ Messages are told apart by context, as the host session does. With both directio
 bytes only (a raw dump), `--output-format` names the command that started the output; other
 frames are decoded when their size fits one table only, and are of kind "frame" otherwise.
 
+Output goes to standard output, or with `--to FORMAT PATH` to a file written whole and renamed
+onto PATH (a capture cut short still leaves the rows before the damage there, and the error).
+Formats whose libraries write files of their own (a ROS 2 bag, a Parquet dataset) are the `to_*`
+modules beside this one (`ilahrs.cli.exports`).
+
 A raw dump written as CSV goes the columnar way (`ColumnarCsv`, `ilahrs.columnar`): a window of
 the capture at a time, its frames found and decoded into columns (numpy when installed, else the
 standard library's array), then written row by row, the same rows as message by message.
@@ -45,6 +50,7 @@ from .columnar_capture import ColumnarCapture
 from .columnar_csv import ColumnarCsv
 from .common import CliError, lookup, variant_named
 from .damage import LISTED, damage_regions
+from .exports import export_modules, exports, replacing, text_output
 from .rows import (
     BASE_COLUMNS,
     DAMAGED,
@@ -141,10 +147,41 @@ def summary(decoder: CaptureDecoder | ColumnarCsv | ColumnarCapture, prog: str) 
 # --- the subcommand -------------------------------------------------------------------------------
 
 
+class _Formatter(argparse.HelpFormatter):
+    """`--to FORMAT [PATH]` in the usage line (argparse would say `FORMAT [PATH ...]`)."""
+
+    def _format_args(self, action: argparse.Action, default_metavar: str) -> str:
+        if action.dest == "to":
+            return "FORMAT [PATH]"
+        return super()._format_args(action, default_metavar)
+
+
 def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLineParser:
-    dec = commands.add_parser("decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines")
-    dec.add_argument("file", metavar="FILE", help="pcapng file or raw byte dump; - for standard input")
-    dec.add_argument("--to", choices=FORMATS, default="text", help="output format (default text)")
+    dec = commands.add_parser(
+        "decode", help="decode a capture (pcapng or raw bytes) to text, CSV or JSON lines", formatter_class=_Formatter
+    )
+    found = exports()
+    many = ", ".join(name for name, e in found.items() if e.many)
+    dec.add_argument(
+        "files",
+        metavar="FILE",
+        nargs="+",
+        help="pcapng file or raw byte dump; - for standard input"
+        + (f" (several, or directories of captures, for {many})" if many else ""),
+    )
+    listed = "; ".join(
+        f"{name} {'DIR' if e.target == 'directory' else 'FILE'} ({e.help}; with the {e.extra} extra)"
+        for name, e in found.items()
+    )
+    dec.add_argument(
+        "--to",
+        nargs="+",
+        metavar=("FORMAT", "PATH"),
+        default=["text"],
+        help=f"output format and where it goes (default text to standard output): {', '.join(FORMATS)}"
+        " to standard output or to PATH (written whole, then renamed onto it)" + (f"; {listed}" if listed else ""),
+    )
+    dec.add_argument("--force", action="store_true", help="replace an existing output directory")
     dec.add_argument("--types", metavar="KIND,...", help=f"only these kinds of rows (default all): {words(kinds())}")
     variant_argument(dec)
     dec.add_argument("--raw", action="store_true", help="raw field values instead of engineering units")
@@ -157,7 +194,25 @@ def add_parser(commands: argparse._SubParsersAction[OneLineParser]) -> OneLinePa
         help=f"the command that started the output ({starting}); a capture that begins with the device's"
         " output is decoded as if that command had been sent before it",
     )
+    for module in export_modules():
+        options = getattr(module, "add_options", None)
+        if callable(options):
+            options(dec)
     return dec
+
+
+def destination(to: list[str]) -> tuple[str, str | None]:
+    """`--to FORMAT [PATH]` -> the format (a name of FORMATS or of an export) and the path (None:
+    standard output); CliError for an unknown format, a missing or extra path."""
+    found = exports()
+    if len(to) > 2:
+        raise CliError(f"--to takes a format and at most one path, not {' '.join(to)!r}; put the captures before --to")
+    name = lookup("output format", to[0], [*FORMATS, *found])
+    path = to[1] if len(to) == 2 else None
+    export = found.get(name)
+    if export is not None and path is None:
+        raise CliError(f"--to {name} needs the {export.target} to write: --to {name} PATH")
+    return name, path
 
 
 def run(args: argparse.Namespace) -> int:
@@ -166,22 +221,44 @@ def run(args: argparse.Namespace) -> int:
     selected = [lookup("message kind", k.strip(), valid) for k in args.types.split(",")] if args.types else valid
     variant_named(args.variant)  # a wrong name is refused before the capture is opened
     table = output_table(args.output_format) if args.output_format else None
+    args.to, args.out = destination(args.to)
+    export = exports().get(args.to)
+    if len(args.files) > 1 and not (export is not None and export.many):
+        many = [name for name, e in exports().items() if e.many]
+        also = f" (several captures go to one dataset with --to {' or '.join(many)})" if many else ""
+        raise CliError(f"--to {args.to} decodes one capture, not {len(args.files)}{also}")
+    if export is not None:
+        if args.follow:
+            raise CliError(f"--follow writes rows as they come; --to {args.to} writes a whole {export.target}")
+        args.selected = selected
+        with replacing(args.out, directory=export.target == "directory", force=args.force) as temporary:
+            return export.write(args, temporary)
+    args.file = args.files[0]
+    if args.out is not None and args.follow:
+        raise CliError("--follow writes to standard output (a file would only appear at the end)")
     source = open_source(args.file)
-    if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
-        return _decode_columns(args, source, selected, table)
-    if args.to == "csv" and source.kind == "pcapng" and not args.follow:
-        return _decode_capture_columns(args, source, selected, table)
-    return _decode_messages(args, source, selected, table)
+    with text_output(args.out) as out:
+        if args.to == "csv" and source.kind == "raw" and not args.follow and not args.strict:
+            failure = _decode_columns(args, source, selected, table, out)
+        elif args.to == "csv" and source.kind == "pcapng" and not args.follow:
+            failure = _decode_capture_columns(args, source, selected, table, out)
+        else:
+            failure = _decode_messages(args, source, selected, table, out)
+    if failure is not None:
+        raise failure  # after the rows before it are in place: a capture cut short loses nothing it held
+    return 0
 
 
-def _decode_messages(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+def _decode_messages(
+    args: argparse.Namespace, source: Source, selected: list[str], table: str | None, out: TextIO
+) -> CliError | None:
     """`_decode` message by message, following the commands in a pcapng capture."""
     variant = variant_named(args.variant)
     known = args.output_format is not None
     context = source.kind == "pcapng"
     start = args.output_format if known else None
     decoder = CaptureDecoder(context=context, output=table, output_known=known, strict=args.strict, start=start)
-    writer = RowWriter(sys.stdout, args.to, selected, variant, raw=args.raw)
+    writer = RowWriter(out, args.to, selected, variant, raw=args.raw)
     wanted = set(selected)
 
     def feed(chunk: Chunk) -> None:
@@ -194,32 +271,36 @@ def _decode_messages(args: argparse.Namespace, source: Source, selected: list[st
             if message.kind in wanted:
                 writer.write(message)
 
-    failure = _drive(source, feed, finish, follow=args.follow)
+    failure = _drive(source, feed, finish, out, follow=args.follow)
     if failure is not None:
-        raise failure  # alone: a summary of a capture cut short would read as the whole
+        return failure  # alone: a summary of a capture cut short would read as the whole
     for line in summary(decoder, "ilahrs decode"):
         print(line, file=sys.stderr)
-    return 0
+    return None
 
 
-def _decode_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+def _decode_columns(
+    args: argparse.Namespace, source: Source, selected: list[str], table: str | None, out: TextIO
+) -> CliError | None:
     """`_decode` of a raw dump to CSV, a window at a time through ilahrs.columnar (lenient decoding
     only: `--strict` goes message by message)."""
-    decoder = ColumnarCsv(sys.stdout, selected, variant_named(args.variant), raw=args.raw, output=table)
-    failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, follow=False)
+    decoder = ColumnarCsv(out, selected, variant_named(args.variant), raw=args.raw, output=table)
+    failure = _drive(source, lambda chunk: decoder.feed(chunk.data), decoder.finish, out, follow=False)
     if failure is not None:
-        raise failure
+        return failure
     for line in summary(decoder, "ilahrs decode"):
         print(line, file=sys.stderr)
-    return 0
+    return None
 
 
-def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: list[str], table: str | None) -> int:
+def _decode_capture_columns(
+    args: argparse.Namespace, source: Source, selected: list[str], table: str | None, out: TextIO
+) -> CliError | None:
     """`_decode` of a pcapng capture to CSV: the commands and every other message one by one, the
     device's continuous output a stretch at a time through ilahrs.columnar (ColumnarCapture)."""
     known = args.output_format is not None
     decoder = ColumnarCapture(
-        sys.stdout,
+        out,
         selected,
         variant_named(args.variant),
         raw=args.raw,
@@ -228,16 +309,22 @@ def _decode_capture_columns(args: argparse.Namespace, source: Source, selected: 
         strict=args.strict,
         start=args.output_format if known else None,
     )
-    failure = _drive(source, decoder.feed_packets, decoder.finish, follow=False, packets=True)
+    failure = _drive(source, decoder.feed_packets, decoder.finish, out, follow=False, packets=True)
     if failure is not None:
-        raise failure
+        return failure
     for line in summary(decoder, "ilahrs decode"):
         print(line, file=sys.stderr)
-    return 0
+    return None
 
 
 def _drive(
-    source: Source, feed: Callable[[Any], None], finish: Callable[[], None], *, follow: bool, packets: bool = False
+    source: Source,
+    feed: Callable[[Any], None],
+    finish: Callable[[], None],
+    out: TextIO,
+    *,
+    follow: bool,
+    packets: bool = False,
 ) -> CliError | None:
     """Every chunk of `source` to `feed` with progress shown, then `finish`; Ctrl-C ends the input; a
     closed pipe (BrokenPipeError) goes on to `ilahrs.__main__.main`, as in every subcommand. Returns
@@ -251,13 +338,13 @@ def _drive(
                 feed(chunk)
                 progress.update()
                 if follow:
-                    sys.stdout.flush()
+                    out.flush()
         except KeyboardInterrupt:
             pass
         except CliError as exc:
             failure = exc
         finish()
-        sys.stdout.flush()
+        out.flush()
     finally:
         progress.done()
         source.close()
