@@ -177,6 +177,8 @@ def test_a_report_without_levels_renders_its_matrix_and_failures() -> None:
     assert cells[("javascript", "frames")] == ("cell pass", "40 passed5 not supported")
     assert cells[("javascript", "payloads")] == ("cell empty", "302 not supported")
     assert cells[("c", "")] == ("cell fail", "345 passed2 failed")
+    links = [a["href"] for a, t in dom.find("a") if t == "2 failed"]
+    assert links == ["#failures-1", "#failures-1"] and dom.find("h3", id="failures-1", data_binding="c")
     (verdict,) = dom.find("span", "verdict")
     assert verdict[1] == "FAILED"
     assert "make build-kaitai" in dom.find("ul", "problems")[0][1]
@@ -296,7 +298,9 @@ def test_five_implementations_side_by_side_in_chromium(tmp_path: Path) -> None:
     failures = report["failures"]
     assert failures and {f["binding"] for f in failures} == {"javascript"}, out.getvalue()
 
-    dom = _Dom(_chromium(tmp_path, "--dump-dom", page.as_uri()).stdout)
+    shot = tmp_path / "report.png"  # one browser start: the DOM on stdout and the screenshot
+    run = _chromium(tmp_path, "--dump-dom", f"--screenshot={shot}", "--window-size=1280,900", page.as_uri())
+    dom = _Dom(run.stdout)
     columns = [a["data-binding"] for tag, a, _ in dom.elements if tag == "th" and "data-binding" in a]
     assert columns == [*registered, "javascript"]
     cells = _cells(dom)
@@ -310,11 +314,9 @@ def test_five_implementations_side_by_side_in_chromium(tmp_path: Path) -> None:
     assert json.dumps(first["expected"], indent=1, ensure_ascii=False) in [t for _, t in dom.find("pre")]
     assert dom.find("p", id="suite-version")[0][1].startswith("suite version")
 
-    shot = tmp_path / "report.png"
-    _chromium(tmp_path, f"--screenshot={shot}", "--window-size=1280,900", page.as_uri())
     data = shot.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and data[12:16] == b"IHDR"
     assert struct.unpack(">II", data[16:24]) == (1280, 900)
     assert len(data) > 20_000  # a page with content, not a blank one
-    if os.environ.get("ILAHRS_KEEP_SCREENSHOT"):
+    if os.environ.get("ILAHRS_KEEP_SCREENSHOT"):  # a path to copy it to, to look at it
         shutil.copy(shot, os.environ["ILAHRS_KEEP_SCREENSHOT"])

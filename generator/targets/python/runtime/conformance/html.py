@@ -33,7 +33,8 @@ COUNTS: tuple[tuple[str, str, str], ...] = (
     ("not_applicable", "not applicable", "muted"),
     ("skipped", "skipped", "muted"),
 )
-"""The counts of one cell of the matrix, in the order shown. "skipped" is counted from "cases"."""
+"""The counts of one cell of the matrix, in the order shown. "skipped" is counted from "cases"
+where the "results" entries do not carry it."""
 
 _OUTCOMES = ("passed", "failed", "unexpected_pass", "expected_failure", "unsupported", "not_applicable", "skipped")
 _LEVELS = ("required", "recommended", "erratum")
@@ -61,6 +62,7 @@ tr.total th, tr.total td { border-top: 2px solid #9aa3ad; }
 .count { display: block; white-space: nowrap; }
 .count b { font-variant-numeric: tabular-nums; }
 .count.fail { color: #991b1b; font-weight: 600; }
+.count.fail a { color: inherit; }
 .count.xfail { color: #8a5a00; }
 .count.muted { color: #5b6572; }
 .legend span { display: inline-block; margin-right: 1.2em; }
@@ -143,7 +145,8 @@ class _Report:
             cell = self.cell(str(r.get("binding")), str(r.get("suite")))
             for key, _, _ in COUNTS:
                 cell[key] += _count(r.get(key))
-        for c in self.cases or []:
+        counted = any("skipped" in r for r in self.results)
+        for c in [] if counted else self.cases or []:
             if c.get("outcome") == "skipped":
                 self.cell(str(c.get("binding")), str(c.get("suite")))["skipped"] += 1
 
@@ -171,13 +174,23 @@ def _cell_class(counts: Mapping[str, int]) -> str:
     return "pass" if counts["passed"] else "empty"
 
 
-def _cell_html(counts: Mapping[str, int]) -> str:
-    shown = [
-        f'<span class="count {css}" data-count="{key}"><b>{counts[key]}</b> {label}</span>'
-        for key, label, css in COUNTS
-        if counts[key]
-    ]
+def _cell_html(counts: Mapping[str, int], failures: str | None) -> str:
+    """The counts of a cell; a failure count links to the binding's failures (`failures`: their
+    anchor, None when it has none listed)."""
+    shown = []
+    for key, label, css in COUNTS:
+        if counts[key]:
+            text = f"<b>{counts[key]}</b> {label}"
+            if css == "fail" and failures:
+                text = f'<a href="#{failures}">{text}</a>'
+            shown.append(f'<span class="count {css}" data-count="{key}">{text}</span>')
     return "".join(shown) or '<span class="count muted">nothing run</span>'
+
+
+def _anchor(r: _Report, binding: str) -> str | None:
+    """The id of a binding's failures heading (by position: a name may hold any character)."""
+    listed = any(str(f.get("binding")) == binding for f in r.failures)
+    return f"failures-{r.bindings.index(binding) + 1}" if listed else None
 
 
 def _matrix(r: _Report) -> list[str]:
@@ -196,12 +209,13 @@ def _matrix(r: _Report) -> list[str]:
                 totals[b][key] += counts[key]
             out.append(
                 f'<td class="cell {_cell_class(counts)}" data-binding="{_e(b)}" data-suite="{_e(suite)}">'
-                f"{_cell_html(counts)}</td>"
+                f"{_cell_html(counts, _anchor(r, b))}</td>"
             )
         out.append("</tr>")
     out.append('<tr class="total"><th scope="row">total</th>')
     out += [
-        f'<td class="cell {_cell_class(totals[b])}" data-binding="{_e(b)}" data-suite="">{_cell_html(totals[b])}</td>'
+        f'<td class="cell {_cell_class(totals[b])}" data-binding="{_e(b)}" data-suite="">'
+        f"{_cell_html(totals[b], _anchor(r, b))}</td>"
         for b in r.bindings
     ]
     out.append("</tr></tbody></table>")
@@ -320,7 +334,8 @@ def _failures(r: _Report) -> list[str]:
     for name in r.bindings:
         mine = [f for f in r.failures if str(f.get("binding")) == name]
         if mine:
-            out.append(f'<h3 data-binding="{_e(name)}">{_e(name)} ({len(mine)})</h3>')
+            anchor = _anchor(r, name)
+            out.append(f'<h3 id="{anchor}" data-binding="{_e(name)}">{_e(name)} ({len(mine)})</h3>')
             out += [_failure(f) for f in mine]
     return out
 
