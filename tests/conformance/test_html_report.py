@@ -13,6 +13,7 @@ import importlib.util
 import io
 import json
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -159,6 +160,11 @@ def _cells(dom: _Dom) -> dict[tuple[str, str], tuple[str, str]]:
     return {(a["data-binding"], a["data-suite"]): (a["class"], t) for a, t in dom.find("td", "cell")}
 
 
+def _counts(text: str) -> dict[str, int]:
+    """A cell's text ("2 passed35 skipped") as {label: count}."""
+    return {label: int(n) for n, label in re.findall(r"(\d+) ([a-z ]+?)(?=\d|$)", text)}
+
+
 def _visible_request() -> str:
     return 'payload_decode t <script>alert("x")</script> & \\x00\\x1b\\ud800 é'
 
@@ -216,6 +222,15 @@ def test_a_report_with_levels_shows_versions_declarations_and_expected_failures(
     (failure,) = dom.find("details", "failure")
     assert failure[0]["data-id"] == "frame_decode/stop"
     assert "unexpected pass" in failure[1] and "erratum (E12)" in failure[1] and _visible_request() in failure[1]
+
+
+def test_skipped_counts_once_whether_results_or_cases_carry_it() -> None:
+    doc = json.loads(json.dumps(WITH_LEVELS))
+    for entry in doc["results"]:
+        entry["skipped"] = 1 if entry["binding"] == "javascript" and entry["suite"] == "frames" else 0
+    assert html.render(doc) == html.render(WITH_LEVELS)  # "skipped" of the results, or of the cases
+    doc["cases"] = [c for c in doc["cases"] if c["outcome"] != "skipped"]
+    assert "1 skipped" in _cells(_Dom(html.render(doc)))[("javascript", "frames")][1]
 
 
 def test_write_replaces_the_file_whole(tmp_path: Path) -> None:
@@ -305,9 +320,11 @@ def test_five_implementations_side_by_side_in_chromium(tmp_path: Path) -> None:
     assert columns == [*registered, "javascript"]
     cells = _cells(dom)
     for binding in ("c", "python", "rust", "javascript"):
-        assert cells[(binding, "acks")] == ("cell pass", "2 passed"), cells
-    assert cells[("kaitai", "acks")] == ("cell empty", "2 not supported")
+        assert cells[(binding, "acks")][0] == "cell pass" and _counts(cells[(binding, "acks")][1])["passed"] == 2
+    kaitai = _counts(cells[("kaitai", "acks")][1])
+    assert cells[("kaitai", "acks")][0] == "cell empty" and kaitai["not supported"] == 2 and "passed" not in kaitai
     assert cells[("javascript", "payloads")][0] == "cell fail"
+    assert _counts(cells[("javascript", "payloads")][1])["failed"] == len(failures)
     first = failures[0]
     (shown,) = dom.find("details", "failure", data_binding="javascript", data_id=first["id"])
     assert first["request"] in shown[1] and "actual" in shown[1] and first["actual"] in shown[1]

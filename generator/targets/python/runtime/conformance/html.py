@@ -36,7 +36,15 @@ COUNTS: tuple[tuple[str, str, str], ...] = (
 """The counts of one cell of the matrix, in the order shown. "skipped" is counted from "cases"
 where the "results" entries do not carry it."""
 
-_OUTCOMES = ("passed", "failed", "unexpected_pass", "expected_failure", "unsupported", "not_applicable", "skipped")
+_OUTCOMES = {  # a case's outcome (in "cases") -> its label, as COUNTS names it
+    "passed": "passed",
+    "failed": "failed",
+    "unexpected_pass": "unexpected pass",
+    "expected_failure": "expected failure",
+    "unsupported": "not supported",
+    "not_applicable": "not applicable",
+    "skipped": "skipped",
+}
 _LEVELS = ("required", "recommended", "erratum")
 
 _STYLE = """
@@ -104,6 +112,10 @@ def _e(value: object) -> str:
 
 def _json(value: object) -> str:
     return json.dumps(value, ensure_ascii=False, indent=None if not isinstance(value, (dict, list)) else 1)
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
 
 
 def _count(value: object) -> int:
@@ -254,7 +266,7 @@ def _levels(r: _Report) -> list[str]:
         for b in r.bindings:
             counts = table.get((level, b), {})
             outcomes = [*_OUTCOMES, *sorted(set(counts) - set(_OUTCOMES))]
-            text = ", ".join(f"{counts[o]} {o.replace('_', ' ')}" for o in outcomes if counts.get(o))
+            text = ", ".join(f"{counts[o]} {_OUTCOMES.get(o, o)}" for o in outcomes if counts.get(o))
             out.append(f'<td data-binding="{_e(b)}">{_e(text) or "&ndash;"}</td>')
         out.append("</tr>")
     out.append("</tbody></table>")
@@ -284,8 +296,8 @@ def _implementations(r: _Report) -> list[str]:
         source = f" ({_e(expected_file)})" if expected_file else ""
         if isinstance(expected, Mapping) and expected:
             out.append(
-                f'<details class="expected-failures"><summary>{len(expected)} expected failure'
-                f"{'' if len(expected) == 1 else 's'}{source}</summary>"
+                f'<details class="expected-failures"><summary>{_plural(len(expected), "expected failure")}'
+                f"{source}</summary>"
                 '<table><thead><tr><th scope="col">vector</th><th scope="col">reason</th></tr></thead><tbody>'
             )
             out += [
@@ -354,8 +366,8 @@ def render(report: Mapping[str, Any]) -> str:
         f"<title>{_e(title)}</title><style>{_STYLE}</style></head><body>",
         "<h1>ilahrs conformance report</h1>",
         f'<p class="meta" id="suite-version">{_e(r.version_text())}</p>',
-        f'<p>{verdict} <span class="meta">{len(r.bindings)} implementations, {len(r.suites)} suites: '
-        f"{_e(summary)}</span></p>",
+        f'<p>{verdict} <span class="meta">{_plural(len(r.bindings), "implementation")}, '
+        f"{_plural(len(r.suites), 'suite')}: {_e(summary)}</span></p>",
         *_matrix(r),
         *_levels(r),
         *_implementations(r),
