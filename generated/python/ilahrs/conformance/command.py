@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, Any
 
+from . import html
 from .live import run_live
 from .protocol import request
 from .report import json_report, junit_xml, report
@@ -39,9 +40,23 @@ def add_arguments(
     parser.add_argument(
         "--vectors", type=Path, default=vectors, help=f"directory of suites (*.json); default {vectors}"
     )
-    parser.add_argument("--command", dest="runner_command", help="run this runner command line (shell-style quoting)")
-    parser.add_argument("--name", default="runner", help="the name shown for --command (default runner)")
-    parser.add_argument("--bindings", help="comma-separated binding names (default: every registered one)")
+    parser.add_argument(
+        "--command",
+        dest="runner_command",
+        metavar="CMD",
+        action="append",
+        help="run this runner command line (shell-style quoting); repeatable, each with its --name",
+    )
+    parser.add_argument(
+        "--name",
+        action="append",
+        help="the name shown for --command, one per --command in the same order (default runner)",
+    )
+    parser.add_argument(
+        "--bindings",
+        help="comma-separated registered binding names, or `all` (default: every registered one without "
+        "--command, none with it; with --command the runners run beside them, e.g. --bindings all)",
+    )
     parser.add_argument(
         "--bindings-dir",
         type=Path,
@@ -59,19 +74,28 @@ def add_arguments(
     parser.add_argument("--suite", action="append", help="one suite to run (repeatable)")
     parser.add_argument(
         "--kinds",
-        help="comma-separated kinds to send; others count as not supported (n/s). With --command the runner "
-        "is held to these kinds (an `unsupported` answer fails); without, its `unsupported` answers count n/s",
+        help="comma-separated kinds to send; others count as not supported (n/s). With --command the runners "
+        "are held to these kinds (an `unsupported` answer fails; registered bindings keep their own); "
+        "without, the registered bindings are limited to them; without --kinds a --command runner's "
+        "`unsupported` answers count n/s",
     )
     parser.add_argument(
         "--options",
         help=f"comma-separated vector options the runner knows ({', '.join(OPTIONS)}; default all, `-` for none); "
-        "vectors with another option count as not supported (n/s)",
+        "vectors with another option count as not supported (n/s); like --kinds, for the --command runners "
+        "when there are any",
     )
     parser.add_argument("-k", dest="pattern", help="only vectors (or live flows) whose id contains this text")
     parser.add_argument("--timeout", type=float, default=20.0, help="seconds to wait for one answer (default 20)")
     parser.add_argument("--max-failures", type=int, default=40, help="failures to print (default 40)")
     parser.add_argument("--json", type=Path, help="also write the results as JSON to this file")
     parser.add_argument("--junit", type=Path, help="also write the results as JUnit XML to this file")
+    parser.add_argument(
+        "--report",
+        type=Path,
+        metavar="FILE.html",
+        help="also write the results as one self-contained HTML page (ilahrs.conformance.html)",
+    )
     live = parser.add_argument_group("live device (see ilahrs.conformance.live)")
     live.add_argument("--device", metavar="PORT", help="run the session flows against a device on this port")
     live.add_argument("--baud", type=int, help="baud rate of --device (default: the AHRS line's)")
@@ -115,23 +139,47 @@ def _bindings(args: argparse.Namespace) -> list[Binding]:
     wrong = [o for o in options or [] if o not in OPTIONS]
     if wrong:
         raise BindingError(f"unknown options {', '.join(wrong)} (options: {', '.join(OPTIONS)})")
-    if args.runner_command:
-        return [Binding(args.name, shlex.split(args.runner_command), kinds, None, options)]
+    commands = _commands(args, kinds, options)
+    if commands and not args.bindings:
+        return commands
     if args.bindings_dir is None:
         raise BindingError("give the runner with --command (or registrations with --bindings-dir)")
-    bindings = load_bindings(args.bindings_dir, _names(args.bindings) if args.bindings else None)
+    only = None if args.bindings in (None, "all") else _names(args.bindings)
+    bindings = load_bindings(args.bindings_dir, only)
     if not bindings:
         raise BindingError(f"no bindings registered in {args.bindings_dir}")
+    clash = sorted({b.name for b in bindings} & {c.name for c in commands})
+    if clash:
+        raise BindingError(f"--name {', '.join(clash)} is a registered binding's name too; choose another")
     for binding in bindings:
-        if kinds is not None:
+        if kinds is not None and not commands:
             binding.kinds = [k for k in binding.kinds or KINDS if k in kinds]
-        if options is not None:
+        if options is not None and not commands:
             binding.options = [o for o in binding.options or OPTIONS if o in options]
-    return bindings
+    return [*bindings, *commands]
+
+
+def _commands(args: argparse.Namespace, kinds: list[str] | None, options: list[str] | None) -> list[Binding]:
+    """The --command runners, each named by its --name."""
+    commands: list[str] = args.runner_command or []
+    names: list[str] = args.name or []
+    if len(names) > len(commands) or (len(commands) > 1 and len(names) != len(commands)):
+        raise BindingError(f"{len(commands)} --command and {len(names)} --name: give one --name per --command")
+    names = names or ["runner"] * len(commands)
+    if len(set(names)) != len(names):
+        raise BindingError(f"--name {', '.join(sorted({n for n in names if names.count(n) > 1}))} given twice")
+    pairs = zip(names, commands, strict=True)
+    return [Binding(name, shlex.split(command), kinds, None, options) for name, command in pairs]
 
 
 def run(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
     """`ilahrs conformance` with parsed arguments (add_arguments)."""
+    if args.report and args.device:
+        print("ilahrs conformance: --report is for runs against runners; with --device use --json", file=sys.stderr)
+        return 2
+    if args.report and not args.report.parent.is_dir():
+        print(f"ilahrs conformance: cannot write {args.report}: no folder {args.report.parent}", file=sys.stderr)
+        return 2
     if args.device:
         return run_live(args, out)
     try:
@@ -155,10 +203,17 @@ def run(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
         print(f"ilahrs conformance: {err}", file=sys.stderr)
         return 2
     report(result, bindings, suites, args.max_failures, out)
+    doc = json_report(result, bindings, suites)
     if args.json:
-        args.json.write_text(json.dumps(json_report(result, bindings, suites), indent=1) + "\n", encoding="utf-8")
+        args.json.write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
     if args.junit:
         args.junit.write_text(junit_xml(result.cases), encoding="utf-8")
+    if args.report:
+        try:
+            html.write(args.report, doc)
+        except OSError as err:
+            print(f"ilahrs conformance: cannot write the report {args.report}: {err.strerror or err}", file=sys.stderr)
+            return 2
     out.write(f"\n{'PASSED' if result.ok else 'FAILED'}\n")
     return 0 if result.ok else 1
 
