@@ -36,7 +36,7 @@ lint-python: setup
 test-python: setup
 	@command -v tmux >/dev/null || tools/need tmux
 	@command -v tshark >/dev/null || tools/need tshark
-	@command -v chromium >/dev/null || tools/need chromium
+	@command -v chromium >/dev/null || tools/need --no-recommends chromium fonts-liberation
 	$(PY) -m pytest tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
