@@ -246,3 +246,20 @@ def test_a_changed_expectation_needs_a_major_bump() -> None:
     assert problems(old, {**old, "vectors": []})  # a vector removed
     assert "minor" in problems(old, added)[0] and not problems(old, {**added, "version": "1.3.0"})
     assert not problems(old, old)
+
+
+def test_a_registration_names_its_declaration_and_expected_failures(setup: tuple[Path, str], tmp_path: Path) -> None:
+    vectors, command = setup
+    bindings = tmp_path / "b"
+    bindings.mkdir()
+    (bindings / "fake.json").write_text(json.dumps({
+        "name": "fake", "command": shlex.split(command), "kinds": ["checksum", "command_encode"], "build": "-",
+        "declaration": "../fake.declaration.json", "expected_failures": "../fake.xfail.json"}))
+    (tmp_path / "fake.declaration.json").write_text(json.dumps(_declaration(commands=[])))
+    (tmp_path / "fake.xfail.json").write_text(json.dumps({"t/c/one": "wrong sum"}))
+    code, text = run("--vectors", vectors, "--bindings-dir", bindings, "--json", tmp_path / "r.json")
+    assert code == 0 and "2 passed, 1 xfail, 1 n/a" in text
+    (implementation,) = json.loads((tmp_path / "r.json").read_text())["implementations"]
+    assert implementation["expected_failures"] == {"t/c/one": "wrong sum"}
+    assert implementation["expected_failures_file"] == str((tmp_path / "fake.xfail.json").resolve())
+    assert implementation["declaration"]["commands"] == []

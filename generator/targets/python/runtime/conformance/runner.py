@@ -93,7 +93,7 @@ def _binding(path: Path) -> Binding:
         value = doc.get(key)
         if value is not None and not isinstance(value, str):
             raise BindingError(f"{path}: {key} must be a file name relative to the registration")
-        files.append(None if value is None else path.parent / value)
+        files.append(None if value is None else (path.parent / value).resolve())
     return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options, base, *files)
 
 
