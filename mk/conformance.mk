@@ -7,7 +7,8 @@
 #                                            (conformance/tools/suites/: a module and a case file per suite)
 #
 #   make test-conformance-example           the example runner of a foreign implementation
-#                                            (conformance/examples/javascript, Node 20) on its kinds
+#                                            (conformance/examples/javascript, Node 20) on its kinds,
+#                                            with its declaration and expected-failure list
 #   make conformance-report                  every registered binding and the JavaScript example side
 #                                            by side: build/conformance-report.html (one self-contained
 #                                            page, ilahrs.conformance.html) and .json; BINDINGS=... too
@@ -42,7 +43,9 @@ test-conformance-example: setup
 	@command -v node >/dev/null || { echo "test-conformance-example: needs Node.js 20 (node)" >&2; exit 1; }
 	mkdir -p $(BUILD)
 	$(PY) conformance/harness.py --command "node conformance/examples/javascript/runner.mjs" \
-		--name javascript --kinds $(EXAMPLE_KINDS) --options - --junit $(BUILD)/conformance-example.xml
+		--name javascript --kinds $(EXAMPLE_KINDS) --options - --junit $(BUILD)/conformance-example.xml \
+		--declaration conformance/examples/javascript/declaration.json \
+		--expected-failures conformance/examples/javascript/expected-failures.json
 
 TEST_TARGETS += test-conformance-example
 
@@ -54,4 +57,6 @@ conformance-report: setup build
 	$(PY) conformance/harness.py --vectors $(VECTORS) --bindings $(or $(BINDINGS),all) \
 		--command "node conformance/examples/javascript/runner.mjs" --name javascript \
 		--kinds $(EXAMPLE_KINDS) --options - $(CONFORMANCE_ARGS) \
+		--declaration conformance/examples/javascript/declaration.json \
+		--expected-failures conformance/examples/javascript/expected-failures.json \
 		--report $(BUILD)/conformance-report.html --json $(BUILD)/conformance-report.json
