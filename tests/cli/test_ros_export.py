@@ -109,6 +109,7 @@ def test_hand_computed_orientations() -> None:
 
 def test_units_and_axes_against_hand_computed_values() -> None:
     assert ros.flu_from_icd((1.0, 2.0, 3.0)) == (2.0, -1.0, 3.0)  # X right, Y forward -> x forward, y left
+    assert math.copysign(1.0, ros.flu_from_icd((0.0, 0.0, 0.0))[1]) == 1.0  # no -0.0 in a message
     block = ilahrs.OrientationSensors(
         heading=9000, gyro_x=VARIANT.kg, gyro_y=-2 * VARIANT.kg, gyro_z=3 * VARIANT.kg,  # 1, -2, 3 deg/s
         acc_x=0, acc_y=-VARIANT.ka // 2, acc_z=VARIANT.ka,  # 0, -0.5, 1 g

@@ -111,7 +111,7 @@ def flu_from_icd(vector: Vector3) -> Vector3:
     """A vector in the AHRS's body axes (X right, Y forward, Z up) in REP 103's (x forward, y
     left, z up)."""
     x, y, z = vector
-    return (y, -x, z)
+    return (y, 0.0 - x, z)  # not -x: a zero stays 0.0, not -0.0
 
 
 def orientation(heading: float, pitch: float, roll: float) -> Quaternion:
