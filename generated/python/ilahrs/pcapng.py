@@ -315,6 +315,10 @@ _WORD: Final = {order: struct.Struct(order + "I") for order in "<>"}
 _MAGICS: Final = {struct.pack("<I", _MAGIC): "<", struct.pack(">I", _MAGIC): ">"}
 _FLAGS: Final = {order: struct.Struct(order + "HHII") for order in "<>"}
 """An Enhanced Packet Block's options as ilahrs writes them: epb_flags, then opt_endofopt."""
+_FAST_EPB: Final = {order: struct.Struct(order + "IIIIIII") for order in "<>"}
+"""An Enhanced Packet Block's head: block type and length, then interface, timestamp, lengths."""
+_FAST_TAIL: Final = {order: struct.Struct(order + "HHIII") for order in "<>"}
+"""An Enhanced Packet Block's end as ilahrs writes it: epb_flags, opt_endofopt, the length again."""
 _DIRECTIONS: Final = bytes(
     bits if bits in (Direction.INBOUND, Direction.OUTBOUND) else Direction.UNKNOWN for bits in range(4)
 )
@@ -404,8 +408,32 @@ class BulkReader:
         known = reader.capture.interfaces
         starts, stops, stamps = found.starts, found.stops, found.stamps
         directions, interfaces, originals = found.directions, found.interfaces, found.originals
+        fast, tail = _FAST_EPB[reader.order], _FAST_TAIL[reader.order]
+        resolutions = [interface.resolution for interface in known]
         pos = 0
         while size - pos >= 12:
+            # Enhanced Packet Blocks as ilahrs writes them (microseconds, the epb_flags option alone):
+            # two unpacks each; any other block, or any check failing, goes the whole way below.
+            while size - pos >= 44:
+                kind, length, interface, high, low, captured, original = fast.unpack_from(buffer, pos)
+                start = pos + 28
+                options = start + captured + (-captured % 4)
+                if kind != _EPB or options + 16 != pos + length or length > size - pos or length > MAX_BLOCK:
+                    break
+                if interface >= len(resolutions) or resolutions[interface] != 1_000_000:
+                    break
+                code, width, value, end, trailer = tail.unpack_from(buffer, options)
+                if trailer != length or code != _EPB_FLAGS or width != 4 or end != _OPT_END:
+                    break
+                starts.append(start)
+                stops.append(start + captured)
+                stamps.append(high << 32 | low)
+                directions.append(_DIRECTIONS[value & _DIRECTION_MASK])
+                interfaces.append(interface)
+                originals.append(original)
+                pos += length
+            if size - pos < 12:
+                break
             at = self._offset + pos
             try:
                 kind, length = head.unpack_from(buffer, pos)  # the SHB's type reads the same either way
@@ -416,6 +444,7 @@ class BulkReader:
                     reader.order = _MAGICS[magic]
                     head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
                     epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
+                    fast, tail = _FAST_EPB[reader.order], _FAST_TAIL[reader.order]
                     kind, length = head.unpack_from(buffer, pos)
                 if length < 12 or length % 4 or length > MAX_BLOCK:
                     _check_length(at, length)
@@ -454,6 +483,7 @@ class BulkReader:
                 else:
                     self._other(found, kind, pos, length, at)
                     known = reader.capture.interfaces
+                    resolutions = [interface.resolution for interface in known]
             except PcapngError as exc:
                 exc.args = (*exc.args[:1], pos)
                 raise
