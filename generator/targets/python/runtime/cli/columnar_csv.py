@@ -208,7 +208,7 @@ class Values:
             blocks = [cls.parse(data[at : at + cls.SIZE]) for at in here]
             made = [row_fields(block, self._variant, raw=self._raw) for block in blocks]
             return {column: [row[column] for row in made] for column in made[0]} if made else {}
-        fields = scales(cls, None if self._raw else self._variant)
+        fields = scales(cls, self._variant)  # every field, also with --raw
         if self._raw:
             fields = [(info, 1, None) for info, _, _ in fields]
         local = [at - base for at in starts]
@@ -232,7 +232,7 @@ class Values:
         numpy = self._numpy
         if numpy is None or not _simple(cls):
             return {name: list(map(csv_text, column)) for name, column in self.of(data, 0, cls, starts).items()}
-        fields = scales(cls, None if self._raw else self._variant)
+        fields = scales(cls, self._variant)  # every field, also with --raw
         if self._raw:
             fields = [(info, 1, None) for info, _, _ in fields]
         offsets = numpy.array(starts, dtype=numpy.int64)
