@@ -224,3 +224,16 @@ def test_a_raw_dump_with_raw_values_as_columns() -> None:
         rows.append(out.getvalue())
     assert rows[0].count("orientation_sensors") == 300
     assert rows[1] == rows[0]
+
+
+def test_times_as_columns_read_as_row_writer_writes_them() -> None:
+    """`_stamps`, the time column of a stretch, gives RowWriter's f"{round(t, 6):.6f}" for halves
+    of a millionth held exactly (round half to even), float steps near a millionth, and times too
+    large for "%.6f" of the value alone."""
+    numpy = pytest.importorskip("numpy")
+    rng = random.Random(3)
+    times = [0.0, 0.0078125, 0.0000005, 1.5e-6, 2.5e-6, 2.0**32 - 1e-6, 2.0**32, 3e9 + 0.4999995, 1e12 + 0.0000015]
+    times += [rng.uniform(0, 1e5) for _ in range(200)] + [rng.randrange(10**12) / 1e6 for _ in range(200)]
+    for values in (times, times[:1], times[:2]):
+        expected = [f"{round(t, 6):.6f}" for t in values]
+        assert columnar_capture._stamps(numpy, numpy.array(values)) == expected
