@@ -17,18 +17,19 @@ from test_decode_captures import ANSWER_US, Line, flipped, on_request
 
 import ilahrs
 from ilahrs.cli import columnar_capture
-from ilahrs.cli.capture import open_source
-from ilahrs.cli.decode import CaptureDecoder, ColumnarCapture, RowWriter, kinds, summary
+from ilahrs.cli.capture import Chunk, open_source
+from ilahrs.cli.decode import CaptureDecoder, ColumnarCapture, ColumnarCsv, RowWriter, kinds, summary
+from ilahrs.pcapng import Direction
 from ilahrs.statemachine import DEFAULT_ALIGNMENT_TIME_S
 
 pytest.importorskip("numpy")
 VARIANT = ilahrs.VARIANTS["AHRS-10"] if "AHRS-10" in ilahrs.VARIANTS else next(iter(ilahrs.VARIANTS.values()))
 
 
-def message_csv(path: Path, selected: list[str], **options: object) -> tuple[str, list[str]]:
+def message_csv(path: Path, selected: list[str], *, raw: bool = False, **options: object) -> tuple[str, list[str]]:
     out = io.StringIO()
     decoder = CaptureDecoder(context=True, **options)  # type: ignore[arg-type]
-    writer = RowWriter(out, "csv", selected, VARIANT, raw=False)
+    writer = RowWriter(out, "csv", selected, VARIANT, raw=raw)
     wanted = set(selected)
     for chunk in open_source(str(path)).chunks():
         for m in decoder.feed(chunk):
@@ -40,11 +41,13 @@ def message_csv(path: Path, selected: list[str], **options: object) -> tuple[str
     return out.getvalue(), summary(decoder, "ilahrs decode")
 
 
-def columnar_csv(path: Path, selected: list[str], *, packets: bool = False, **options: object) -> tuple[str, list[str]]:
+def columnar_csv(
+    path: Path, selected: list[str], *, packets: bool = False, raw: bool = False, **options: object
+) -> tuple[str, list[str]]:
     """The rows and summary of ColumnarCapture fed the capture's chunks (`feed`), or its packets as
     arrays (`Source.packets`, `feed_packets`: what `ilahrs decode CAPTURE.pcapng` does)."""
     out = io.StringIO()
-    decoder = ColumnarCapture(out, selected, VARIANT, raw=False, **options)  # type: ignore[arg-type]
+    decoder = ColumnarCapture(out, selected, VARIANT, raw=raw, **options)  # type: ignore[arg-type]
     source = open_source(str(path))
     if packets:
         for found in source.packets():
@@ -179,3 +182,58 @@ def test_continuous_output_goes_the_columnar_way(tmp_path: Path, monkeypatch: py
     monkeypatch.setattr(ColumnarCapture, "_rows", counted)
     text, _ = columnar_csv(path, kinds())
     assert calls and text.count("full_output") >= 500
+
+
+@pytest.mark.parametrize("command", ["AHRScont2", "AHRScont3"])
+def test_the_other_output_tables_raw_or_not(command: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Quaternion and orientation_sensors output (whose rates and accelerations are scaled by the
+    variant), in engineering units and with --raw (every field as sent, those too), damaged."""
+    monkeypatch.setattr(columnar_capture, "_STRETCH", 700)
+    line = Line()
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    line.inbound(line.send(ilahrs.build_command(command)))
+    stream(line, DEFAULT_ALIGNMENT_TIME_S + 4, all_damage)  # 2 s lost, then 2 s of output
+    line.inbound(line.send(ilahrs.build_command("Stop")))
+    path = line.save(tmp_path / "other.pcapng")
+    table = ilahrs.COMMANDS[command].starts_output
+    for raw in (False, True):
+        expected = message_csv(path, kinds(), raw=raw)
+        assert expected[0].count(f",{table},") > 150
+        assert columnar_csv(path, kinds(), packets=True, raw=raw) == expected
+
+
+def test_a_raw_dump_with_raw_values_as_columns() -> None:
+    """A raw dump of orientation_sensors output to CSV with --raw (ColumnarCsv): the rates and
+    accelerations as sent, as message by message."""
+    device = ilahrs.Device(seed=1)
+    device.receive(ilahrs.build_command("AHRScont3"))
+    device.advance(DEFAULT_ALIGNMENT_TIME_S)
+    data = b"".join(device.advance(0.01) for _ in range(300))
+    rows = []
+    for columns in (False, True):
+        out = io.StringIO()
+        if columns:
+            decoder = ColumnarCsv(out, kinds(), VARIANT, raw=True, output="orientation_sensors")
+            decoder.feed(data)
+            decoder.finish()
+        else:
+            messages = CaptureDecoder(context=False, output="orientation_sensors", output_known=True)
+            writer = RowWriter(out, "csv", kinds(), VARIANT, raw=True)
+            for m in [*messages.feed(Chunk(None, Direction.INBOUND, data)), *messages.finish()]:
+                writer.write(m)
+        rows.append(out.getvalue())
+    assert rows[0].count("orientation_sensors") == 300
+    assert rows[1] == rows[0]
+
+
+def test_times_as_columns_read_as_row_writer_writes_them() -> None:
+    """`_stamps`, the time column of a stretch, gives RowWriter's f"{round(t, 6):.6f}" for halves
+    of a millionth held exactly (round half to even), float steps near a millionth, and times too
+    large for "%.6f" of the value alone."""
+    numpy = pytest.importorskip("numpy")
+    rng = random.Random(3)
+    times = [0.0, 0.0078125, 0.0000005, 1.5e-6, 2.5e-6, 2.0**32 - 1e-6, 2.0**32, 3e9 + 0.4999995, 1e12 + 0.0000015]
+    times += [rng.uniform(0, 1e5) for _ in range(200)] + [rng.randrange(10**12) / 1e6 for _ in range(200)]
+    for values in (times, times[:1], times[:2]):
+        expected = [f"{round(t, 6):.6f}" for t in values]
+        assert columnar_capture._stamps(numpy, numpy.array(values)) == expected

@@ -155,9 +155,12 @@ class CaptureDecoder:
         self._last = max(self._last, latest)
         if out.last is not None and latest - start - out.last >= IDLE_TIMEOUT:
             out.last = None  # nothing held: the idle line releases nothing
-        last = max(i for i, n in enumerate(chunks.sizes) if n)
+        sizes = chunks.sizes
+        last = len(sizes) - 1
+        while not sizes[last]:  # the last chunk with bytes
+            last -= 1
         when = chunks.times[last]
-        side.note(size - chunks.sizes[last], chunks.sizes[last], when - start, chunks.packets[last])
+        side.note(size - sizes[last], sizes[last], when - start, chunks.packets[last])
         assert side.fed == side.base + size
         side.base += size
         side.forget(side.base)

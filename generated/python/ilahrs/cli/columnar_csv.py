@@ -12,12 +12,13 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any, TextIO
 
-from ..codec import field_kind
+from ..codec import FieldInfo, field_kind
 from ..columnar import (
     COMMAND,
     KINDS,
     SENTENCE,
     UNEXPLAINED,
+    Scale,
     Scanner,
     Window,
     numpy_for,
@@ -201,6 +202,7 @@ class Values:
         self._variant = variant
         self._raw = raw
         self._known: dict[Callable[[Any], object], dict[Any, object]] = {}
+        self._tables: dict[tuple[str, str], tuple[int, Any, Any]] = {}
 
     def of(self, data: bytes | bytearray, base: int, cls: type[Any], starts: list[int]) -> dict[str, list[Any]]:
         """Each column's values for the frames of table `cls` at `starts` (`data` starts at `base`)."""
@@ -209,7 +211,7 @@ class Values:
             blocks = [cls.parse(data[at : at + cls.SIZE]) for at in here]
             made = [row_fields(block, self._variant, raw=self._raw) for block in blocks]
             return {column: [row[column] for row in made] for column in made[0]} if made else {}
-        fields = scales(cls, None if self._raw else self._variant)
+        fields = scales(cls, self._variant)  # every field, also with --raw
         if self._raw:
             fields = [(info, 1, None) for info, _, _ in fields]
         local = [at - base for at in starts]
@@ -233,12 +235,19 @@ class Values:
         numpy = self._numpy
         if numpy is None or not _simple(cls):
             return {name: list(map(csv_text, column)) for name, column in self.of(data, 0, cls, starts).items()}
-        fields = scales(cls, None if self._raw else self._variant)
+        fields = scales(cls, self._variant)  # every field, also with --raw
         if self._raw:
             fields = [(info, 1, None) for info, _, _ in fields]
-        columns = table_columns(numpy, data, numpy.array(starts, dtype=numpy.int64), cls, fields)
+        offsets = numpy.array(starts, dtype=numpy.int64)
+        tabled = [field for field in fields if _tabled(field[0])]
+        sent = table_columns(numpy, data, offsets, cls, [(info, 1, None) for info, _, _ in tabled])
+        others = [field for field in fields if not _tabled(field[0])]
+        columns = table_columns(numpy, data, offsets, cls, others) if others else {}
         values: dict[str, list[Any]] = {}
-        for info, _, _ in fields:
+        for info, multiplier, divisor in fields:
+            if _tabled(info):
+                values[info.name] = self._tabled(cls, (info, multiplier, divisor), sent[info.name])
+                continue
             distinct, where = numpy.unique(columns[info.name], return_inverse=True)
             known = distinct.tolist()
             if info.encoding == "calibration_success" and not self._raw:
@@ -253,6 +262,35 @@ class Values:
                 values[info.name] = _spread(numpy, [str(v) for v in known], where)
         return values
 
+    def _tabled(self, cls: type[Any], field: Scale, sent: Any) -> list[str]:
+        """The texts of a column of an integer field of at most 16 bits (`sent`: the values as
+        sent, int64), each value's text made once and kept in a table indexed by the value."""
+        numpy = self._numpy
+        info, multiplier, divisor = field
+        key = (cls.NAME, info.name)
+        if key not in self._tables:
+            bits = 8 * info.size
+            low = -(1 << (bits - 1)) if info.type.startswith("s") else 0
+            self._tables[key] = (low, numpy.full(1 << bits, None, dtype=object), numpy.zeros(1 << bits, dtype=bool))
+        low, texts, made = self._tables[key]
+        index = sent - low
+        fresh = index[~made[index]]
+        if len(fresh):
+            fresh = numpy.unique(fresh)
+            value = fresh + low  # then as table_columns scales it
+            if divisor is not None:
+                if multiplier != 1:
+                    value = value * multiplier
+                value = value / divisor if divisor != 1 else value.astype(numpy.float64)
+            if info.encoding == "usw" and not self._raw:
+                made_texts = [csv_text(usw_value(v)) for v in value.tolist()]
+            else:
+                made_texts = list(map(str, value.tolist()))
+            texts[fresh] = numpy.array(made_texts, dtype=object)
+            made[fresh] = True
+        result: list[str] = texts[index].tolist()
+        return result
+
     def _mapped(self, column: list[Any], function: Callable[[Any], object]) -> list[Any]:
         """`function` of each value, each distinct value computed once."""
         known = self._known.setdefault(function, {})
@@ -264,6 +302,12 @@ def _simple(cls: type[Any]) -> bool:
     """Whether the fields of `cls` are numbers with no encoding but the USW's and a calibration's."""
     simple = all(info.type == "reserved" or field_kind(info) in ("integer", "float") for info in cls.FIELDS)
     return simple and all(info.encoding in (None, "usw", "calibration_success") for info in cls.FIELDS)
+
+
+def _tabled(info: FieldInfo) -> bool:
+    """Whether a field's texts are kept in a table by value (`Values._tabled`): an integer of at
+    most 16 bits, not a calibration's success (two columns)."""
+    return info.type[0] in "us" and info.size <= 2 and info.encoding in (None, "usw")
 
 
 def _spread(numpy: Any, texts: list[str], where: Any) -> list[str]:

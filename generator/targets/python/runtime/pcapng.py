@@ -36,7 +36,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from enum import IntEnum
 from itertools import accumulate
-from typing import BinaryIO, Final
+from types import ModuleType
+from typing import Any, BinaryIO, Final
 
 __all__ = [
     "LINKTYPE_ILAHRS",
@@ -312,6 +313,10 @@ _WORD: Final = {order: struct.Struct(order + "I") for order in "<>"}
 _MAGICS: Final = {struct.pack("<I", _MAGIC): "<", struct.pack(">I", _MAGIC): ">"}
 _FLAGS: Final = {order: struct.Struct(order + "HHII") for order in "<>"}
 """An Enhanced Packet Block's options as ilahrs writes them: epb_flags, then opt_endofopt."""
+_FAST_EPB: Final = {order: struct.Struct(order + "IIIIIII") for order in "<>"}
+"""An Enhanced Packet Block's head: block type and length, then interface, timestamp, lengths."""
+_FAST_TAIL: Final = {order: struct.Struct(order + "HHIII") for order in "<>"}
+"""An Enhanced Packet Block's end as ilahrs writes it: epb_flags, opt_endofopt, the length again."""
 _DIRECTIONS: Final = bytes(
     bits if bits in (Direction.INBOUND, Direction.OUTBOUND) else Direction.UNKNOWN for bits in range(4)
 )
@@ -331,14 +336,22 @@ class _Found:
         self.originals: array[int] = array("q")
 
 
+_MANY: Final = 1000
+"""Packets from which `BulkReader` given numpy gathers their bytes with a mask."""
+_RUN: Final = 1 << 16
+"""Bytes of packet blocks from which `BulkReader` given numpy reads them as arrays."""
+
+
 class BulkReader:
     """A pcapng file block by block, as its bytes arrive, its packets given as arrays (`Packets`):
     for a reader of many packets (a long capture), with every check `read` makes and its error
     messages. `feed(data)` returns the packets of the blocks it completes; the bytes of an
     unfinished block are held (`pending`). A damaged block gives the packets before it, and its
-    PcapngError comes at the next `feed` or at `finish`, naming offsets in the whole file."""
+    PcapngError comes at the next `feed` or at `finish`, naming offsets in the whole file.
+    `numpy` (optional): long runs of the packet blocks ilahrs writes are read as numpy arrays."""
 
-    def __init__(self) -> None:
+    def __init__(self, numpy: ModuleType | None = None) -> None:
+        self._numpy = numpy
         self._reader = _Reader(b"")
         self._buffer = bytearray()
         self._offset = 0
@@ -373,11 +386,13 @@ class BulkReader:
             self._error = exc
             pos = exc.args[1]
             exc.args = exc.args[:1]
-        view = memoryview(buffer)
-        try:
-            joined = b"".join(map(view.__getitem__, map(slice, found.starts, found.stops)))
-        finally:
-            view.release()
+        joined = self._joined(found) if self._numpy is not None and len(found.starts) > _MANY else b""
+        if not joined:
+            view = memoryview(buffer)
+            try:
+                joined = b"".join(map(view.__getitem__, map(slice, found.starts, found.stops)))
+            finally:
+                view.release()
         del buffer[:pos]
         self._offset += pos
         ends = array("q", accumulate(map(operator.sub, found.stops, found.starts)))
@@ -401,8 +416,39 @@ class BulkReader:
         known = reader.capture.interfaces
         starts, stops, stamps = found.starts, found.stops, found.stamps
         directions, interfaces, originals = found.directions, found.interfaces, found.originals
+        fast, tail = _FAST_EPB[reader.order], _FAST_TAIL[reader.order]
+        resolutions = [interface.resolution for interface in known]
         pos = 0
+        tried = 0 if self._numpy is not None else size  # where runs are read as arrays next (numpy)
         while size - pos >= 12:
+            if pos >= tried and size - pos >= _RUN:
+                moved = self._run(found, pos, size, resolutions)
+                # after a long run, again past the block that ended it; else _RUN bytes on (so
+                # that the bytes are scanned a bounded number of times)
+                tried = moved + 1 if moved - pos >= _RUN else moved + _RUN
+                pos = moved
+            # Enhanced Packet Blocks as ilahrs writes them (microseconds, the epb_flags option alone):
+            # two unpacks each; any other block, or any check failing, goes the whole way below.
+            while size - pos >= 44 and pos < tried:
+                kind, length, interface, high, low, captured, original = fast.unpack_from(buffer, pos)
+                start = pos + 28
+                options = start + captured + (-captured % 4)
+                if kind != _EPB or options + 16 != pos + length or length > size - pos or length > MAX_BLOCK:
+                    break
+                if interface >= len(resolutions) or resolutions[interface] != 1_000_000:
+                    break
+                code, width, value, end, trailer = tail.unpack_from(buffer, options)
+                if trailer != length or code != _EPB_FLAGS or width != 4 or end != _OPT_END:
+                    break
+                starts.append(start)
+                stops.append(start + captured)
+                stamps.append(high << 32 | low)
+                directions.append(_DIRECTIONS[value & _DIRECTION_MASK])
+                interfaces.append(interface)
+                originals.append(original)
+                pos += length
+            if size - pos < 12:
+                break
             at = self._offset + pos
             try:
                 kind, length = head.unpack_from(buffer, pos)  # the SHB's type reads the same either way
@@ -413,6 +459,7 @@ class BulkReader:
                     reader.order = _MAGICS[magic]
                     head, word = _BLOCK_HEAD[reader.order], _WORD[reader.order]
                     epb, flags = _EPB_HEAD[reader.order], _FLAGS[reader.order]
+                    fast, tail = _FAST_EPB[reader.order], _FAST_TAIL[reader.order]
                     kind, length = head.unpack_from(buffer, pos)
                 if length < 12 or length % 4 or length > MAX_BLOCK:
                     _check_length(at, length)
@@ -451,11 +498,62 @@ class BulkReader:
                 else:
                     self._other(found, kind, pos, length, at)
                     known = reader.capture.interfaces
+                    resolutions = [interface.resolution for interface in known]
             except PcapngError as exc:
                 exc.args = (*exc.args[:1], pos)
                 raise
             pos += length
         return pos
+
+    def _joined(self, found: _Found) -> bytes:
+        """The bytes of the packets `found`, back to back (numpy: a mask over the buffer)."""
+        numpy: Any = self._numpy
+        ends = found.stops[-1]
+        edges = numpy.zeros(ends + 1, dtype=numpy.int8)
+        edges[numpy.array(found.starts, dtype=numpy.int64)] += 1  # packets never overlap
+        edges[numpy.array(found.stops, dtype=numpy.int64)] -= 1
+        inside = numpy.cumsum(edges[:-1], dtype=numpy.int8).view(bool)
+        buffer = numpy.frombuffer(self._buffer[:ends], dtype=numpy.uint8)
+        joined: bytes = buffer[inside].tobytes()
+        return joined
+
+    def _run(self, found: _Found, pos: int, size: int, resolutions: list[int]) -> int:
+        """The loop of `_walk` over Enhanced Packet Blocks as ilahrs writes them, for the blocks
+        from `pos` at once (numpy): the blocks that pass every check of that loop, each where the
+        one before it ends, into `found`; where the last ends (`pos`: none)."""
+        numpy: Any = self._numpy
+        order = self._reader.order
+        count = (size - pos) // 4
+        words = numpy.frombuffer(self._buffer[pos : pos + 4 * count], dtype=numpy.dtype(order + "u4")).astype(
+            numpy.int64
+        )
+        at = numpy.flatnonzero(words[: max(count - 10, 0)] == _EPB)  # in words from pos; 44 bytes at least
+        length, captured = words[at + 1], words[at + 5]
+        fits = (length >= 44) & (length <= MAX_BLOCK) & (4 * at + length <= 4 * count) & (words[at + 3] < 1 << 31)
+        fits &= 28 + captured + (-captured % 4) + 16 == length
+        at, length, captured = at[fits], length[fits], captured[fits]
+        tail = at + length // 4 - 4  # epb_flags, its value, opt_endofopt, the length again
+        option = _EPB_FLAGS | 4 << 16 if order == "<" else _EPB_FLAGS << 16 | 4
+        fits = (words[tail] == option) & (words[tail + 2] == _OPT_END) & (words[tail + 3] == length)
+        usable = numpy.array([resolution == 1_000_000 for resolution in resolutions] + [False], dtype=bool)
+        interface = words[at + 2]
+        fits &= usable[numpy.minimum(interface, len(resolutions))]
+        at, length, captured, tail, interface = at[fits], length[fits], captured[fits], tail[fits], interface[fits]
+        if not len(at) or at[0] != 0:
+            return pos
+        after = at + length // 4
+        breaks = numpy.flatnonzero(after[:-1] != at[1:])
+        last = int(breaks[0]) + 1 if len(breaks) else len(at)
+        at, captured, tail, interface = at[:last], captured[:last], tail[:last], interface[:last]
+        starts = pos + 28 + 4 * at
+        found.starts += starts.tolist()
+        found.stops += (starts + captured).tolist()
+        found.stamps.frombytes((words[at + 3] << 32 | words[at + 4]).astype(numpy.int64).tobytes())
+        directions = numpy.frombuffer(_DIRECTIONS, dtype=numpy.uint8)[words[tail + 1] & _DIRECTION_MASK]
+        found.directions += directions.tobytes()
+        found.interfaces.frombytes(interface.astype(f"u{found.interfaces.itemsize}").tobytes())
+        found.originals.frombytes(words[at + 6].astype(numpy.int64).tobytes())
+        return pos + 4 * int(after[last - 1])
 
     def _other(self, found: _Found, kind: int, pos: int, length: int, at: int) -> None:
         """A block other than a whole Enhanced Packet Block: read by _Reader (a Simple Packet

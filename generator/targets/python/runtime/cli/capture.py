@@ -20,6 +20,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import BinaryIO, Final
 
+from ..columnar import numpy_for
 from ..pcapng import LINKTYPE_ILAHRS, BulkReader, Direction, IncrementalReader, Packets, PcapngError
 from ..stream import StreamDecoder
 from .common import CliError
@@ -119,7 +120,7 @@ class Source:
         """The packets of a pcapng file as arrays (`ilahrs.pcapng.Packets`), a read at a time:
         what `chunks` gives, without an object per packet. Directions are INBOUND or OUTBOUND as
         in a Chunk, `first` counts from 1 (a Chunk's `packet`). Errors as `chunks`'s."""
-        reader = BulkReader()
+        reader = BulkReader(numpy_for("auto"))  # long runs of packets read as arrays
         try:
             for data in self._read(False, lambda: True):
                 found = reader.feed(data)

@@ -97,45 +97,55 @@ class ColumnarCapture:
         start = index = 0
         count = len(ends)
         inbound = Direction.INBOUND
+        numpy = self._numpy
+        arrays = (numpy.frombuffer(ends, numpy.int64), numpy.frombuffer(stamps, numpy.int64)) if numpy else None
         while index < count:
             end = ends[index]
-            when = stamps[index] / 1_000_000
-            held = self._held
-            if held.sizes and directions[index] == inbound:
-                # `_packet` of each packet while held ones are: the same rule, without calls.
-                origin = self.decoder.start
-                assert origin is not None
-                last = self._last_in
-                pieces, sizes, times, numbers = held.pieces, held.sizes, held.times, held.packets
-                total = held.total
-                while total < _STRETCH:
-                    if last is None:
-                        if self.decoder.in_idle(when):
-                            break
-                    elif (when - origin) - (last - origin) >= IDLE_TIMEOUT:
-                        break
-                    pieces.append(data[start:end])
-                    sizes.append(end - start)
-                    times.append(when)
-                    numbers.append(number + index)
-                    total += end - start
-                    if end > start:
-                        last = when
-                    start = end
-                    index += 1
-                    if index == count or directions[index] != inbound:
-                        break
-                    end = ends[index]
-                    when = stamps[index] / 1_000_000
-                held.total = total
-                self._last_in = last
+            if self._held.sizes and self._last_in is not None and directions[index] == inbound:
+                assert arrays is not None  # only numpy holds packets
+                index = self._held_packets(found, arrays, index)
                 if index == count:
                     break
+                start = ends[index - 1] if index else 0
                 end = ends[index]
-                when = stamps[index] / 1_000_000
+            when = stamps[index] / 1_000_000
             self._packet(when, directions[index] == inbound, data[start:end], None, number + index)
             start = end
             index += 1
+
+    def _held_packets(self, found: Packets, arrays: tuple[Any, Any], index: int) -> int:
+        """`_packet` of the packets from `index` on while held ones are (numpy): each from the
+        device is held while the held ones are less than _STRETCH bytes and the line was not idle
+        before it (the same rule, decided for the packets at once). Where the packets held end."""
+        numpy = self._numpy
+        assert numpy is not None  # only numpy holds packets
+        data, directions, number = found.data, found.directions, found.first
+        ends, stamps = arrays  # found.ends and found.stamps
+        held, last = self._held, self._last_in
+        origin = self.decoder.start
+        assert origin is not None and last is not None
+        stop = directions.find(bytes([Direction.OUTBOUND]), index)
+        stop = len(directions) if stop < 0 else stop
+        high = ends[index:stop]
+        low = numpy.concatenate((ends[index - 1 : index] if index else [0], high[:-1]))
+        sizes = high - low
+        when = stamps[index:stop] / 1_000_000
+        steps = numpy.arange(len(sizes))
+        latest = numpy.maximum.accumulate(numpy.where(sizes > 0, steps, -1))  # the last packet with bytes
+        before = numpy.concatenate(([-1], latest[:-1]))
+        previous = numpy.where(before >= 0, when[before], last)
+        total = held.total + numpy.concatenate(([0], numpy.cumsum(sizes)[:-1]))
+        ends_run = (total >= _STRETCH) | ((when - origin) - (previous - origin) >= IDLE_TIMEOUT)
+        taken = int(numpy.argmax(ends_run)) if ends_run.any() else len(sizes)
+        if taken:
+            held.pieces.append(data[int(low[0]) : int(high[taken - 1])])
+            held.sizes += sizes[:taken].tolist()
+            held.times += when[:taken].tolist()
+            held.packets += range(number + index, number + index + taken)
+            held.total = int(total[taken - 1] + sizes[taken - 1])
+            if latest[taken - 1] >= 0:
+                self._last_in = float(when[latest[taken - 1]])
+        return index + taken
 
     def _packet(
         self, when: float | None, inbound: bool, data: bytes, chunk: Chunk | None, number: int | None = None
@@ -251,22 +261,25 @@ class ColumnarCapture:
     ) -> None:
         """The CSV rows of the output frames at `starts` in `data` (the bytes of `taken`, from
         `base` in the device's bytes), each in the chunk `arrived` says."""
+        numpy = self._numpy
         start = self.decoder.start
-        assert start is not None
-        at = arrived.tolist()
+        assert start is not None and numpy is not None
         times, packets = taken.times, taken.packets
-        stamps = {i: f"{round(times[i] - start, 6):.6f}" for i in set(at)}
+        stamps = _stamps(numpy, numpy.array(times, dtype=numpy.float64) - start)
+        numbers = list(map(str, packets)) if None not in packets else list(map(csv_text, packets))
+        if len(arrived) == len(times) and (len(times) < 2 or bool((numpy.diff(arrived) == 1).all())):
+            pass  # a frame per chunk, in order (arrived is 0, 1, ...): the chunks' columns are the rows'
+        else:
+            at = arrived.tolist()
+            stamps, numbers = list(map(stamps.__getitem__, at)), list(map(numbers.__getitem__, at))
         local = starts.tolist()
         values = self._values.texts(data, cls, local)
-        columns: list[list[str]] = [
-            [stamps[i] for i in at],
-            list(map(str, [base + offset for offset in local])),
-            [str(packets[i]) for i in at] if None not in packets else [csv_text(packets[i]) for i in at],
-            list(map(str, lengths.tolist())),
-        ]
+        sizes = lengths.tolist()
+        same = len(set(sizes)) == 1
         # A row is its values and constant fields joined by commas; each run of constant fields is
         # one item (repeated), so each row joins few items.
-        layout: list[Any] = [columns[0], "in", csv_text(cls.NAME), *columns[1:], "", ""]
+        layout: list[Any] = [stamps, "in", csv_text(cls.NAME), list(map(str, (starts + base).tolist())), numbers]
+        layout += [str(sizes[0]) if same else list(map(str, sizes)), "", ""]
         for name in self._columns[len(BASE_COLUMNS) :]:
             layout.append(values.get(name, ""))
         items: list[Any] = []
@@ -275,6 +288,17 @@ class ColumnarCapture:
                 items[-1] += "," + item
             else:
                 items.append(item)
-        count = len(at)
-        rows = zip(*([item] * count if isinstance(item, str) else item for item in items), strict=True)
-        self._out.write("".join([",".join(row) + "\n" for row in rows]))
+        count = len(local)
+        if count:
+            rows = zip(*([item] * count if isinstance(item, str) else item for item in items), strict=True)
+            self._out.write("\n".join(map(",".join, rows)) + "\n")
+
+
+def _stamps(numpy: Any, seconds: Any) -> list[str]:
+    """The `time` values of RowWriter, f"{round(t, 6):.6f}", of the float64 `seconds`: "%.6f" of the
+    value itself, which is the same text while a millionth is more than a float's step at that
+    magnitude (below 2**32 s); RowWriter's expression otherwise."""
+    values: list[float] = seconds.tolist()
+    if not len(seconds) or float(numpy.abs(seconds).max()) < 2.0**32:
+        return list(map("%.6f".__mod__, values))
+    return [f"{round(t, 6):.6f}" for t in values]

@@ -428,15 +428,17 @@ class Host:
         `apply` False: only count them, the session unchanged."""
         now, deadline = self._now, self._timer_deadline
         span = self._timer_span()
+        watched = not self._owed  # `_overdue`, inline (nothing here changes what is owed): no call per step
         done = 0
         for step, count in zip(steps, outputs, strict=True):
-            if step and self._overdue(self._now + step):
-                break  # `advance` by this step would report the missing output
-            self._now += step
+            if step:
+                if watched and deadline is not None and deadline < now + step:
+                    break  # `advance` by this step would report the missing output
+                now += step
             if count and span is not None:
-                self._timer_deadline = self._now + span  # as `receive` of an output re-arms the timer
+                deadline = now + span  # as `receive` of an output re-arms the timer
             done += 1
-        if not apply:
+        if apply:
             self._now, self._timer_deadline = now, deadline
         return done
 
