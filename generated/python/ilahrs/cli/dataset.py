@@ -30,7 +30,7 @@ and every damaged region (`kind=damaged`, with `reason` and `detail`). Columns, 
 Each field column carries Arrow field metadata: `unit`, `icd_table` (as "Table 6.4"),
 `icd_title` (the table's title), `icd_field` (the field's name in the ICD); with `raw`, `scale`
 (the engineering value is raw * multiplier / divisor, in `unit`). Needs pyarrow (the parquet extra:
-`pip install "./generated/python[parquet]"` from a checkout)."""
+`pip install "./generated/python[parquet]"` from a checkout, or `pip install 'pyarrow>=14'`)."""
 
 from __future__ import annotations
 
@@ -69,8 +69,8 @@ __all__ = [
 ]
 
 EXTRA: Final = "parquet"
-INSTALL: Final = 'pip install "./generated/python[parquet]"'
-"""How the parquet extra is installed from a checkout (the package is on no index)."""
+INSTALL: Final = "pip install 'pyarrow>=14'"
+"""What the parquet extra installs (`pip install "./generated/python[parquet]"` from a checkout)."""
 BATCH: Final = 8 << 20
 """CSV text decoded before it is read into Arrow columns and written (bytes)."""
 SOURCE: Final = "source"
