@@ -7,6 +7,7 @@ capture is skipped; Ctrl-C leaves nothing behind."""
 
 from __future__ import annotations
 
+import argparse
 import csv
 import io
 import math
@@ -233,3 +234,38 @@ def test_ctrl_c_stops_the_workers_and_leaves_nothing(
     assert (status, err.splitlines()[-1]) == (130, "ilahrs decode: interrupted")
     assert os.listdir(tmp_path) == []
     assert pools and all(f.cancelled() or f.done() for f in pools)
+
+
+class Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def test_a_line_per_capture_on_a_terminal_and_each_capture_once(captures: Path, tmp_path: Path) -> None:
+    run = captures / "in" / "a" / "run.pcapng"
+    args = argparse.Namespace(
+        files=[str(run), str(captures / "in" / "a"), str(captures / "in" / "b" / "run.bin")],
+        selected=["damaged"],
+        variant=None,
+        raw=False,
+        output_format=None,
+        strict=False,
+        jobs=1,  # in order (in processes, the lines come as the captures are done)
+    )
+    err = Terminal()
+    assert to_parquet.write(args, str(tmp_path / "out"), err) == 0
+    lines = err.getvalue().splitlines()
+    assert lines[:2] == [
+        f"ilahrs decode: [1/2] {run}: 104 messages",
+        f"ilahrs decode: [2/2] {captures / 'in' / 'b' / 'run.bin'}: 7 messages",
+    ]
+    assert lines[2].startswith("ilahrs decode: 2 captures, 111 messages, 2 damaged rows (damaged 2)")
+
+
+def test_a_dataset_inside_the_folder_of_captures_is_not_read_back(captures: Path, tmp_path: Path) -> None:
+    logs = tmp_path / "logs"
+    logs.mkdir()
+    (logs / "run.bin").write_bytes((captures / "in" / "b" / "run.bin").read_bytes())
+    for options in ((), ("--force",)):
+        status, err = decode(str(logs), "--to", "parquet", str(logs / "dataset"), *options)
+        assert status == 0 and err.startswith("ilahrs decode: 1 capture, 7 messages"), err

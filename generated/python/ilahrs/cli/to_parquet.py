@@ -28,6 +28,7 @@ import sys
 from collections import Counter
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from typing import TextIO
 
 from ..edge.signals import sigterm_as_interrupt
@@ -70,14 +71,20 @@ def _positive(text: str) -> int:
     return value
 
 
-def _walk(folder: str, report: Callable[[str], None]) -> Iterator[str]:
-    """The files under `folder` that are captures, in name order."""
+def _walk(folder: str, report: Callable[[str], None], output: str | None) -> Iterator[str]:
+    """The files under `folder` that are captures, in name order (not under the folder `output`)."""
+    skip = os.path.realpath(output) if output else None
     for top, folders, files in os.walk(folder, onerror=lambda exc: report(f"{exc.filename}: {exc.strerror}")):
-        folders[:] = sorted(name for name in folders if not name.startswith("."))
+        folders[:] = sorted(
+            name for name in folders if not name.startswith(".") and os.path.realpath(os.path.join(top, name)) != skip
+        )
         for name in sorted(files):
             if name.startswith("."):
                 continue
             path = os.path.join(top, name)
+            if not os.path.isfile(path):  # a pipe or a device would be read forever
+                report(f"skipped {path}: not a regular file")
+                continue
             try:
                 open_source(path).close()
             except CliError as exc:
@@ -86,11 +93,11 @@ def _walk(folder: str, report: Callable[[str], None]) -> Iterator[str]:
             yield path
 
 
-def captures(paths: list[str], report: Callable[[str], None]) -> list[str]:
-    """The captures that FILE arguments name: files as they are, the captures found in folders;
-    each once. CliError for standard input, a missing path, a file named that is no capture, or
-    no capture at all; `report` gets a
-    line for each file skipped."""
+def captures(paths: list[str], report: Callable[[str], None], output: str | None = None) -> list[str]:
+    """The captures that FILE arguments name: files as they are, the captures found in folders
+    (the dataset's folder `output` left out); each once. CliError for standard input, a missing
+    path, a file named that is no capture, or no capture at all; `report` gets a line for each
+    file skipped."""
     found: list[str] = []
     seen: set[str] = set()
     for path in paths:
@@ -100,7 +107,7 @@ def captures(paths: list[str], report: Callable[[str], None]) -> list[str]:
             raise CliError(f"{path}: no such file or directory")
         if not os.path.isdir(path):
             open_source(path).close()  # a file named is a capture, or the run is refused
-        for capture in _walk(path, report) if os.path.isdir(path) else [path]:
+        for capture in _walk(path, report, output) if os.path.isdir(path) else [path]:
             key = os.path.realpath(capture)
             if key not in seen:
                 seen.add(key)
@@ -129,6 +136,9 @@ def _run(found: list[str], out: str, options: DatasetOptions, jobs: int, done: C
         futures: list[Future[CaptureParts]] = [pool.submit(write_capture, c, out, options) for c in found]
         for future in as_completed(futures):
             done(future.result())
+    except BrokenProcessPool as exc:
+        _stop(pool)
+        raise CliError(f"a worker process ended abruptly (killed, or out of memory?): {exc}") from exc
     except BaseException:
         _stop(pool)
         raise
@@ -150,7 +160,7 @@ def write(args: argparse.Namespace, path: str, stream: TextIO | None = None) -> 
     the summary and errors to `stream` (standard error)."""
     stream = stream or sys.stderr
     arrow()  # a missing extra is one line before any capture is read
-    found = captures(args.files, lambda line: print(f"{PROG}: {line}", file=stream))
+    found = captures(args.files, lambda line: print(f"{PROG}: {line}", file=stream), getattr(args, "out", None))
     jobs = min(args.jobs, len(found))
     options = DatasetOptions(
         kinds=tuple(args.selected),
@@ -178,7 +188,8 @@ def write(args: argparse.Namespace, path: str, stream: TextIO | None = None) -> 
     messages = sum(r.messages for r in results)
     damaged = sum(r.damaged for r in results)
     per_kind = ", ".join(f"{kind} {count}" for kind, count in rows.most_common())
-    print(f"{PROG}: {len(found)} captures, {messages} messages, {damaged} damaged rows ({per_kind})", file=stream)
+    captured = f"{len(found)} capture{'' if len(found) == 1 else 's'}"
+    print(f"{PROG}: {captured}, {messages} messages, {damaged} damaged rows ({per_kind})", file=stream)
     failed = [r for r in results if r.error]
     for result in failed:
         print(f"{PROG}: {result.error}", file=stream)
