@@ -237,6 +237,7 @@ class _Parts:
         self.header = False
         convert = csv.ConvertOptions(
             column_types=dict.fromkeys(self.columns, pa.string()),
+            null_values=[""],  # the CSV's None; "nan" is a float, "NA" may be a device's text
             strings_can_be_null=True,
             quoted_strings_can_be_null=False,
         )
