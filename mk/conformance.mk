@@ -7,7 +7,11 @@
 #                                            (conformance/tools/suites/: a module and a case file per suite)
 #
 #   make test-conformance-example           the example runner of a foreign implementation
-#                                            (conformance/examples/javascript, Node 20) on its kinds
+#                                            (conformance/examples/javascript, Node 20) on its kinds,
+#                                            with its declaration and expected-failure list
+#   make conformance-report                  every registered binding and the JavaScript example side
+#                                            by side: build/conformance-report.html (one self-contained
+#                                            page, ilahrs.conformance.html) and .json; BINDINGS=... too
 #
 # The harness is the Python package's (ilahrs.conformance, also `ilahrs conformance` once installed;
 # conformance/harness.py runs it with the repository's defaults); stdlib-only, it starts each runner
@@ -20,7 +24,7 @@ CONFORMANCE_ARGS ?=
 
 EXAMPLE_KINDS := checksum,frame_decode,frame_encode,ack
 
-.PHONY: vectors check-vectors test-conformance-example
+.PHONY: vectors check-vectors test-conformance-example conformance-report
 
 conformance: setup build
 	$(PY) conformance/harness.py --vectors $(VECTORS) $(if $(BINDINGS),--bindings $(BINDINGS)) $(CONFORMANCE_ARGS)
@@ -39,6 +43,20 @@ test-conformance-example: setup
 	@command -v node >/dev/null || { echo "test-conformance-example: needs Node.js 20 (node)" >&2; exit 1; }
 	mkdir -p $(BUILD)
 	$(PY) conformance/harness.py --command "node conformance/examples/javascript/runner.mjs" \
-		--name javascript --kinds $(EXAMPLE_KINDS) --options - --junit $(BUILD)/conformance-example.xml
+		--name javascript --kinds $(EXAMPLE_KINDS) --options - --junit $(BUILD)/conformance-example.xml \
+		--declaration conformance/examples/javascript/declaration.json \
+		--expected-failures conformance/examples/javascript/expected-failures.json
 
 TEST_TARGETS += test-conformance-example
+
+# The report across implementations: the registered bindings, and the example runner as a --command
+# beside them (held to its kinds as above). Written even when something fails (then make fails too).
+conformance-report: setup build
+	@command -v node >/dev/null || { echo "conformance-report: needs Node.js 20 (node)" >&2; exit 1; }
+	mkdir -p $(BUILD)
+	$(PY) conformance/harness.py --vectors $(VECTORS) --bindings $(or $(BINDINGS),all) \
+		--command "node conformance/examples/javascript/runner.mjs" --name javascript \
+		--kinds $(EXAMPLE_KINDS) --options - $(CONFORMANCE_ARGS) \
+		--declaration conformance/examples/javascript/declaration.json \
+		--expected-failures conformance/examples/javascript/expected-failures.json \
+		--report $(BUILD)/conformance-report.html --json $(BUILD)/conformance-report.json

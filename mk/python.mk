@@ -30,11 +30,13 @@ lint-python: setup
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 	$(VENV)/bin/lint-imports --config .importlinter
 
-# tests/cli/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well: both
+# tests/cli/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well, and
+# tests/conformance/test_html_report.py opens the conformance report in headless Chromium: all three
 # are installed from Debian's packages when missing.
 test-python: setup
 	@command -v tmux >/dev/null || tools/need tmux
 	@command -v tshark >/dev/null || tools/need tshark
+	@command -v chromium >/dev/null || tools/need --no-recommends chromium fonts-liberation
 	$(PY) -m pytest tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per

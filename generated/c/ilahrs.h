@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+/* Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
  * Do not edit: change the spec or the generator and run `make generate`.
  * SPDX-License-Identifier: MIT OR Apache-2.0
  */
@@ -8,7 +8,7 @@
  * tables, the Unit Status Word, $PAHR sentences and a stream decoder, in C99.
  *
  * Spec ilahrs 1.0.0; every protocol fact below comes from spec/ilahrs.yaml
- * (errata E1-E42 there explain each choice where the ICD is unclear).
+ * (errata E1-E43 there explain each choice where the ICD is unclear).
  */
 /**
  * Copy ilahrs.h and ilahrs.c into your project; there is nothing to configure. The library
@@ -86,7 +86,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74"
+#define ILAHRS_SPEC_HASH "905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b"
 /** What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
  * docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes. */
 #define ILAHRS_WIRE_FINGERPRINT UINT64_C(0x0d3ab4a6e6f066a7)

@@ -190,7 +190,8 @@ def test_all_passing_exits_zero_and_json_report(tmp_path: Path) -> None:
     assert code == 0 and text.rstrip().endswith("PASSED")
     report = json.loads((tmp_path / "r.json").read_text())
     assert report["ok"] and report["results"] == [
-        {"binding": "fake", "suite": "t", "passed": 1, "failed": 0, "unsupported": 0}]
+        {"binding": "fake", "suite": "t", "passed": 1, "failed": 0, "unsupported": 0, "expected_failures": 0,
+         "unexpected_passes": 0, "not_applicable": 0, "skipped": 0}]
 
 
 def test_unsupported_for_a_listed_kind_fails(tmp_path: Path) -> None:

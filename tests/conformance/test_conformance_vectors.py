@@ -92,7 +92,11 @@ def test_oracle_is_independent_of_generator_and_bindings() -> None:
                     for alias in node.names}
         imported |= {(node.module or "").split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
         # Without yaml it cannot read the spec either: everything it knows is written from the ICD.
-        assert not imported & {"generator", "ilahrs", "yaml", "kaitaistruct", "construct"}, path.name
+        # suites/levels.py alone reads the spec (errata, transitions' errata, commands' outputs) for
+        # the levels and requirements of vectors, never for an expectation.
+        spec_reader = {"yaml"} if path.name == "levels.py" else set()
+        banned = {"generator", "ilahrs", "kaitaistruct", "construct", "yaml"} - spec_reader
+        assert not imported & banned, path.name
 
 
 def test_error_kinds_are_the_specs() -> None:

@@ -360,6 +360,7 @@ def extra(name: str) -> str:
         ("serial", ["send", "/dev/ttyUSB0", "Stop"], "serial"),
         ("matplotlib", ["plot", "CAPTURE", "-o", "x.png"], "plot"),
         ("pyarrow", ["decode", "CAPTURE", "--to", "parquet", "out"], "parquet"),
+        ("rosbags", ["decode", "CAPTURE", "--to", "rosbag2", "bag"], "ros"),
     ],
 )
 def test_a_missing_optional_dependency_names_a_command_that_installs_it(

@@ -12,6 +12,13 @@ from collections.abc import Callable
 
 from . import acks, appendix_c, checksum, frames, nmea, payloads, sessions, streams
 from .common import Vector, source
+from .levels import annotate, icd_revision
+
+VERSION = "1.0.0"
+"""The version of the suites (semver), written into every suite file: a changed expectation (input,
+expect or options of a vector id, or a vector removed) is a major bump, a new vector or a changed
+level a minor one, anything else (notes) a patch or nothing. `make_vectors.py --check` compares
+with the committed suites (git) and refuses a change without its bump."""
 
 SUITES: dict[str, Callable[[], list[Vector]]] = {
     "appendix-c": appendix_c.vectors,
@@ -29,8 +36,11 @@ def render(suite: str, source: str, vectors: list[Vector]) -> str:
     """One vector per line, so that a diff shows which vectors changed."""
     ids = [v["id"] for v in vectors]
     assert len(ids) == len(set(ids)), [i for i in ids if ids.count(i) > 1]
-    lines = [json.dumps(v, ensure_ascii=True, allow_nan=False) for v in vectors]
-    head = f'{{"suite": {json.dumps(suite)}, "source": {json.dumps(source)}, "vectors": [\n'
+    lines = [json.dumps(annotate(v), ensure_ascii=True, allow_nan=False) for v in vectors]
+    head = (
+        f'{{"suite": {json.dumps(suite)}, "version": {json.dumps(VERSION)}, '
+        f'"icd_revision": {json.dumps(icd_revision())}, "source": {json.dumps(source)}, "vectors": [\n'
+    )
     return head + ",\n".join(lines) + "\n]}\n"
 
 

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -13,7 +13,7 @@ from typing import Final
 from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74"
+SPEC_SHA256: Final = "905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b"
 WIRE_FINGERPRINT: Final = 0x0D3AB4A6E6F066A7
 """What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not docs or
 names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes."""

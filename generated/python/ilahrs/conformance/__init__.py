@@ -1,11 +1,13 @@
 # Copied from generator/targets/python/runtime/conformance/__init__.py for spec/ilahrs.yaml,
-# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
 # Do not edit: change the runtime source and run `make generate`.
 """The conformance suite: run the vectors against a runner and compare its answers.
 
     ilahrs conformance --command "./my_runner"                  # every vector shipped with the package
     ilahrs conformance --command "./my_runner" --kinds checksum,frame_decode --junit report.xml
     ilahrs conformance --bindings-dir conformance/bindings      # runners registered as NAME.json
+    ilahrs conformance --bindings-dir conformance/bindings --bindings all --command "./mine" --name mine \
+        --report report.html                                    # both, side by side in one page
     ilahrs conformance --device /dev/ttyUSB0                    # a device, live (ilahrs.conformance.live)
 
 The suites (`vectors/*.json` in this package, the same files as the repository's
@@ -16,8 +18,9 @@ every vector. Standard library only. Exit status: 0 when nothing failed, 1 when 
 
 The modules: `vectors` (the suites, a session's events as typed values), `protocol` (request and
 answer lines), `compare` (an answer against its expectation), `runner` (registrations, runner
-processes, a binding's run), `report` (table, JSON, JUnit XML), `live` (the flows against a device)
-and `command` (the options and the run of `ilahrs conformance`).
+processes, a binding's run), `report` (table, JSON, JUnit XML), `html` (the results as one
+self-contained HTML page, `--report`), `live` (the flows against a device) and `command` (the
+options and the run of `ilahrs conformance`).
 """
 
 from __future__ import annotations

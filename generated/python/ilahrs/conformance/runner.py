@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/conformance/runner.py for spec/ilahrs.yaml,
-# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
 # Do not edit: change the runtime source and run `make generate`.
 """Runners: the registrations of bindings, a runner process fed one request line at a time, and a
 binding run against the suites."""
@@ -21,16 +21,20 @@ from pathlib import Path
 from typing import IO
 
 from .compare import compare
+from .declaration import Declaration
 from .protocol import parse_answer, request
-from .vectors import KINDS, OPTIONS, Suite, Vector
+from .vectors import KINDS, LEVELS, OPTIONS, Suite, Vector
 
 __all__ = [
     "MAX_CONSECUTIVE_CRASHES",
+    "OUTCOMES",
     "Binding",
     "BindingError",
     "Case",
     "Cell",
     "Failure",
+    "Outcome",
+    "Plan",
     "Result",
     "Runner",
     "RunnerGoneError",
@@ -55,6 +59,11 @@ class Binding:
     """Where its command runs and relative paths in it resolve: a registration's "root", relative to
     the registration's folder (that folder when absent); None (an ad-hoc runner): --root or the
     current directory."""
+    declaration: Path | None = None
+    """Its declaration (conformance/declaration.schema.json): a registration's "declaration",
+    relative to the registration's folder; None: everything applies."""
+    expected_failures: Path | None = None
+    """Its expected-failure file: a registration's "expected_failures", relative to its folder."""
 
 
 def _binding(path: Path) -> Binding:
@@ -82,7 +91,13 @@ def _binding(path: Path) -> Binding:
     if not isinstance(root, str):
         raise BindingError(f"{path}: root must be a directory relative to the registration, such as ../..")
     base = (path.parent / root).resolve()
-    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options, base)
+    files: list[Path | None] = []
+    for key in ("declaration", "expected_failures"):
+        value = doc.get(key)
+        if value is not None and not isinstance(value, str):
+            raise BindingError(f"{path}: {key} must be a file name relative to the registration")
+        files.append(None if value is None else (path.parent / value).resolve())
+    return Binding(doc["name"], command, list(doc["kinds"]), doc.get("build"), options, base, *files)
 
 
 def load_bindings(directory: Path, only: list[str] | None) -> list[Binding]:
@@ -204,9 +219,58 @@ class Failure:
 
 @dataclass
 class Cell:
+    """The counts of one binding on one suite (the names the JSON report writes)."""
+
     passed: int = 0
     failed: int = 0
     unsupported: int = 0
+    expected_failures: int = 0
+    unexpected_passes: int = 0
+    not_applicable: int = 0
+    skipped: int = 0
+
+
+OUTCOMES = ("passed", "failed", "expected_failure", "unexpected_pass", "unsupported", "not_applicable", "skipped")
+_COUNTER = {
+    "passed": "passed",
+    "failed": "failed",
+    "expected_failure": "expected_failures",
+    "unexpected_pass": "unexpected_passes",
+    "unsupported": "unsupported",
+    "not_applicable": "not_applicable",
+    "skipped": "skipped",
+}
+
+
+@dataclass
+class Outcome:
+    """A vector run against a binding: `outcome` one of OUTCOMES, `reason` why (a failure's reason,
+    what excluded it)."""
+
+    binding: str
+    vector: Vector
+    outcome: str
+    reason: str = ""
+
+
+@dataclass
+class Plan:
+    """What a binding is held to: the level (a vector above it is skipped), the vectors -k chose
+    (None: all), its declaration (None: everything applies), its expected failures."""
+
+    level: str = "all"
+    chosen: set[str] | None = None
+    declaration: Declaration | None = None
+    expected: dict[str, str] = field(default_factory=dict)
+
+    def excluded(self, v: Vector) -> tuple[str, str] | None:
+        """(outcome, reason) when the vector is not run: skipped, or not_applicable."""
+        if self.chosen is not None and v.key not in self.chosen:
+            return "skipped", "not chosen by -k"
+        if self.level != "all" and LEVELS.index(v.level) > LEVELS.index(self.level):
+            return "skipped", f"level {v.level} is above --level {self.level}"
+        why = self.declaration.why_not(v) if self.declaration is not None else None
+        return ("not_applicable", why) if why is not None else None
 
 
 @dataclass
@@ -228,10 +292,24 @@ class Result:
     failures: list[Failure] = field(default_factory=list)
     problems: list[str] = field(default_factory=list)  # a binding that could not run at all
     cases: list[Case] = field(default_factory=list)
+    outcomes: list[Outcome] = field(default_factory=list)
+    plans: dict[str, Plan] = field(default_factory=dict)
+    """Each binding's plan (its declaration and expected failures), for the reports."""
 
     @property
     def ok(self) -> bool:
-        return not self.failures and not self.problems and not any(c.failed for c in self.cells.values())
+        return (
+            not self.failures
+            and not self.problems
+            and not any(c.failed or c.unexpected_passes for c in self.cells.values())
+        )
+
+    def totals(self) -> Cell:
+        total = Cell()
+        for cell in self.cells.values():
+            for name, value in vars(cell).items():
+                setattr(total, name, getattr(total, name) + value)
+        return total
 
 
 MAX_CONSECUTIVE_CRASHES = 5
@@ -246,8 +324,11 @@ def _failure_detail(v: Vector, line: str, answer: str) -> str:
 class _BindingRun:
     """One binding against the suites: the runner process, restarted after a crash."""
 
-    def __init__(self, binding: Binding, command: list[str], root: Path, timeout: float, result: Result) -> None:
+    def __init__(
+        self, binding: Binding, command: list[str], root: Path, timeout: float, result: Result, *, plan: Plan
+    ) -> None:
         self.binding = binding
+        self.plan = plan
         self.command = command
         self.root = root
         self.timeout = timeout
@@ -255,30 +336,67 @@ class _BindingRun:
         self.runner: Runner | None = None
         self.crashes = 0
 
+    def record(self, cell: Cell, v: Vector, outcome: str, reason: str = "") -> None:
+        counter = _COUNTER[outcome]
+        setattr(cell, counter, getattr(cell, counter) + 1)
+        self.result.outcomes.append(Outcome(self.binding.name, v, outcome, reason))
+
     def fail(self, cell: Cell, v: Vector, reason: str, *, line: str, answer: str = "", seconds: float = 0.0) -> None:
-        cell.failed += 1
+        group = f"{self.binding.name}.{v.suite}"
+        listed = self.plan.expected.get(v.key)
+        if listed is not None:
+            self.record(cell, v, "expected_failure", reason)
+            message = f"expected failure ({listed}): {reason}"
+            self.result.cases.append(Case(group, v.id, "skipped", message, seconds=seconds))
+            return
+        self.record(cell, v, "failed", reason)
         self.result.failures.append(Failure(self.binding.name, v, reason, line, answer))
         detail = _failure_detail(v, line, answer)
-        self.result.cases.append(Case(f"{self.binding.name}.{v.suite}", v.id, "failed", reason, detail, seconds))
+        self.result.cases.append(Case(group, v.id, "failed", reason, detail, seconds))
 
-    def skip(self, cell: Cell, v: Vector, why: str) -> None:
-        cell.unsupported += 1
-        self.result.cases.append(Case(f"{self.binding.name}.{v.suite}", v.id, "skipped", why))
+    def passed(self, cell: Cell, v: Vector, *, line: str, answer: str, seconds: float) -> None:
+        group = f"{self.binding.name}.{v.suite}"
+        listed = self.plan.expected.get(v.key)
+        if listed is None:
+            self.record(cell, v, "passed")
+            self.result.cases.append(Case(group, v.id, "passed", seconds=seconds))
+            return
+        reason = f"unexpected pass: listed as an expected failure ({listed})"
+        self.record(cell, v, "unexpected_pass", reason)
+        self.result.failures.append(Failure(self.binding.name, v, reason, line, answer))
+        self.result.cases.append(Case(group, v.id, "failed", reason, _failure_detail(v, line, answer), seconds))
 
-    def vector(self, cell: Cell, v: Vector, kinds: Sequence[str] | None) -> None:
+    def skip(self, cell: Cell, v: Vector, why: str, outcome: str = "unsupported") -> None:
+        self.record(cell, v, outcome, why)
+        message = why if outcome == "unsupported" else f"{outcome.replace('_', ' ')}: {why}"
+        self.result.cases.append(Case(f"{self.binding.name}.{v.suite}", v.id, "skipped", message))
+
+    def not_sent(self, v: Vector, kinds: Sequence[str] | None) -> tuple[str, str] | None:
+        """(outcome, reason) of a vector not sent to the runner: skipped, not applicable, not
+        supported, or failed (an option this harness does not know)."""
         binding = self.binding
+        excluded = self.plan.excluded(v)
+        if excluded is not None:
+            return excluded
         if kinds is not None and v.kind not in kinds:
-            self.skip(cell, v, f"{binding.name} does not list the kind {v.kind}")
-            return
-        line = request(v)
+            return "unsupported", f"{binding.name} does not list the kind {v.kind}"
         if v.unknown_options:
-            unknown = ", ".join(v.unknown_options)
-            self.fail(cell, v, f"option {unknown} unknown to this harness for {v.kind}", line=line)
-            return
+            return "failed", f"option {', '.join(v.unknown_options)} unknown to this harness for {v.kind}"
         known = OPTIONS if binding.options is None else binding.options
         missing = [o for o, value in v.options.items() if value and o not in known]
         if missing:
-            self.skip(cell, v, f"{binding.name} does not list the option {', '.join(missing)}")
+            return "unsupported", f"{binding.name} does not list the option {', '.join(missing)}"
+        return None
+
+    def vector(self, cell: Cell, v: Vector, kinds: Sequence[str] | None) -> None:
+        binding = self.binding
+        line = request(v)
+        not_sent = self.not_sent(v, kinds)
+        if not_sent is not None and not_sent[0] == "failed":
+            self.fail(cell, v, not_sent[1], line=line)
+            return
+        if not_sent is not None:
+            self.skip(cell, v, not_sent[1], not_sent[0])
             return
         if self.crashes >= MAX_CONSECUTIVE_CRASHES:
             self.fail(cell, v, "not run: the runner keeps failing", line=line)
@@ -307,8 +425,7 @@ class _BindingRun:
         else:
             reason = compare(v, answer)
         if reason is None:
-            cell.passed += 1
-            self.result.cases.append(Case(f"{binding.name}.{v.suite}", v.id, "passed", seconds=seconds))
+            self.passed(cell, v, line=line, answer=answer_line, seconds=seconds)
         else:
             self.fail(cell, v, reason, line=line, answer=answer_line, seconds=seconds)
 
@@ -318,7 +435,11 @@ class _BindingRun:
             self.runner = None
 
 
-def run_binding(binding: Binding, suites: list[Suite], root: Path, timeout: float, result: Result) -> None:
+def run_binding(
+    binding: Binding, suites: list[Suite], root: Path, timeout: float, result: Result, *, plan: Plan | None = None
+) -> None:
+    plan = plan if plan is not None else Plan()
+    result.plans[binding.name] = plan
     command = resolve_command(binding, root)
     if command is None:
         build = f"; build it with `{binding.build}` there" if binding.build else ""
@@ -328,8 +449,9 @@ def run_binding(binding: Binding, suites: list[Suite], root: Path, timeout: floa
             result.cells[(binding.name, suite.name)] = Cell(failed=len(suite.vectors))
             group = f"{binding.name}.{suite.name}"
             result.cases += [Case(group, v.id, "failed", problem) for v in suite.vectors]
+            result.outcomes += [Outcome(binding.name, v, "failed", problem) for v in suite.vectors]
         return
-    run = _BindingRun(binding, command, root, timeout, result)
+    run = _BindingRun(binding, command, root, timeout, result, plan=plan)
     try:
         for suite in suites:
             cell = result.cells.setdefault((binding.name, suite.name), Cell())

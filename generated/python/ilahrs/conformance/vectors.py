@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/conformance/vectors.py for spec/ilahrs.yaml,
-# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
 # Do not edit: change the runtime source and run `make generate`.
 """The suites: vectors as the format (conformance/vectors.schema.json) gives them, checked, with a
 session vector's events as typed values."""
@@ -15,7 +15,9 @@ from typing import Any
 
 __all__ = [
     "KINDS",
+    "LEVELS",
     "OPTIONS",
+    "REQUIRES",
     "SPECIAL_FLOATS",
     "VECTORS_DIR",
     "CommandEvent",
@@ -33,6 +35,7 @@ __all__ = [
     "parse_hex",
     "session",
     "session_event",
+    "suite_version",
 ]
 
 VECTORS_DIR = Path(__file__).resolve().parent.parent / "vectors"
@@ -51,6 +54,12 @@ KINDS = (
     "stream",
     "session",
 )
+LEVELS = ("required", "recommended", "erratum")
+"""A vector's level of obligation, in order (conformance/README.md, Levels): `--level required`
+runs the first, `recommended` the first two, `all` every one."""
+REQUIRES = ("commands", "outputs", "payloads", "variants", "nmea", "firmware")
+"""What a vector's "requires" may name: the features of a declaration it needs (lists of names, and
+nmea a boolean)."""
 OPTIONS: dict[str, tuple[str, ...]] = {"strict": ("frame_decode", "stream")}
 """The vector options this harness sends (`"options"` of a vector), and the kinds each applies to.
 A vector with an option not listed here fails: it is never sent without it."""
@@ -58,6 +67,8 @@ SPECIAL_FLOATS = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
 _HEX_RE = re.compile(r"(?:[0-9A-Fa-f]{2})*")
 _NAME_RE = re.compile(r"[^\s=,%]+")
 _VERSION_RE = re.compile(r"[0-9]+(?:\.[0-9]+)*")
+_SEMVER_RE = re.compile(r"[0-9]+\.[0-9]+\.[0-9]+")
+_ERRATUM_RE = re.compile(r"E[0-9]+")
 
 
 class SuiteError(Exception):
@@ -99,10 +110,18 @@ class Vector:
     expect: Any
     note: str | None
     options: dict[str, Any] = field(default_factory=dict)
+    level: str = "required"
+    erratum: str | None = None
+    requires: dict[str, Any] = field(default_factory=dict)
 
     @property
     def where(self) -> str:
         return f"{self.suite}:{self.id}"
+
+    @property
+    def key(self) -> str:
+        """The vector's name in the whole set, as expected-failure files write it: <suite>/<id>."""
+        return f"{self.suite}/{self.id}"
 
     @property
     def unknown_options(self) -> list[str]:
@@ -194,6 +213,35 @@ class Suite:
     name: str
     path: Path
     vectors: list[Vector]
+    version: str | None = None
+    """The suites' semver (a changed expectation is a major bump, a new vector a minor one)."""
+    icd_revision: str | None = None
+
+
+def _obligation(path: Path, raw: dict[str, Any]) -> tuple[str, str | None, dict[str, Any]]:
+    """A vector's level, erratum and requires, checked (absent: required, nothing)."""
+    where = f"{path}: {raw['id']}"
+    level = raw.get("level", "required")
+    if level not in LEVELS:
+        raise SuiteError(f"{where}: level must be one of {', '.join(LEVELS)}")
+    erratum = raw.get("erratum")
+    if (level == "erratum") != (erratum is not None):
+        raise SuiteError(f"{where}: an erratum-level vector names its erratum, and only it does")
+    if erratum is not None and not (isinstance(erratum, str) and _ERRATUM_RE.fullmatch(erratum)):
+        raise SuiteError(f"{where}: erratum is an id like E12")
+    requires = raw.get("requires", {})
+    if not isinstance(requires, dict) or any(k not in REQUIRES for k in requires):
+        raise SuiteError(f"{where}: requires is an object of {', '.join(REQUIRES)}")
+    for key, value in requires.items():
+        good = (
+            isinstance(value, bool)
+            if key == "nmea"
+            else isinstance(value, list) and all(isinstance(v, str) for v in value)
+        )
+        if not good:
+            what = "true or false" if key == "nmea" else "a list of names"
+            raise SuiteError(f"{where}: requires.{key} must be {what}")
+    return level, erratum, requires
 
 
 def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
@@ -210,7 +258,9 @@ def _suite_vectors(path: Path, name: str, raws: list[object]) -> list[Vector]:
         if not isinstance(options, dict):
             raise SuiteError(f"{path}: {raw['id']}: options must be an object")
         seen.add(raw["id"])
+        level, erratum, requires = _obligation(path, raw)
         vector = Vector(name, raw["id"], raw["kind"], raw["input"], raw["expect"], raw.get("note"), options)
+        vector.level, vector.erratum, vector.requires = level, erratum, requires
         vectors.append(vector)
     return vectors
 
@@ -231,5 +281,25 @@ def load_suites(directory: Path) -> list[Suite]:
             or not isinstance(doc.get("vectors"), list)
         ):
             raise SuiteError(f'{path}: a suite is {{"suite": str, "source": str, "vectors": [...]}}')
-        suites.append(Suite(doc["suite"], path, _suite_vectors(path, doc["suite"], doc["vectors"])))
+        version, icd = doc.get("version"), doc.get("icd_revision")
+        if version is not None and not (isinstance(version, str) and _SEMVER_RE.fullmatch(version)):
+            raise SuiteError(f"{path}: version must be a semver like 1.0.0")
+        if icd is not None and not isinstance(icd, str):
+            raise SuiteError(f"{path}: icd_revision must be a string like 1.7")
+        vectors = _suite_vectors(path, doc["suite"], doc["vectors"])
+        suites.append(Suite(doc["suite"], path, vectors, version, icd))
     return suites
+
+
+def suite_version(suites: list[Suite]) -> dict[str, str | None]:
+    """The version and ICD revision of a set of suites, as every report shows them ("a, b" when the
+    files disagree; None when none says)."""
+
+    def joined(values: list[str | None]) -> str | None:
+        found = sorted({v for v in values if v is not None})
+        return ", ".join(found) if found else None
+
+    return {
+        "version": joined([s.version for s in suites]),
+        "icd_revision": joined([s.icd_revision for s in suites]),
+    }

@@ -3,6 +3,8 @@
     ilahrs conformance --command "./my_runner"                  # every vector shipped with the package
     ilahrs conformance --command "./my_runner" --kinds checksum,frame_decode --junit report.xml
     ilahrs conformance --bindings-dir conformance/bindings      # runners registered as NAME.json
+    ilahrs conformance --bindings-dir conformance/bindings --bindings all --command "./mine" --name mine \
+        --report report.html                                    # both, side by side in one page
     ilahrs conformance --device /dev/ttyUSB0                    # a device, live (ilahrs.conformance.live)
 
 The suites (`vectors/*.json` in this package, the same files as the repository's
@@ -13,8 +15,9 @@ every vector. Standard library only. Exit status: 0 when nothing failed, 1 when 
 
 The modules: `vectors` (the suites, a session's events as typed values), `protocol` (request and
 answer lines), `compare` (an answer against its expectation), `runner` (registrations, runner
-processes, a binding's run), `report` (table, JSON, JUnit XML), `live` (the flows against a device)
-and `command` (the options and the run of `ilahrs conformance`).
+processes, a binding's run), `report` (table, JSON, JUnit XML), `html` (the results as one
+self-contained HTML page, `--report`), `live` (the flows against a device) and `command` (the
+options and the run of `ilahrs conformance`).
 """
 
 from __future__ import annotations

@@ -66,8 +66,10 @@ from ..statemachine import (
     lookup,
 )
 from ..stream import StreamDecoder, StreamEvent
+from .declaration import DeclarationError, load_declaration
 from .report import junit_xml
 from .runner import Case
+from .runner import Plan as Selection
 from .vectors import CommandEvent, DataEvent, SessionEvent, SuiteError, TimerEvent, Vector, load_suites, session
 
 __all__ = ["RATE_SLACK", "RATE_TOLERANCE", "Plan", "alignment_needed", "plan_flow", "run_live"]
@@ -492,12 +494,24 @@ class Parameters:
         return why
 
 
-def _flows(args: argparse.Namespace) -> list[Vector]:
+def _flows(args: argparse.Namespace) -> tuple[list[Vector], list[tuple[Vector, str, str]]]:
+    """The flows to run, and those --level or --declaration exclude: (flow, outcome, why)."""
     suites = {s.name: s for s in load_suites(args.vectors)}
     if "sessions" not in suites:
         raise SuiteError(f"no sessions suite in {args.vectors}")
     flows = [v for v in suites["sessions"].vectors if v.id.startswith("flow/")]
-    return [v for v in flows if not args.pattern or args.pattern in v.id]
+    flows = [v for v in flows if not args.pattern or args.pattern in v.id]
+    declaration = load_declaration(args.declaration) if args.declaration is not None else None
+    plan = Selection(args.level, None, declaration)
+    run: list[Vector] = []
+    excluded: list[tuple[Vector, str, str]] = []
+    for v in flows:
+        why = plan.excluded(v)
+        if why is None:
+            run.append(v)
+        else:
+            excluded.append((v, *why))
+    return run, excluded
 
 
 def _version(text: str) -> str | None:
@@ -572,6 +586,10 @@ class LiveReport:
     firmware: str | None = None
     cases: list[Case] = field(default_factory=list)
     plans: dict[str, Plan] = field(default_factory=dict)
+    flows: dict[str, Vector] = field(default_factory=dict)
+    """Every flow of the run, by id (its level)."""
+    outcomes: dict[str, str] = field(default_factory=dict)
+    """A flow that did not run -> not_applicable or skipped."""
     restored: str | None = "not started"
     interrupted: bool = False
     error: str | None = None
@@ -604,6 +622,9 @@ class LiveReport:
                 {
                     "id": c.name,
                     "status": c.status,
+                    "outcome": self.outcomes.get(c.name, c.status),
+                    "level": self.flows[c.name].level if c.name in self.flows else None,
+                    "erratum": self.flows[c.name].erratum if c.name in self.flows else None,
                     "message": c.message,
                     "seconds": round(c.seconds, 3),
                     "steps": [
@@ -617,7 +638,11 @@ class LiveReport:
 
 
 def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport, out: IO[str]) -> None:
-    flows = _flows(args)
+    flows, excluded = _flows(args)
+    for v, outcome, why in excluded:
+        report.flows[v.id] = v
+        report.outcomes[v.id] = outcome
+        report.cases.append(Case("live.sessions", v.id, "skipped", f"{outcome.replace('_', ' ')}: {why}"))
     device.original = None
     original = device.read()
     report.firmware_text = device.firmware()
@@ -646,6 +671,7 @@ def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport,
     out.flush()
     for v, plan in zip(flows, plans, strict=True):
         report.plans[v.id] = plan
+        report.flows[v.id] = v
         if plan.changes_calibration and not args.allow_calibration:
             case = Case("live.sessions", v.id, "skipped", "changes the stored calibration (--allow-calibration)")
         else:
@@ -658,6 +684,8 @@ def _run_flows(args: argparse.Namespace, device: Parameters, report: LiveReport,
 
 def _summary(report: LiveReport, out: IO[str]) -> None:
     counts = {s: sum(c.status == s for c in report.cases) for s in ("passed", "failed", "skipped")}
+    inapplicable = sum(o == "not_applicable" for o in report.outcomes.values())
+    counts["skipped"] -= inapplicable
     for case in report.cases:
         if case.status == "failed":
             out.write(f"\nFAILED {case.name}: {case.message}\n")
@@ -667,7 +695,7 @@ def _summary(report: LiveReport, out: IO[str]) -> None:
         restored = "parameters not changed"
     out.write(
         f"\nlive: {len(report.cases)} flows: {counts['passed']} passed, {counts['failed']} failed, "
-        f"{counts['skipped']} skipped in {report.seconds:.1f} s; {restored}\n"
+        f"{counts['skipped']} skipped, {inapplicable} not applicable in {report.seconds:.1f} s; {restored}\n"
     )
     out.write(f"{'PASSED' if report.ok else 'INTERRUPTED' if report.interrupted else 'FAILED'}\n")
 
@@ -692,7 +720,7 @@ def run_live(args: argparse.Namespace, out: IO[str] = sys.stdout) -> int:
             except KeyboardInterrupt:
                 report.interrupted = True
                 print("ilahrs conformance: interrupted; restoring the parameters", file=sys.stderr)
-            except (SuiteError, MismatchError, UsageError) as exc:
+            except (SuiteError, DeclarationError, MismatchError, UsageError) as exc:
                 print(f"ilahrs conformance: {exc}", file=sys.stderr)
                 report.error = str(exc)
                 status = 1 if isinstance(exc, MismatchError) else 2

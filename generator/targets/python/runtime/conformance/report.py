@@ -9,24 +9,47 @@ from typing import IO, Any
 from xml.etree import ElementTree
 
 from .runner import Binding, Case, Cell, Result
-from .vectors import Suite
+from .vectors import Suite, suite_version
 
-__all__ = ["cell_text", "json_report", "junit_xml", "report"]
+__all__ = ["cell_text", "json_report", "junit_xml", "report", "summary_line", "version_text"]
 
 
 def _cut(text: str, limit: int) -> str:
     return text if len(text) <= limit else text[:limit] + f"... ({len(text)} chars)"
 
 
+_SHORT = (
+    ("failed", "FAILED"),
+    ("unexpected_passes", "XPASS"),
+    ("expected_failures", "xfail"),
+    ("unsupported", "n/s"),
+    ("not_applicable", "n/a"),
+    ("skipped", "skipped"),
+)
+
+
 def cell_text(cell: Cell) -> str:
     parts = []
-    if cell.passed or not (cell.failed or cell.unsupported):
+    others = [getattr(cell, name) for name, _ in _SHORT]
+    if cell.passed or not any(others):
         parts.append(f"{cell.passed} passed")
-    if cell.failed:
-        parts.append(f"{cell.failed} FAILED")
-    if cell.unsupported:
-        parts.append(f"{cell.unsupported} n/s")
+    parts += [f"{getattr(cell, name)} {word}" for name, word in _SHORT if getattr(cell, name)]
     return ", ".join(parts)
+
+
+def summary_line(cell: Cell) -> str:
+    """The counts of a run, as protobuf's conformance runner gives them."""
+    return (
+        f"{cell.passed} passed, {cell.failed} failed, {cell.expected_failures} expected failures, "
+        f"{cell.unexpected_passes} unexpected passes, {cell.not_applicable} not applicable, "
+        f"{cell.skipped} skipped, {cell.unsupported} not supported"
+    )
+
+
+def version_text(suites: list[Suite]) -> str:
+    """The suites' version as the reports show it: `suites 1.0.0 (ICD rev 1.7)`."""
+    found = suite_version(suites)
+    return f"suites {found['version'] or 'unversioned'} (ICD rev {found['icd_revision'] or 'unknown'})"
 
 
 def _table(result: Result, bindings: list[Binding], suites: list[Suite]) -> list[list[str]]:
@@ -38,9 +61,8 @@ def _table(result: Result, bindings: list[Binding], suites: list[Suite]) -> list
         for n in names:
             cell = result.cells.get((n, suite.name), Cell())
             row.append(cell_text(cell))
-            totals[n].passed += cell.passed
-            totals[n].failed += cell.failed
-            totals[n].unsupported += cell.unsupported
+            for name, value in vars(cell).items():
+                setattr(totals[n], name, getattr(totals[n], name) + value)
         rows.append(row)
     rows.append([f"total ({sum(len(s.vectors) for s in suites)})", *(cell_text(totals[n]) for n in names)])
     return rows
@@ -53,7 +75,11 @@ def report(result: Result, bindings: list[Binding], suites: list[Suite], max_fai
         out.write("  ".join(c.ljust(widths[i]) for i, c in enumerate(row)).rstrip() + "\n")
         if line_no in (0, len(rows) - 2):
             out.write("  ".join("-" * w for w in widths) + "\n")
-    out.write("(n/s: a kind or vector option the binding does not list as supported)\n")
+    out.write(
+        "(n/s: a kind or vector option the binding does not list as supported; n/a: not applicable by its "
+        "declaration; xfail: an expected failure; XPASS: listed as an expected failure but passed; skipped: "
+        "above --level or not chosen by -k)\n"
+    )
     for problem in result.problems:
         out.write(f"\nFAILED {problem}\n")
     for shown, failure in enumerate(result.failures):
@@ -62,6 +88,7 @@ def report(result: Result, bindings: list[Binding], suites: list[Suite], max_fai
             break
         v = failure.vector
         out.write(f"\nFAILED {failure.binding} {v.suite} {v.id}: {failure.reason}\n")
+        out.write(f"  level:    {v.level}{' ' + v.erratum if v.erratum else ''}\n")
         if v.note:
             out.write(f"  note:     {_cut(v.note, 300)}\n")
         out.write(f"  request:  {_cut(failure.request, 300)}\n")
@@ -69,9 +96,23 @@ def report(result: Result, bindings: list[Binding], suites: list[Suite], max_fai
         out.write(f"  actual:   {_cut(failure.answer, 300) if failure.answer else '(no answer)'}\n")
 
 
+def _implementation(result: Result, binding: Binding) -> dict[str, Any]:
+    plan = result.plans.get(binding.name)
+    declaration = plan.declaration if plan is not None else None
+    return {
+        "name": binding.name,
+        "declaration": declaration.doc if declaration is not None else None,
+        "declaration_file": str(declaration.path) if declaration is not None and declaration.path else None,
+        "expected_failures": dict(plan.expected) if plan is not None else {},
+        "expected_failures_file": str(binding.expected_failures) if binding.expected_failures else None,
+    }
+
+
 def json_report(result: Result, bindings: list[Binding], suites: list[Suite]) -> dict[str, Any]:
     return {
         "ok": result.ok,
+        "suite": suite_version(suites),
+        "implementations": [_implementation(result, b) for b in bindings],
         "problems": result.problems,
         "results": [
             {"binding": b.name, "suite": s.name, **vars(result.cells.get((b.name, s.name), Cell()))}
@@ -87,8 +128,21 @@ def json_report(result: Result, bindings: list[Binding], suites: list[Suite]) ->
                 "request": f.request,
                 "expected": f.vector.expect,
                 "actual": f.answer,
+                "level": f.vector.level,
+                "erratum": f.vector.erratum,
             }
             for f in result.failures
+        ],
+        "cases": [
+            {
+                "binding": o.binding,
+                "suite": o.vector.suite,
+                "id": o.vector.id,
+                "level": o.vector.level,
+                "erratum": o.vector.erratum,
+                "outcome": o.outcome,
+            }
+            for o in result.outcomes
         ],
     }
 
@@ -101,10 +155,13 @@ def _xml_text(text: str, limit: int = 4000) -> str:
     return _XML_UNSAFE.sub(lambda m: f"\\x{ord(m.group()):02x}", _cut(text, limit))
 
 
-def junit_xml(cases: Sequence[Case], name: str = "ilahrs conformance") -> str:
+def junit_xml(
+    cases: Sequence[Case], name: str = "ilahrs conformance", properties: dict[str, str | None] | None = None
+) -> str:
     """JUnit XML (the Ant/Jenkins form GitHub Actions, GitLab and Jenkins read): one <testsuite>
     per group (binding.suite, or the live flows), one <testcase> per case; a failure carries the
-    reason as its message and the request, expectation and answer as its text."""
+    reason as its message and the request, expectation and answer as its text. `properties` (the
+    suites' version and ICD revision) go into every <testsuite>'s <properties>."""
     groups: dict[str, list[Case]] = {}
     for case in cases:
         groups.setdefault(case.group, []).append(case)
@@ -121,6 +178,10 @@ def junit_xml(cases: Sequence[Case], name: str = "ilahrs conformance") -> str:
     root = ElementTree.Element("testsuites", {"name": name, **counts(cases)})
     for group, items in groups.items():
         suite = ElementTree.SubElement(root, "testsuite", {"name": group, **counts(items)})
+        if properties:
+            props = ElementTree.SubElement(suite, "properties")
+            for key, value in properties.items():
+                ElementTree.SubElement(props, "property", {"name": key, "value": value or ""})
         for case in items:
             attrs = {"name": _xml_text(case.name, 500), "classname": group, "time": f"{case.seconds:.3f}"}
             element = ElementTree.SubElement(suite, "testcase", attrs)
