@@ -14,7 +14,7 @@ PY_LINT_PATHS := generator generated/python tools/generator_stats.py tools/check
 # their module names may repeat across folders.
 PY_LINT_FOLDERS := $(sort $(dir $(wildcard tests/*/*.py)))
 
-.PHONY: lint-python test-python test-python-versions
+.PHONY: lint-python test-python test-python-versions bench-dataset
 
 # The runtime modules of the package (generator/targets/python/runtime) are ruff-checked and
 # format-checked where they are written; mypy checks them as the package's modules, in
@@ -68,3 +68,9 @@ checksum-escapes: setup
 LINT_TARGETS += lint-python
 TEST_TARGETS += test-python-versions
 FINAL_TEST_TARGETS += test-python
+
+# Many captures into one Parquet dataset: captures/s and messages/s for 1, 2 and N jobs.
+bench-dataset: setup
+	$(PY) bench/python/bench_dataset.py
+
+BENCH_TARGETS += bench-dataset

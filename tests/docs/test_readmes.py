@@ -63,6 +63,8 @@ SKIPPED = [
     ("generated/python/README.md", 'pip install "./generated/python[serial]"'),
     ("generated/python/README.md", "screen /dev/pts/3 115200"),
     ("generated/python/README.md", "import pandas, ilahrs"),
+    ("generated/python/README.md", "ilahrs decode logs/ --to parquet flights --jobs 4"),
+    ("generated/python/README.md", "from pathlib import Path"),
     ("generated/python/README.md", 'pip install "./generated/python[serial]"'),
     ("conformance/README.md", "make conformance"),
     ("fuzz/README.md", "make fuzz"),
@@ -357,6 +359,7 @@ def extra(name: str) -> str:
     [
         ("serial", ["send", "/dev/ttyUSB0", "Stop"], "serial"),
         ("matplotlib", ["plot", "CAPTURE", "-o", "x.png"], "plot"),
+        ("pyarrow", ["decode", "CAPTURE", "--to", "parquet", "out"], "parquet"),
         ("rosbags", ["decode", "CAPTURE", "--to", "rosbag2", "bag"], "ros"),
     ],
 )
