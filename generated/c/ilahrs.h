@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+/* Generated from spec/ilahrs.yaml, spec hash e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862.
  * Do not edit: change the spec or the generator and run `make generate`.
  * SPDX-License-Identifier: MIT OR Apache-2.0
  */
@@ -86,7 +86,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74"
+#define ILAHRS_SPEC_HASH "e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862"
 /** What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
  * docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes. */
 #define ILAHRS_WIRE_FINGERPRINT UINT64_C(0x0d3ab4a6e6f066a7)

@@ -1,4 +1,4 @@
--- Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+-- Generated from spec/ilahrs.yaml, spec hash e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862.
 -- Do not edit: change the spec or the generator and run `make generate`.
 -- SPDX-License-Identifier: MIT OR Apache-2.0
 --
@@ -13,7 +13,7 @@
 local SPEC = {
   name = "ilahrs",
   version = "1.0.0",
-  sha256 = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74",
+  sha256 = "e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862",
   icd = "Inertial Labs AHRS Interface Control Document, revision 1.7",
   byte_order = "little",
   max_message_size = 82,

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+// Generated from spec/ilahrs.yaml, spec hash e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 #![doc = include_str!("../README.md")]
@@ -39,7 +39,7 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74";
+pub const SPEC_HASH: &str = "e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862";
 /// What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
 /// docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes.
 pub const WIRE_FINGERPRINT: u64 = 0x0d3ab4a6e6f066a7;

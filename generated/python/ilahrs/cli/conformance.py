@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli/conformance.py for spec/ilahrs.yaml,
-# spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+# spec hash e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs conformance`: the conformance suite against a runner or, live, a device
 (ilahrs.conformance)."""

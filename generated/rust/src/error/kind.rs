@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 7c7bff7a4eb096f2155fc3604f09bf92d9cb73a52d0059845310eba9f5ff0c74.
+// Generated from spec/ilahrs.yaml, spec hash e075094c86a09f5e6758923635c18e3bbdff7468c7c93495887a7d5071ed5862.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 //! The spec's one list of error kinds (`errors`), shared with every other binding.
