@@ -12,6 +12,7 @@ import importlib.util
 import io
 import json
 import shlex
+import subprocess
 import sys
 from pathlib import Path
 from types import ModuleType
@@ -246,6 +247,18 @@ def test_a_changed_expectation_needs_a_major_bump() -> None:
     assert problems(old, {**old, "vectors": []})  # a vector removed
     assert "minor" in problems(old, added)[0] and not problems(old, {**added, "version": "1.3.0"})
     assert not problems(old, old)
+
+
+def test_suite_versions_are_compared_with_the_last_release_tag(tmp_path: Path) -> None:
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-C", str(tmp_path)]
+    subprocess.run([*git, "init", "-q"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) is None  # no commit, no tag
+    (tmp_path / "f").write_text("x")
+    subprocess.run([*git, "add", "f"], check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "x"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) is None  # not released yet: versions not compared
+    subprocess.run([*git, "tag", "v1.0.0"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) == "v1.0.0"
 
 
 def test_a_registration_names_its_declaration_and_expected_failures(setup: tuple[Path, str], tmp_path: Path) -> None:
