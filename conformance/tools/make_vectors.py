@@ -11,9 +11,10 @@ binding. The output is deterministic (fixed seeds, sorted nothing that depends o
 committed JSON is exactly what this script writes: edit the cases, never the JSON.
 
 The suites carry their version (suites.VERSION, semver): --check also compares what the script
-writes with the suites committed at --since (default HEAD, read with git) and fails when an
-expectation changed or a vector went without a major bump, or a vector was added or its level
-changed without at least a minor one.
+writes with the suites of the last release (--since, by default the last tag reachable from HEAD,
+read with git; skipped, and said so, when there is no tag yet: before the first release the
+version holds no one to anything) and fails when an expectation changed or a vector went without
+a major bump, or a vector was added or its level changed without at least a minor one.
 """
 
 from __future__ import annotations
@@ -82,11 +83,26 @@ def _committed(since: str, path: Path) -> dict[str, Any] | None:
     return doc
 
 
+def last_release(where: Path) -> str | None:
+    """The last tag reachable from HEAD (the last release), or None (no tag, or not in git)."""
+    try:
+        found = subprocess.run(
+            ["git", "describe", "--tags", "--abbrev=0"], cwd=where, capture_output=True, text=True, check=True
+        ).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return found or None
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=VECTORS_DIR, help="where to write (default: conformance/vectors)")
     parser.add_argument("--check", action="store_true", help="compare with the files in --out instead of writing")
-    parser.add_argument("--since", default="HEAD", help="the commit --check compares versions with (default HEAD)")
+    parser.add_argument(
+        "--since",
+        default=None,
+        help="the commit --check compares versions with (default: the last release tag; none yet: not compared)",
+    )
     args = parser.parse_args(argv)
     files = build_all()
     if args.check:
@@ -101,8 +117,11 @@ def main(argv: list[str] | None = None) -> int:
         for name in extra:
             print(f"{args.out / name}: not written by {Path(__file__).name}", file=sys.stderr)
         bumps = []
+        since = args.since if args.since is not None else last_release(args.out)
+        if since is None:
+            print(f"{Path(__file__).name}: no release tag yet, suite versions not compared", file=sys.stderr)
         for name, text in files.items():
-            old = _committed(args.since, args.out / name)
+            old = _committed(since, args.out / name) if since is not None else None
             if old is not None:
                 bumps += version_problems(old, json.loads(text))
         for problem in bumps:

@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+/* Generated from spec/ilahrs.yaml, spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
  * Do not edit: change the spec or the generator and run `make generate`.
  * SPDX-License-Identifier: MIT OR Apache-2.0
  */
@@ -86,7 +86,7 @@ extern "C" {
 /** Version of the spec this file was generated from. */
 #define ILAHRS_SPEC_VERSION "1.0.0"
 /** SHA-256 of the spec this file was generated from. */
-#define ILAHRS_SPEC_HASH "905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b"
+#define ILAHRS_SPEC_HASH "509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d"
 /** What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
  * docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes. */
 #define ILAHRS_WIRE_FINGERPRINT UINT64_C(0x0d3ab4a6e6f066a7)

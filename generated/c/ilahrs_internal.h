@@ -1,4 +1,4 @@
-/* Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+/* Generated from spec/ilahrs.yaml, spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
  * Do not edit: change the spec or the generator and run `make generate`.
  *
  * Not needed to use the library: ilahrs.c holds this text. It is for the library's fixed code in

@@ -71,7 +71,14 @@ def build(loaded: LoadedSpec) -> Spec:
         status_word=status_word,
         nmea=_nmea(d["nmea"]) if "nmea" in d else None,
         errata=tuple(
-            Erratum(e["id"], prose(e["where"]), prose(e["says"]), prose(e["chosen"]), prose(e["why"]))
+            Erratum(
+                e["id"],
+                prose(e["where"]),
+                prose(e["says"]),
+                prose(e["chosen"]),
+                prose(e["why"]),
+                prose(e["alternative"]) if "alternative" in e else None,
+            )
             for e in d.get("errata", [])
         ),
         state_machine=state_machine(

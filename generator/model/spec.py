@@ -86,6 +86,9 @@ class Erratum:
     says: str
     chosen: str
     why: str
+    alternative: str | None = None
+    """The other reading an implementation may take instead of `chosen`; None: only one reading
+    (a correction), so no vector rests on this erratum's side."""
 
 
 @dataclass(frozen=True)

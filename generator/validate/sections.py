@@ -26,6 +26,8 @@ def check_names(spec: LoadedSpec) -> Names:
     d = spec.data
     errata = [e["id"] for e in d.get("errata", [])]
     duplicates(((("errata", i, "id"), e) for i, e in enumerate(errata)), "erratum id", spec)
+    for i, e in enumerate(d.get("errata", [])):
+        _check_erratum_side(spec, e, ("errata", i))
     _check_erratum_refs(spec, {k: v for k, v in d.items() if k != "errata"}, (), set(errata))
     unique(spec, d["errors"], ("errors",), "name", "error kind")
     modes = [m["name"] for m in d.get("modes", [])]
@@ -45,6 +47,17 @@ def check_names(spec: LoadedSpec) -> Names:
         modes=modes,
         payloads=[p["name"] for p in d["payloads"]],
     )
+
+
+def _check_erratum_side(spec: LoadedSpec, erratum: dict[str, Any], path: PathKey) -> None:
+    """An erratum says whether an implementation may take another side: `alternative` (that other
+    reading, in one sentence), or none (`correction: true`, or nothing: only one reading); not both."""
+    if "alternative" not in erratum:
+        return
+    if erratum.get("correction") is True:
+        raise spec.error((*path, "correction"), "an erratum with an alternative is no correction: give one of them")
+    if not str(erratum["alternative"]).strip():
+        raise spec.error((*path, "alternative"), "an empty alternative: write the other reading, or 'correction: true'")
 
 
 def _check_erratum_refs(spec: LoadedSpec, value: Any, path: PathKey, errata: set[str]) -> None:

@@ -12,6 +12,7 @@ import importlib.util
 import io
 import json
 import shlex
+import subprocess
 import sys
 from pathlib import Path
 from types import ModuleType
@@ -44,7 +45,7 @@ for line in sys.stdin:
 VECTORS: list[dict[str, Any]] = [
     {"id": "c/empty", "kind": "checksum", "input": "", "expect": 0, "level": "required"},
     {"id": "c/one", "kind": "checksum", "input": "01", "expect": 1, "level": "recommended"},
-    {"id": "c/two", "kind": "checksum", "input": "02", "expect": 2, "level": "erratum", "erratum": "E28"},
+    {"id": "c/two", "kind": "checksum", "input": "02", "expect": 2, "level": "erratum", "erratum": "E12"},
     {"id": "e/bit", "kind": "command_encode", "input": {"command": "GetBIT"}, "expect": "AA 55 00 00 07 00 1A 21 00",
      "level": "required", "requires": {"commands": ["GetBIT"]}},
 ]
@@ -102,7 +103,7 @@ def test_level_option_skips_the_vectors_above_it(setup: tuple[Path, str], tmp_pa
     assert code == 1 and "1 passed, 1 FAILED, 2 skipped" in text  # e/bit is answered wrong
     cases = {c["id"]: c for c in json.loads((tmp_path / "r.json").read_text())["cases"]}
     assert cases["c/one"]["outcome"] == cases["c/two"]["outcome"] == "skipped"
-    assert (cases["c/two"]["level"], cases["c/two"]["erratum"]) == ("erratum", "E28")
+    assert (cases["c/two"]["level"], cases["c/two"]["erratum"]) == ("erratum", "E12")
     code, text = run("--vectors", vectors, "--command", command, "--level", "recommended")
     assert code == 1 and "1 passed, 2 FAILED, 1 skipped" in text and "level:    recommended" in text
 
@@ -146,9 +147,9 @@ def test_a_declaration_without_a_command_excludes_exactly_its_vectors_and_flows(
 def test_declared_out_vectors_are_not_applicable_never_failures(setup: tuple[Path, str], tmp_path: Path) -> None:
     vectors, command = setup  # the runner gets e/bit wrong: not declared, it does not count
     path = tmp_path / "d.json"
-    path.write_text(json.dumps(_declaration(commands=["Stop"], errata={"E28": "other"})))
+    path.write_text(json.dumps(_declaration(commands=["Stop"], errata={"E12": "other"})))
     code, text = run("--vectors", vectors, "--command", command, "--declaration", path, "--json", tmp_path / "r.json")
-    assert code == 1 and "1 passed, 1 FAILED, 2 n/a" in text  # c/one fails; c/two (E28) and e/bit n/a
+    assert code == 1 and "1 passed, 1 FAILED, 2 n/a" in text  # c/one fails; c/two (E12) and e/bit n/a
     report = json.loads((tmp_path / "r.json").read_text())
     assert report["implementations"][0]["declaration_file"] == str(path)
     assert report["implementations"][0]["declaration"]["commands"] == ["Stop"]
@@ -246,6 +247,18 @@ def test_a_changed_expectation_needs_a_major_bump() -> None:
     assert problems(old, {**old, "vectors": []})  # a vector removed
     assert "minor" in problems(old, added)[0] and not problems(old, {**added, "version": "1.3.0"})
     assert not problems(old, old)
+
+
+def test_suite_versions_are_compared_with_the_last_release_tag(tmp_path: Path) -> None:
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-C", str(tmp_path)]
+    subprocess.run([*git, "init", "-q"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) is None  # no commit, no tag
+    (tmp_path / "f").write_text("x")
+    subprocess.run([*git, "add", "f"], check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "x"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) is None  # not released yet: versions not compared
+    subprocess.run([*git, "tag", "v1.0.0"], check=True)
+    assert MAKE_VECTORS.last_release(tmp_path) == "v1.0.0"
 
 
 def test_a_registration_names_its_declaration_and_expected_failures(setup: tuple[Path, str], tmp_path: Path) -> None:

@@ -18,7 +18,8 @@ VERSION = "1.0.0"
 """The version of the suites (semver), written into every suite file: a changed expectation (input,
 expect or options of a vector id, or a vector removed) is a major bump, a new vector or a changed
 level a minor one, anything else (notes) a patch or nothing. `make_vectors.py --check` compares
-with the committed suites (git) and refuses a change without its bump."""
+with the suites of the last release tag (git) and refuses a change without its bump; before the
+first tag nothing is compared, and 1.0.0 is the first release's version."""
 
 SUITES: dict[str, Callable[[], list[Vector]]] = {
     "appendix-c": appendix_c.vectors,

@@ -21,5 +21,6 @@ def vectors() -> list[Vector]:
     for case in cases(SUITE)["cases"]:
         message = messages.build(case["message"])
         expect = attempt(lambda m=message: hx(o.ack(m)))  # type: ignore[misc]
-        out.append(vec(f"ack/{case['name']}", "ack", hx(message), expect, expand(case["note"], names)))
+        note = expand(case["note"], names)
+        out.append(vec(f"ack/{case['name']}", "ack", hx(message), expect, note, tests=case.get("tests")))
     return out

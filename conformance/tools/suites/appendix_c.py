@@ -34,5 +34,6 @@ def vectors() -> list[Vector]:
     for case in cases(SUITE)["cases"]:
         kind = case["kind"]
         input_ = hx(messages.build(case["input"])) if kind == "command_decode" else case["input"]
-        out.append(vec(f"{kind}/{case['name']}", kind, input_, case["expect"], expand(case["note"], names)))
+        note = expand(case["note"], names)
+        out.append(vec(f"{kind}/{case['name']}", kind, input_, case["expect"], note, tests=case.get("tests")))
     return out

@@ -39,12 +39,14 @@ def vectors() -> list[Vector]:
         frame = messages.build(case["bytes"])
         strict = case.get("strict", False)
         note = expand(case["note"], names)
-        vector = vec(f"frame_decode/{case['name']}", "frame_decode", hx(frame), _decoded(frame, strict), note)
+        expect = _decoded(frame, strict)
+        vector = vec(f"frame_decode/{case['name']}", "frame_decode", hx(frame), expect, note, tests=case.get("tests"))
         if strict:
             vector["options"] = {"strict": True}
         out.append(vector)
     for case in data["encode"]:
         input_ = {**case["input"], "payload": hx(messages.build(case["input"]["payload"]))}
         text = f"{expand(case['note'], names)}; spec/README.md, frame encode"
-        out.append(vec(f"frame_encode/{case['name']}", "frame_encode", input_, _built(input_), text))
+        tests = case.get("tests")
+        out.append(vec(f"frame_encode/{case['name']}", "frame_encode", input_, _built(input_), text, tests=tests))
     return out

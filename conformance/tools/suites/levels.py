@@ -1,15 +1,18 @@
 """What each vector holds an implementation to: its level of obligation and the features it needs.
 
 Levels (written as "level", with "erratum" for the erratum level), in this order:
-  erratum      the vector's outcome rests on one side of an erratum of spec/ilahrs.yaml that an
-               implementation may take the other side of: the first erratum its note cites that
-               is not in CORRECTIONS; for a session vector, from the spec's transitions
-               (state_machine.transitions) instead: for a step (step/<state>/<input>) the erratum
-               of the transition that input takes there, for a flow the first erratum of a
-               transition along its steps; E33 where no transition takes an input (ignored)
+  erratum      the vector's expected answer rests on one side of an erratum of spec/ilahrs.yaml that
+               has an `alternative` (another reading an implementation may take). Which erratum a
+               vector tests is set by the code that writes it ("tests", from the case files or
+               computed), never read from its note; an erratum without an alternative (a
+               correction) leaves the vector required. A session vector's comes from the spec's
+               transitions (state_machine.transitions) instead: the first erratum with an
+               alternative among the transitions its inputs take (for a step, step/<state>/<input>,
+               the last input's first), E33 where no transition takes an input (it is ignored); a
+               flow that passes only through transitions without such an erratum is required
   recommended  robustness beyond the ICD: a stream vector that discards bytes (recovering after
                garbage, damaged frames, false starts), which no ICD section asks a decoder to do
-  required     everything else: what the ICD states (or the only reading of it, CORRECTIONS)
+  required     everything else: what the ICD states, or the only reading of it
 
 Features (written as "requires", only the non-empty ones), what a declaration must list for the
 vector to apply: "commands" (Table C.1 names the vector sends, encodes or decodes), "outputs" (the
@@ -30,11 +33,6 @@ import yaml
 
 SPEC_FILE = Path(__file__).resolve().parents[3] / "spec" / "ilahrs.yaml"
 
-CORRECTIONS = frozenset({"E1", "E2", "E10", "E21", "E24", "E28"})
-"""Errata that correct a misprint or name the only reading consistent with the ICD's own text
-(byte ranges that overlap, a wrong table number, the field order as printed, a field's name, a
-checksum that is a word): no conforming implementation takes another side, so a vector citing only
-these is required."""
 LEGACY_STOP_CLB = "legacy_stop_clb"
 _ERRATUM = re.compile(r"\bE\d+\b")
 
@@ -55,6 +53,24 @@ def _errata() -> frozenset[str]:
     return frozenset(e["id"] for e in spec()["errata"])
 
 
+@cache
+def alternatives() -> dict[str, str]:
+    """Each erratum of the spec with another reading an implementation may take -> that reading."""
+    return {e["id"]: str(e["alternative"]) for e in spec()["errata"] if "alternative" in e}
+
+
+def _choice(erratum: str | None) -> str | None:
+    """The erratum if an implementation may take its other side, else None (none, or a correction)."""
+    return erratum if erratum is not None and erratum in alternatives() else None
+
+
+def variant_erratum(variant: str) -> str | None:
+    """The erratum a device variant of the spec rests on (its scales assumed), if any."""
+    (found,) = [v for v in spec()["variants"]["list"] if v["name"] == variant]
+    erratum = found.get("erratum")
+    return None if erratum is None else str(erratum)
+
+
 def _commands() -> dict[str, dict[str, Any]]:
     return {c["name"]: c for c in spec()["commands"]}
 
@@ -68,12 +84,17 @@ def _version(text: str) -> tuple[int, ...]:
     return tuple(int(part) for part in text.split("."))
 
 
-def _cited(note: str) -> str | None:
+def _tested(vector: dict[str, Any]) -> str | None:
+    """The erratum the code that wrote the vector says it tests (checked against its note)."""
+    note = vector.get("note", "")
     for erratum in _ERRATUM.findall(note):
-        assert erratum in _errata(), f"a note cites {erratum}, which spec/ilahrs.yaml does not have"
-        if erratum not in CORRECTIONS:
-            return str(erratum)
-    return None
+        assert erratum in _errata(), f"{vector['id']}: its note cites {erratum}, which spec/ilahrs.yaml does not have"
+    tested = vector.get("tests")
+    if tested is None:
+        return None
+    assert tested in _errata(), f"{vector['id']} tests {tested}, which spec/ilahrs.yaml does not have"
+    assert tested in _ERRATUM.findall(note), f"{vector['id']} tests {tested}: its note must say so"
+    return str(tested)
 
 
 def _transition_erratum(before: str, event: str, firmware: str | None) -> str | None:
@@ -85,26 +106,26 @@ def _transition_erratum(before: str, event: str, firmware: str | None) -> str | 
             if before not in t["from"] or ("firmware_before" in t and not legacy):
                 continue
             if (event in t["when"]) if exact else ("*" in t["when"] and event in commands):
-                erratum = t.get("erratum")
-                return None if erratum in CORRECTIONS or erratum is None else str(erratum)
-    return "E33"
+                return _choice(t.get("erratum"))
+    return _choice("E33")
 
 
 def _session_erratum(vector: dict[str, Any]) -> str | None:
-    """A session step: the erratum of the transition its last input takes; a flow: the first
-    erratum of a transition along its steps."""
+    """The first erratum with an alternative among the transitions a session vector's inputs take
+    (for a step, its last input's first): its expected steps rest on that erratum's side."""
     steps = vector["expect"]["steps"]
     firmware = vector["input"].get("firmware")
     states = [spec()["state_machine"]["initial"], *(s["state"] for s in steps)]
     found = [_transition_erratum(states[i], step["event"], firmware) for i, step in enumerate(steps)]
     if vector["id"].startswith("step/"):
-        return found[-1]
+        found = [found[-1], *found[:-1]]
     return next((e for e in found if e is not None), None)
 
 
 def level(vector: dict[str, Any]) -> tuple[str, str | None]:
     """(level, erratum) of a vector as make_vectors writes it (see the module's note)."""
-    erratum = _session_erratum(vector) if vector["kind"] == "session" else _cited(vector.get("note", ""))
+    tested = _tested(vector)
+    erratum = _session_erratum(vector) if vector["kind"] == "session" else _choice(tested)
     if erratum is not None:
         return "erratum", erratum
     if vector["kind"] == "stream" and vector["expect"]["discarded"] > 0:
@@ -157,7 +178,8 @@ def requires(vector: dict[str, Any]) -> dict[str, Any]:
 def annotate(vector: dict[str, Any]) -> dict[str, Any]:
     """The vector with its level (and erratum) and requirements, after "note"."""
     lvl, erratum = level(vector)
-    out = {**vector, "level": lvl}
+    out = {k: v for k, v in vector.items() if k != "tests"}
+    out["level"] = lvl
     if erratum is not None:
         out["erratum"] = erratum
     needs = requires(vector)

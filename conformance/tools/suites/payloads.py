@@ -20,6 +20,7 @@ from typing import Any
 import oracle as o
 
 from .common import Vector, attempt, cases, expand, hx, jsonable, phrases, vec
+from .levels import variant_erratum
 from .messages import field_values, fill
 
 SUITE = "payloads"
@@ -67,9 +68,11 @@ def _encode_input(table: str, fields: dict[str, Any]) -> dict[str, Any]:
 class PayloadCases:
     """Collects the vectors of one payload table."""
 
-    def __init__(self, table: str, typical: dict[str, Any]) -> None:
+    def __init__(self, table: str, typical: dict[str, Any], tests: str | None = None) -> None:
         self.table = table
         self.typical = typical
+        self.layout = tests  # the erratum the table's own fields rest on (every case, not the sizes)
+        self.tests: str | None = None  # the erratum the current vectors test
         self.icd, self.size, self.fields = o.TABLES[table]
         self.vectors: list[Vector] = []
         self.offsets = {}
@@ -78,12 +81,20 @@ class PayloadCases:
             self.offsets[f.name] = offset
             offset += f.size
 
-    def _add(self, kind: str, name: str, input_: dict[str, Any], expect: Any, note: str) -> None:
-        self.vectors.append(vec(f"{kind}/{self.table}/{name}", kind, input_, expect, note))
+    def _add(
+        self, kind: str, name: str, input_: dict[str, Any], expect: Any, note: str, *, tests: str | None = None
+    ) -> None:
+        tests = tests or self.tests
+        if tests is not None and tests == self.layout and tests not in note:
+            note += f"; the table's fields as {tests} lays them out"
+        self.vectors.append(vec(f"{kind}/{self.table}/{name}", kind, input_, expect, note, tests=tests))
 
     def _decode(self, name: str, data: bytes, variant: str | None, note: str) -> None:
         input_ = _decode_input(self.table, data, variant)
-        self._add("payload_decode", name, input_, _decode_expect(self.table, data, variant), note)
+        tests = variant_erratum(variant) if variant is not None else None
+        if tests is not None:
+            note += f"; variant {variant}'s scales are assumed ({tests})"
+        self._add("payload_decode", name, input_, _decode_expect(self.table, data, variant), note, tests=tests)
 
     def ok(self, name: str, note: str, values: dict[str, Any], variants: Iterable[str | None] = (None,)) -> None:
         """A block builders accept: encode it, and decode the bytes back (per variant)."""
@@ -136,18 +147,20 @@ class PayloadCases:
         if case.get("typical"):
             fields = {**self.typical, **fields}
         text = expand(case["note"], names)
+        self.tests = case.get("tests", self.layout)
         if action == "ok":
             variants = case.get("variants", [None])
             self.ok(case[action], text, fields, [None, *o.VARIANTS] if variants == "all" else variants)
         else:
             getattr(self, action)(case[action], text, fields)
+        self.tests = None
 
 
 def vectors() -> list[Vector]:
     names = phrases(SUITE)
     out: list[Vector] = []
     for table, spec in cases(SUITE)["tables"].items():
-        p = PayloadCases(table, field_values(table, spec["typical"]))
+        p = PayloadCases(table, field_values(table, spec["typical"]), spec.get("tests"))
         for case in spec["cases"]:
             p.case(case, names)
         p.sizes(empty=spec.get("empty", False))

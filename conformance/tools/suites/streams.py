@@ -45,6 +45,7 @@ def _stream_vec(
     compact: bool = False,
     idle: list[dict[str, int]] | None = None,
     strict: bool = False,
+    tests: str | None = None,
 ) -> Vector:
     """A stream vector: the oracle's scan of the whole input (cut at idle gaps) must give the
     intended events and count."""
@@ -56,7 +57,7 @@ def _stream_vec(
     input_: dict[str, Any] = {"chunks": [show(c) for c in chunks]}
     if idle:
         input_["idle"] = idle
-    out = vec(id_, "stream", input_, {"events": expect, "discarded": discarded}, note)
+    out = vec(id_, "stream", input_, {"events": expect, "discarded": discarded}, note, tests=tests)
     if strict:
         out["options"] = {"strict": True}
     return out
@@ -90,9 +91,18 @@ def _cases(data: dict[str, Any], messages: Messages, names: dict[str, str]) -> l
             chunks = _split(b"".join(chunks), case["chunk_size"])
         text = f"{expand(case['note'], names)}; {names['rule']}"
         intended = _events(messages, case["events"])
-        idle, strict = case.get("idle"), case.get("strict", False)
+        idle, strict, tests = case.get("idle"), case.get("strict", False), case.get("tests")
         out.append(
-            _stream_vec(f"stream/{case['name']}", chunks, text, intended, case["discarded"], idle=idle, strict=strict)
+            _stream_vec(
+                f"stream/{case['name']}",
+                chunks,
+                text,
+                intended,
+                case["discarded"],
+                idle=idle,
+                strict=strict,
+                tests=tests,
+            )
         )
     return out
 
@@ -136,12 +146,14 @@ def _soak(soak: dict[str, Any], rule: str) -> Vector:
     stream = b""
     intended: list[Event] = []
     garbage = 0
+    reserved = 0  # data frames with a non-zero reserved byte, accepted (E6)
     for _ in range(count):
         msg, kind = _soak_message(rng, tables)
         if kind is None:
             garbage += len(msg)
         else:
             intended.append((kind, msg))
+            reserved += kind == "frame" and msg[3] != 0
         stream += msg
     chunks = []
     pos = 0
@@ -153,9 +165,11 @@ def _soak(soak: dict[str, Any], rule: str) -> Vector:
     text = (
         f"seeded soak (seed {seed}): {count} messages ({frames} valid frames, {len(intended) - frames} "
         f"sentences, the rest corrupted frames and false starts), random chunks of {min_chunk}..{max_chunk} "
-        f"bytes; chunking never changes the result; computed by conformance/tools/make_vectors.py; {rule}"
+        f"bytes; {reserved} valid frames carry reserved byte 42, accepted (E6); chunking never changes the result; "
+        f"computed by conformance/tools/make_vectors.py; {rule}"
     )
-    return _stream_vec(f"stream/{soak['name']}", chunks, text, intended, garbage, compact=True)
+    tests = "E6" if reserved else None
+    return _stream_vec(f"stream/{soak['name']}", chunks, text, intended, garbage, compact=True, tests=tests)
 
 
 def vectors() -> list[Vector]:

@@ -1,4 +1,4 @@
-# Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+# Generated from spec/ilahrs.yaml, spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
 # Do not edit: change the spec or the generator and run `make generate`.
 """The single facts of spec/ilahrs.yaml (spec 1.0.0) that the runtime modules read: the error kinds,
 the frame (Table 6.2, Table 6.3) and its message types, the serial line and the largest message."""
@@ -13,7 +13,7 @@ from typing import Final
 from .compat import StrEnum
 
 SPEC_VERSION: Final = "1.0.0"
-SPEC_SHA256: Final = "905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b"
+SPEC_SHA256: Final = "509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d"
 WIRE_FINGERPRINT: Final = 0x0D3AB4A6E6F066A7
 """What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not docs or
 names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes."""
@@ -37,6 +37,61 @@ UNIT_SYMBOLS: Final[Mapping[str, str]] = MappingProxyType(
     }
 )
 """Each unit of the spec (a field's `unit`) -> the symbol shown after its values: "" for a dimensionless number."""
+ERRATA_ALTERNATIVES: Final[Mapping[str, str]] = MappingProxyType(
+    {
+        "E3": "Byte 2 of Table 6.17 is the percent of used data points, as in Table 6.14.",
+        "E4": "Utermo100 is an unsigned word as printed, 0 to 655.35 degC.",
+        "E5": "Parameter blocks are sent with message type 0, like the command they follow.",
+        "E6": (
+            "The reserved byte must be 0: decoders refuse a frame that carries another value and builders write only 0."
+        ),
+        "E8": "Bytes 0-3 of Table 6.13 are a reserved field of 4 bytes, as the table prints them.",
+        "E11": (
+            "AHRS-G300-A2-TGA has no published KG and KA, so its scaled gyro and accelerometer values are not given."
+        ),
+        "E12": (
+            "The acknowledgement of a parameter block carries the sum of the block's payload bytes only (\"the check "
+            'sum of received parameters").'
+        ),
+        "E15": "Dates are decoded by floor arithmetic: the year, then the month, then the day from what remains.",
+        "E16": (
+            "Builders write numbers without zero padding (printf %.2f: 12.34 for a roll of 12.34 deg) and the USW "
+            "without leading zeros."
+        ),
+        "E17": "Any message length a word holds is accepted, up to what the receiver can hold.",
+        "E18": "A block with either undefined combination of bits 7 and 15 is refused.",
+        "E23": "Raw heading 36000 (360.00 deg, the top of the ICD's range 0...360) is accepted.",
+        "E27": "A plain word: 0 is a successful alignment, anything else an unsuccessful one, with no status bits.",
+        "E30": "A time of 0 s is accepted, like any value a word holds.",
+        "E31": "No bounds: any float32, NaN and infinities included, is accepted.",
+        "E32": (
+            "The reserved bytes are the float and word Table 6.15 and Table 6.16 print, read and written as numbers."
+        ),
+        "E33": (
+            "A command with no transition in the current mode is still acknowledged (or acted on) as in the modes "
+            "where it is valid."
+        ),
+        "E34": (
+            "The AHRS waits for the block as long as it takes and takes the next data message as the block, whatever "
+            "its size."
+        ),
+        "E35": "LowPowerOn is valid in every mode, and the AHRS sleeps at once without a last data block.",
+        "E37": "FinishClb is ignored until two runs have succeeded.",
+        "E39": "GetDataReq sent during the initial alignment is answered once the alignment is done.",
+        "E41": (
+            "A receiver never gives up a message it has started on an idle line: it waits for the bytes its length "
+            "field promises."
+        ),
+        "E43": (
+            "A ROS 2 view may take another value of g (9.81 m/s^2, or the local gravity of a known place) and "
+            "covariances from Table 3.1's figures for a known part number; the AHRS's own bytes mean the same either "
+            "way."
+        ),
+    }
+)
+"""Each erratum an implementation may take the other side of -> that other reading (the erratum's
+`alternative`); the others are corrections with one reading. A conformance declaration chooses a side
+of these only."""
 
 
 class ErrorKind(StrEnum):

@@ -1,4 +1,4 @@
-// Generated from spec/ilahrs.yaml, spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+// Generated from spec/ilahrs.yaml, spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
 // Do not edit: change the spec or the generator and run `make generate`.
 
 #![doc = include_str!("../README.md")]
@@ -39,7 +39,7 @@ pub use wire::Field;
 /// The version of the spec this crate was generated from.
 pub const SPEC_VERSION: &str = "1.0.0";
 /// The SHA-256 of the spec file this crate was generated from.
-pub const SPEC_HASH: &str = "905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b";
+pub const SPEC_HASH: &str = "509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d";
 /// What a device and a host must agree on (codes, payload layouts, frame, state-machine answers; not
 /// docs or names), hashed to 64 bits: two builds with equal fingerprints speak the same bytes.
 pub const WIRE_FINGERPRINT: u64 = 0x0d3ab4a6e6f066a7;

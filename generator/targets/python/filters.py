@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Callable
 from typing import Any
 
@@ -153,6 +154,16 @@ def literal(value: Any) -> str:
     return repr(value)
 
 
+def long_literal(text: str, indent: int = 8, width: int = 120) -> str:
+    """A string literal that fits the line width after `indent` spaces and a dict key: as it is when it
+    is short, else pieces of at most `width` columns in parentheses (implicit concatenation)."""
+    if indent + 8 + len(repr(text)) <= width:  # the key and ": " take 7 or 8 columns
+        return repr(text)
+    pad = " " * (indent + 4)
+    pieces = textwrap.wrap(text, width - len(pad) - 3, drop_whitespace=False, break_on_hyphens=False)
+    return "(\n" + "\n".join(pad + repr(piece) for piece in pieces) + "\n" + " " * indent + ")"
+
+
 FILTERS: dict[str, Callable[..., Any]] = {
     "struct_code": struct_code,
     "struct_format": struct_format,
@@ -167,6 +178,7 @@ FILTERS: dict[str, Callable[..., Any]] = {
     "class_name": class_name,
     "field_doc": field_doc,
     "literal": literal,
+    "long_literal": long_literal,
     "field_info": field_info,
 }
 

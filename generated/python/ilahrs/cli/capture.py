@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli/capture.py for spec/ilahrs.yaml,
-# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+# spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
 # Do not edit: change the runtime source and run `make generate`.
 """Reading a capture for `ilahrs decode` and `ilahrs plot`: a pcapng file (`ilahrs.pcapng`, both
 directions with timestamps) or a raw byte dump (what a terminal program saves: device-to-host

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/cli/plot.py for spec/ilahrs.yaml,
-# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+# spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs plot`: time series of chosen fields of a capture as a PNG. Needs matplotlib (the `plot`
 extra, or `pip install 'matplotlib>=3.8'`); nothing else in the package does.

@@ -1,5 +1,5 @@
 # Copied from generator/targets/python/runtime/conformance/command.py for spec/ilahrs.yaml,
-# spec hash 905562f909021aa2014695e63891380eb8bec4c960db652411cc7de9726e784b.
+# spec hash 509a20d572b51070813f406350f044557d3a84d394e7f0ead989af38b8770d0d.
 # Do not edit: change the runtime source and run `make generate`.
 """`ilahrs conformance` (and the repository's conformance/harness.py): its options, and the run of
 the suites against runners or, with --device, of the session flows against a device (live)."""

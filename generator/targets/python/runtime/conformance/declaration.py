@@ -3,8 +3,10 @@
 fail ({"<suite>/<id>": "reason"}).
 
 A vector applies when the declaration lists everything in the vector's "requires" and does not take
-the other side of the vector's erratum. The checks here are written by hand (standard library only)
-and agree with the schema; tests/conformance holds them to it.
+the other side of the vector's erratum. A declaration chooses a side only of the errata the spec gives
+an `alternative` (ilahrs.spec.ERRATA_ALTERNATIVES); the others are corrections with one reading. The
+checks here are written by hand (standard library only) and agree with the schema; tests/conformance
+holds them to it.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from typing import Any
 from ..commands import COMMANDS
 from ..encodings import VARIANTS
 from ..payloads import PAYLOADS
+from ..spec import ERRATA_ALTERNATIVES
 from ..statemachine import OUTPUT_FORMATS
 from .vectors import Suite, Vector
 
@@ -113,6 +116,12 @@ def check(doc: object, where: str) -> dict[str, Any]:
         isinstance(k, str) and _ERRATUM_RE.fullmatch(k) and v in CHOICES for k, v in errata.items()
     ):
         raise DeclarationError(f'{where}: errata maps ids like E12 to "spec" or "other"')
+    single = sorted((k for k in errata if k not in ERRATA_ALTERNATIVES), key=lambda e: int(e[1:]))
+    if single:
+        raise DeclarationError(
+            f"{where}: errata {', '.join(single)}: no other side to take (only one reading; the errata with "
+            f"an alternative: {', '.join(ERRATA_ALTERNATIVES)})"
+        )
     return doc
 
 
@@ -125,8 +134,10 @@ def load_declaration(path: Path) -> Declaration:
 
 
 def everything(suites: Iterable[Suite]) -> dict[str, Any]:
-    """A declaration with everything enabled and the spec's side of every erratum the suites test."""
-    errata = {v.erratum for s in suites for v in s.vectors if v.erratum is not None}
+    """A declaration with everything enabled and the spec's side of every erratum the suites test that
+    has an alternative (an implementation may take its other side)."""
+    tested = {v.erratum for s in suites for v in s.vectors if v.erratum is not None}
+    errata = tested & set(ERRATA_ALTERNATIVES)
     doc: dict[str, Any] = {"implementation": "my implementation"}
     doc |= {key: list(names) for key, names in vocabulary().items()}
     doc["nmea"] = True
