@@ -75,11 +75,13 @@
 #define CELL(state, event, cell) ((((unsigned)(state) * ILAHRS_EVENT_COUNT + (unsigned)(event)) << CELL_BITS) | (cell))
 
 /* A little-endian number of 1..4 bytes, its size known at compile time, read in place; and the
- * write the generated frame code uses (defined with the helpers). */
+ * write the generated frame code uses (defined with the helpers). The bytes are added, not or-ed:
+ * the same machine code (one load where the target allows it), and a sum WP's provers relate to
+ * the stream decoder's invariant (ilahrs_frame_size() in ilahrs.h, p[4] + 256 * p[5]). */
 #define LE(p, size)                                                        \
-    ((uint32_t)(p)[0] | ((size) > 1 ? (uint32_t)(p)[(size) > 1] << 8 : 0u) \
-     | ((size) > 2 ? (uint32_t)(p)[(size) > 2 ? 2 : 0] << 16 : 0u)         \
-     | ((size) > 3 ? (uint32_t)(p)[(size) > 3 ? 3 : 0] << 24 : 0u))
+    ((uint32_t)(p)[0] + ((size) > 1 ? (uint32_t)(p)[(size) > 1] << 8 : 0u) \
+     + ((size) > 2 ? (uint32_t)(p)[(size) > 2 ? 2 : 0] << 16 : 0u)         \
+     + ((size) > 3 ? (uint32_t)(p)[(size) > 3 ? 3 : 0] << 24 : 0u))
 static void put_le(uint8_t *p, uint32_t value, size_t size);
 
 /* ---- Tables ---------------------------------------------------------------------------- */
@@ -421,6 +423,7 @@ static const uint16_t ilahrs_name_offsets[97] = {
 /* The frame (frame_get_fields() and frame_put_fields(): the fields between header and payload
  * but the length, which the library checks and writes itself). */
 typedef uint16_t checksum_t;
+typedef uint16_t length_t; /* what the length field holds */
 static const uint8_t ilahrs_frame_header[ILAHRS_FRAME_HEADER_SIZE] = { 0xAA, 0x55 };
 #define MESSAGE_TYPE_VALID(type) ((type) == ILAHRS_MESSAGE_TYPE_COMMAND || (type) == ILAHRS_MESSAGE_TYPE_DATA)
 
@@ -3201,13 +3204,17 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
         return push_decide(s, byte, msg);
     }
     if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        /* The length as a length_t changes no value, and keeps GCC from folding the header size
+         * into the sum of its bytes: one load. */
         until = n < ILAHRS_FRAME_PAYLOAD_OFFSET
                     ? ILAHRS_FRAME_PAYLOAD_OFFSET
                     : ILAHRS_FRAME_HEADER_SIZE
-                          + LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+                          + (length_t)LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
     } else if (h[0] == PAHR_START) {
         until = n < PAHR_PREFIX_LENGTH ? PAHR_PREFIX_LENGTH : printable(byte) ? ILAHRS_PAHR_MAX_LENGTH : 0;
     }
+    /*@ assert h[0] == ILAHRS_FRAME_HEADER_0 && n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+               ==> until == ilahrs_frame_size(&s->held[0]); */
     if (n + 1 >= until) {
         return push_decide(s, byte, msg);
     }

@@ -2477,7 +2477,7 @@ typedef struct ilahrs_stream {
     // longest, a frame whose length field is read shorter than that length, itself within the
     // longest frame. frame_size() reads the length field as the decoder does.
     logic integer ilahrs_frame_size(uint8_t *p) = ILAHRS_FRAME_HEADER_SIZE
-        + (p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET] | (p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET + 1] << 8));
+        + p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET] + 256 * p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET + 1];
     predicate ilahrs_waiting(uint8_t *p, integer n) =
         0 < n < ILAHRS_MAX_MESSAGE_SIZE
         && (p[0] == ILAHRS_FRAME_HEADER_0 && n >= ILAHRS_FRAME_PAYLOAD_OFFSET

@@ -65,9 +65,11 @@
 #define CELL(state, event, cell) ((((unsigned)(state) * ILAHRS_EVENT_COUNT + (unsigned)(event)) << CELL_BITS) | (cell))
 
 /* A little-endian number of 1..4 bytes, its size known at compile time, read in place; and the
- * write the generated frame code uses (defined with the helpers). */
+ * write the generated frame code uses (defined with the helpers). The bytes are added, not or-ed:
+ * the same machine code (one load where the target allows it), and a sum WP's provers relate to
+ * the stream decoder's invariant (ilahrs_frame_size() in ilahrs.h, p[4] + 256 * p[5]). */
 #define LE(p, size)                                                        \
-    ((uint32_t)(p)[0] | ((size) > 1 ? (uint32_t)(p)[(size) > 1] << 8 : 0u) \
-     | ((size) > 2 ? (uint32_t)(p)[(size) > 2 ? 2 : 0] << 16 : 0u)         \
-     | ((size) > 3 ? (uint32_t)(p)[(size) > 3 ? 3 : 0] << 24 : 0u))
+    ((uint32_t)(p)[0] + ((size) > 1 ? (uint32_t)(p)[(size) > 1] << 8 : 0u) \
+     + ((size) > 2 ? (uint32_t)(p)[(size) > 2 ? 2 : 0] << 16 : 0u)         \
+     + ((size) > 3 ? (uint32_t)(p)[(size) > 3 ? 3 : 0] << 24 : 0u))
 static void put_le(uint8_t *p, uint32_t value, size_t size);

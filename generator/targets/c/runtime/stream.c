@@ -225,13 +225,17 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
         return push_decide(s, byte, msg);
     }
     if (h[0] == ILAHRS_FRAME_HEADER_0) {
+        /* The length as a length_t changes no value, and keeps GCC from folding the header size
+         * into the sum of its bytes: one load. */
         until = n < ILAHRS_FRAME_PAYLOAD_OFFSET
                     ? ILAHRS_FRAME_PAYLOAD_OFFSET
                     : ILAHRS_FRAME_HEADER_SIZE
-                          + LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+                          + (length_t)LE(h + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
     } else if (h[0] == PAHR_START) {
         until = n < PAHR_PREFIX_LENGTH ? PAHR_PREFIX_LENGTH : printable(byte) ? ILAHRS_PAHR_MAX_LENGTH : 0;
     }
+    /*@ assert h[0] == ILAHRS_FRAME_HEADER_0 && n >= ILAHRS_FRAME_PAYLOAD_OFFSET
+               ==> until == ilahrs_frame_size(&s->held[0]); */
     if (n + 1 >= until) {
         return push_decide(s, byte, msg);
     }
