@@ -30,6 +30,11 @@ lint-python: setup
 	for folder in $(PY_LINT_FOLDERS); do $(VENV)/bin/mypy $$folder; done
 	$(VENV)/bin/lint-imports --config .importlinter
 
+# The suite runs in PYTEST_JOBS worker processes (pytest-xdist), a test file to a worker (loadfile:
+# a module's fixtures, such as a simulator shared by its tests, are set up once); PYTEST_JOBS=
+# runs it in one process.
+PYTEST_JOBS ?= -n 2 --dist loadfile
+
 # tests/cli/test_cli.py runs `ilahrs monitor` under tmux and reads captures with tshark as well, and
 # tests/conformance/test_html_report.py opens the conformance report in headless Chromium: all three
 # are installed from Debian's packages when missing.
@@ -37,7 +42,7 @@ test-python: setup
 	@command -v tmux >/dev/null || tools/need tmux
 	@command -v tshark >/dev/null || tools/need tshark
 	@command -v chromium >/dev/null || tools/need --no-recommends chromium fonts-liberation
-	$(PY) -m pytest tests
+	$(PY) -m pytest $(PYTEST_JOBS) tests
 
 # The package on every Python from 3.10 that the machine has (tools/test-python-versions: a venv per
 # version under build/python-versions/ with the pinned pytest and pyserial only, the package
