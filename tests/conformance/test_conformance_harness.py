@@ -7,32 +7,20 @@ answer line, written to a temporary directory), so every outcome is forced: pass
 
 from __future__ import annotations
 
-import importlib.util
 import io
 import json
 import sys
 from pathlib import Path
-from types import ModuleType
 from typing import Any
 
 import pytest
+from script_support import load_script
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _load(name: str, path: Path) -> ModuleType:
-    if name in sys.modules:
-        return sys.modules[name]
-    spec = importlib.util.spec_from_file_location(name, path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-H = _load("conformance_harness", ROOT / "conformance" / "harness.py")
-RUNNER = _load("conformance_python_runner", ROOT / "conformance" / "runners" / "python" / "python_runner.py")
+H = load_script("conformance_harness", ROOT / "conformance" / "harness.py")
+RUNNER = load_script("conformance_python_runner", ROOT / "conformance" / "runners" / "python" / "python_runner.py")
 
 SCRIPTED_RUNNER = """\
 import json, sys, time

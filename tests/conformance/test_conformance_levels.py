@@ -8,19 +8,18 @@ vectors' own bytes.
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import io
 import json
 import shlex
 import subprocess
 import sys
 from pathlib import Path
-from types import ModuleType
 from typing import Any
 from xml.etree import ElementTree
 
 import jsonschema
 import pytest
+from script_support import load_script
 
 from ilahrs.commands import COMMANDS
 from ilahrs.conformance import VECTORS_DIR, load_suites, main
@@ -50,15 +49,6 @@ VECTORS: list[dict[str, Any]] = [
      "level": "required", "requires": {"commands": ["GetBIT"]}},
 ]
 TABLE = {"checksum -": "ok 0", "checksum 01": "ok 7", "checksum 02": "ok 2", "command_encode GetBIT": "ok AA55"}
-
-
-def _load(name: str, path: Path) -> ModuleType:
-    spec = importlib.util.spec_from_file_location(name, path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture
@@ -234,7 +224,7 @@ def test_the_version_is_in_every_report(setup: tuple[Path, str], tmp_path: Path)
     assert {s.version for s in SUITES} == {sys.modules["suites"].VERSION}
 
 
-MAKE_VECTORS = _load("make_vectors_for_levels", CONFORMANCE / "tools" / "make_vectors.py")
+MAKE_VECTORS = load_script("make_vectors_for_levels", CONFORMANCE / "tools" / "make_vectors.py")
 
 
 def test_a_changed_expectation_needs_a_major_bump() -> None:

@@ -9,7 +9,6 @@ is opened in Debian's headless Chromium: the DOM it builds and a screenshot are 
 
 from __future__ import annotations
 
-import importlib.util
 import io
 import json
 import os
@@ -17,31 +16,19 @@ import re
 import shutil
 import struct
 import subprocess
-import sys
 from html.parser import HTMLParser
 from pathlib import Path
-from types import ModuleType
 from typing import Any
 
 import pytest
+from script_support import load_script
 
 from ilahrs.conformance import html
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _load(name: str, path: Path) -> ModuleType:
-    if name in sys.modules:
-        return sys.modules[name]
-    spec = importlib.util.spec_from_file_location(name, path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-H = _load("conformance_harness", ROOT / "conformance" / "harness.py")
+H = load_script("conformance_harness", ROOT / "conformance" / "harness.py")
 
 NASTY = 'payload_decode t <script>alert("x")</script> & \x00\x1b\ud800 é'
 """A request as a runner protocol line may carry it: markup, an ampersand, quotes, control
