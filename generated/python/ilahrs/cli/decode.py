@@ -47,7 +47,7 @@ from typing import Any, Final, TextIO
 from ..commands import COMMANDS
 from ..statemachine import OUTPUT_FORMATS
 from .arguments import OneLineParser, strict_argument, variant_argument, words
-from .capture import Chunk, Source, open_source
+from .capture import Source, open_source
 from .capture_decoder import CaptureDecoder
 from .columnar_capture import ColumnarCapture
 from .columnar_csv import ColumnarCsv
@@ -262,18 +262,7 @@ def _decode_messages(
     start = args.output_format if known else None
     decoder = CaptureDecoder(context=context, output=table, output_known=known, strict=args.strict, start=start)
     writer = RowWriter(out, args.to, selected, variant, raw=args.raw)
-    wanted = set(selected)
-
-    def feed(chunk: Chunk) -> None:
-        for message in decoder.feed(chunk):
-            if message.kind in wanted:
-                writer.write(message)
-
-    def finish() -> None:
-        for message in decoder.finish():
-            if message.kind in wanted:
-                writer.write(message)
-
+    feed, finish = decoder.writing(writer.write, selected)
     failure = _drive(source, feed, finish, out, follow=args.follow)
     if failure is not None:
         return failure  # alone: a summary of a capture cut short would read as the whole

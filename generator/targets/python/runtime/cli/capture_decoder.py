@@ -6,6 +6,7 @@ held to be decoded elsewhere as whole output frames (`CaptureDecoder.streamed`).
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Callable, Iterable
 from typing import Any, Final
 
 from ..bulk import tables_by_size
@@ -90,6 +91,24 @@ class CaptureDecoder:
         for at, event in self._out.feed(b"", final=True):
             self._outbound(at, event)
         return self._take()
+
+    def writing(
+        self, write: Callable[[Message], None], kinds: Iterable[str]
+    ) -> tuple[Callable[[Chunk], None], Callable[[], None]]:
+        """`feed` and `finish` that hand every Message of one of `kinds` to `write`, in order."""
+        wanted = set(kinds)
+
+        def feed(chunk: Chunk) -> None:
+            for message in self.feed(chunk):
+                if message.kind in wanted:
+                    write(message)
+
+        def finish() -> None:
+            for message in self.finish():
+                if message.kind in wanted:
+                    write(message)
+
+        return feed, finish
 
     # --- Output decoded as columns (ColumnarCapture) ---------------------------------------------
 

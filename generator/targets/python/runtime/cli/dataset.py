@@ -319,18 +319,7 @@ class _Decoding:
             context=False, output=table, output_known=known, strict=True, start=options.output_format
         )
         writer = RowWriter(text, "csv", selected, variant, raw=options.raw)
-        wanted = set(selected)
-
-        def feed(chunk: Any) -> None:
-            for message in messages.feed(chunk):
-                if message.kind in wanted:
-                    writer.write(message)
-
-        def finish() -> None:
-            for message in messages.finish():
-                if message.kind in wanted:
-                    writer.write(message)
-
+        feed, finish = messages.writing(writer.write, selected)
         return cls(messages, feed, finish, source.chunks())
 
 
