@@ -221,24 +221,33 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len)
     const uint16_t one = 1;
     uint8_t little; /* the host's byte order: 1 if little-endian */
     memcpy(&little, &one, 1);
-    while (len - i >= 8) {
-        uint64_t acc = 0;
-        uint64_t w;
-        size_t words = (len - i) / 8 < 127 ? (len - i) / 8 : 127;
-        for (; words != 0; words--, i += 8) {
-            memcpy(&w, data + i, 8);
-            acc += (w & lanes) + ((w >> 8) & lanes);
+    if (len >= 8) {
+        /* Each word is compared with the offset of the last whole word (not counted ahead), so
+         * that every read is bounded by the loop's own condition. */
+        const size_t last = len - 8;
+        while (i <= last) {
+            uint64_t acc = 0;
+            uint64_t w;
+            unsigned words;
+            for (words = 0; words < 127u && i <= last; words++, i += 8) {
+                memcpy(&w, data + i, 8);
+                acc += (w & lanes) + ((w >> 8) & lanes);
+            }
+            if (i > last) {
+                if (i != len) {
+                    /* The last 8 bytes, of which the first i - last (1 to 7) are summed already;
+                     * `& 7` changes no value, and bounds the shift for an analysis that does not
+                     * keep i - last <= 8. */
+                    unsigned drop = 8u * ((unsigned)(i - last) & 7u);
+                    memcpy(&w, data + last, 8);
+                    w = little ? w >> drop : w << drop;
+                    acc += (w & lanes) + ((w >> 8) & lanes);
+                }
+                i = len;
+            }
+            acc = (acc & 0x0000FFFF0000FFFFull) + ((acc >> 16) & 0x0000FFFF0000FFFFull);
+            sum += (uint32_t)acc + (uint32_t)(acc >> 32);
         }
-        if (len - i < 8 && len != i) {
-            /* The last 8 bytes, of which the first 8 - (len - i) are summed already. */
-            unsigned drop = 8u * (8u - (unsigned)(len - i));
-            memcpy(&w, data + len - 8, 8);
-            w = little ? w >> drop : w << drop;
-            acc += (w & lanes) + ((w >> 8) & lanes);
-            i = len;
-        }
-        acc = (acc & 0x0000FFFF0000FFFFull) + ((acc >> 16) & 0x0000FFFF0000FFFFull);
-        sum += (uint32_t)acc + (uint32_t)(acc >> 32);
     }
 #endif
     /*@ loop invariant i <= len;
