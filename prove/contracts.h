@@ -1,6 +1,6 @@
-/* ACSL for the WP proof of the stream decoder (prove/wp_stream.c): the frame check's contract (that of
- * prove/wp_frame.c, proved there, and one postcondition not yet proved: see prove/README.md),
- * and where the stream decoder's bytes lie (its invariant, ilahrs_held_ok(), is in ilahrs.h). */
+/* ACSL shared by the WP proofs: the frame check's contract (proved by prove/wp_frame.c, used by
+ * prove/wp_stream.c for the stream decoder's calls), and where the stream decoder's bytes lie (its
+ * invariant, ilahrs_held_ok(), is in ilahrs.h). */
 #ifndef PROVE_CONTRACTS_H
 #define PROVE_CONTRACTS_H
 #include <stdint.h>

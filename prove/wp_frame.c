@@ -16,14 +16,7 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len);
     assigns frame->message_type, frame->reserved; */
 static void frame_get_fields(ilahrs_frame_t *frame, const uint8_t *p);
 
-/*@ requires \valid_read(p + (0 .. n - 1));
-    requires \valid(frame);
-    requires \separated(frame, p + (0 .. n - 1));
-    requires n <= 0x7FFFFFFF;
-    assigns *frame;
-    ensures \result <= (int)n;
-    ensures \result > 0 ==> frame->payload == p + ILAHRS_FRAME_PAYLOAD_OFFSET
-                         && ILAHRS_FRAME_PAYLOAD_OFFSET + frame->payload_size + ILAHRS_FRAME_CHECKSUM_SIZE == \result; */
-static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame);
+/* frame_check()'s contract, which the stream decoder's proof (prove/wp_stream.c) uses. */
+#include "contracts.h"
 
 #include "ilahrs.c"

@@ -94,7 +94,9 @@ bool ilahrs_stream_push(ilahrs_stream_t *s, uint8_t byte, ilahrs_message_t *msg)
     requires \separated(msg, data, len, *data + (0 .. *len - 1));
     requires \separated(s, *data + (0 .. *len - 1));
     assigns *s, *msg, *data, *len;
-    ensures ilahrs_held_ok(s) && *data + *len == \old(*data + *len) && *len <= \old(*len); */
+    ensures ilahrs_held_ok(s);
+    ensures *data + *len == \old(*data + *len);
+    ensures *len <= \old(*len); */
 bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, ilahrs_message_t *msg);
 
 /*@ requires \valid(s) && \valid(msg) && \separated(s, msg) && ilahrs_held_ok(s);

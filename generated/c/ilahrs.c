@@ -1703,6 +1703,7 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
         return -ILAHRS_ERR_BAD_MESSAGE_TYPE;
     }
     size = LE(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    //@ assert size + ILAHRS_FRAME_HEADER_SIZE == ilahrs_frame_size(p);
     if (size < ILAHRS_FRAME_MIN_LENGTH || size > ILAHRS_FRAME_MAX_LENGTH) {
         return -ILAHRS_ERR_BAD_LENGTH;
     }
@@ -3153,7 +3154,9 @@ static bool scan(ilahrs_stream_t *s, const uint8_t **data, size_t *len, size_t s
         }
         s->discarded++;
     }
-    if (n != 0 && p != s->held) {
+    /* (The cast states the comparison's type: left to the compiler, Frama-C casts both sides to a
+     * type WP's memory model cannot relate to `held`.) */
+    if (n != 0 && p != (const uint8_t *)s->held) {
         copy_forward(s->held, p, n);
     }
     s->count = (uint8_t)n;
@@ -3241,18 +3244,23 @@ bool ilahrs_stream_next(ilahrs_stream_t *s, const uint8_t **data, size_t *len, i
     /* Held bytes after a message handed out go first. Then, and after every byte pushed without a
      * message, the held bytes are a candidate waiting for input (start is 0). */
     bool found = (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
+    uint8_t byte;
     /*@ loop invariant ilahrs_held_ok(s) && (!found ==> s->start == 0);
         loop invariant \base_addr(*data) == \base_addr(\at(*data, Pre)) && \at(*data, Pre) <= *data;
-        loop invariant *data + *len == \at(*data + *len, Pre) && *len <= \at(*len, Pre);
-        loop assigns found, *s, *msg, *data, *len; */
+        loop invariant *data + *len == \at(*data + *len, Pre);
+        loop invariant *len <= \at(*len, Pre);
+        loop assigns found, byte, *s, *msg, *data, *len; */
     while (!found && *len != 0) {
         if (s->count == 0) {
             /* In place in the input; a candidate that waits at its end moves to `held`. */
             return scan(s, data, len, 0, msg);
         }
         /* A candidate waits in `held`: the input reaches it a byte at a time. */
+        byte = **data;
+        (*data)++;
         (*len)--;
-        found = ilahrs_stream_push(s, *(*data)++, msg);
+        //@ assert *data + *len == \at(*data + *len, Pre);
+        found = ilahrs_stream_push(s, byte, msg);
     }
     return found;
 }

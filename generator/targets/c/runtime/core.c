@@ -286,6 +286,7 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
         return -ILAHRS_ERR_BAD_MESSAGE_TYPE;
     }
     size = LE(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
+    //@ assert size + ILAHRS_FRAME_HEADER_SIZE == ilahrs_frame_size(p);
     if (size < ILAHRS_FRAME_MIN_LENGTH || size > ILAHRS_FRAME_MAX_LENGTH) {
         return -ILAHRS_ERR_BAD_LENGTH;
     }
