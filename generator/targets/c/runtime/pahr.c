@@ -80,6 +80,7 @@ static unsigned digit_value(uint8_t c)
  * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
  * it, so any number of digits reads without a wider type or a division.
  */
+#if FAST
 /* The digits of a number in base 10 or 16 from q, with at most one point among them: its
  * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
  * XORed into *sum. Returns where the number ends: at the star at the latest, which is no digit. */
@@ -125,12 +126,8 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     int32_t value;
     *sum ^= negative ? (unsigned)'-' : 0u;
     digits = q + negative;
-#if FAST
     /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
     q = f->hex ? pahr_digits(digits, star, 16u, &m, &point, sum) : pahr_digits(digits, star, 10u, &m, &point, sum);
-#else
-    q = pahr_digits(digits, star, f->hex ? 16u : 10u, &m, &point, sum);
-#endif
     *at = q;
     whole = (size_t)((point != NULL ? point : q) - digits);
     if (point != NULL) {
@@ -152,6 +149,62 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     store_bits((uint8_t *)out + f->member, (uint32_t)value, f->size);
     return ILAHRS_OK;
 }
+#else
+/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
+ * the characters already (*sum is left alone), reads *at only after a good field, and reports any
+ * bad one at its start, so a check may answer as soon as it fails. The digits are counted from
+ * `part`: the whole ones, then those after a point. */
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
+                                      ilahrs_pahr_t *out, unsigned *sum)
+{
+    const uint8_t *q = *at;
+    const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
+    unsigned base = f->hex ? 16u : 10u;
+    bool negative = base == 10u && *q == '-';
+    bool point = false;
+    size_t digits;
+    uint32_t m = 0;
+    int32_t value;
+    (void)sum;
+    for (part = q += negative; q < star; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || point || q == part) {
+                    if (c != PAHR_SEPARATOR) {
+                        return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
+                    }
+                    break;
+                }
+                point = true; /* in a hex field, a point is followed by a fraction it cannot have */
+                part = q + 1;
+                continue;
+            }
+        }
+        if (m < SATURATED) {
+            m = m * base + d;
+        }
+    }
+    digits = (size_t)(q - part);
+    if (digits == 0 || digits > (point ? f->decimals : f->hex ? f->width : ~0u)) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    *at = q;
+    for (digits = point ? digits : 0; digits < f->decimals; digits++) {
+        if (m < SATURATED) {
+            m *= 10u;
+        }
+    }
+    value = negative ? -(int32_t)m : (int32_t)m;
+    if (value < f->min || value > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    return ILAHRS_OK;
+}
+#endif
 
 #if FAST
 /* Compiled for speed, a decimal field has a path of its own, with the same answers as pahr_field():
@@ -281,8 +334,10 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
     const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
+#if FAST
     size_t error_at = 0;
     size_t error_field = 0;
+#endif
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
@@ -292,16 +347,20 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         return ILAHRS_ERR_MALFORMED;
     }
     *at += 1;
-    checksum = digit_value(star[1]) * 16u + digit_value(star[2]);
+    checksum = 0;
+    for (k = 1; k <= 2u; k++) {
+        OPAQUE(k);                                       /* a loop, not two copies */
+        checksum = checksum << 4 | digit_value(star[k]); /* above 0xFF if either is no digit */
+    }
     if (checksum > 0xFFu) {
         return ILAHRS_ERR_MALFORMED;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
+#if FAST
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     k = 0;
-#if FAST
     /* Compiled for speed, the fields go by while they are good, each ending at a separator or at
      * the star; the loop below takes over from the first bad one or from a field too many. */
 #if defined(__GNUC__)
@@ -321,7 +380,6 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         }
         q++; /* the separator */
     }
-#endif
     for (;; k++) {
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
             error_at = (size_t)(q - p);
@@ -329,17 +387,14 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
             field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         }
         for (; q < star && *q != PAHR_SEPARATOR; q++) {
-            sum ^= *q;
         }
         if (q >= star) {
             break;
         }
-        sum ^= *q++; /* the separator */
+        q++; /* the separator */
     }
-#if FAST
 counted:
     sum = pahr_xor(p + 1, star); /* the field paths leave it out */
-#endif
     if (sum != checksum) {
         return ILAHRS_ERR_BAD_CHECKSUM;
     }
@@ -350,6 +405,35 @@ counted:
     *at = error_at;
     *field = error_field;
     return field_error;
+#else
+    /* Compiled for size, the checksum and the field count first, in one pass over the characters
+     * (the separators: the fields and their count), then the fields up to the first bad one. */
+    k = 0;
+    for (; q < star; q++) {
+        sum ^= *q;
+        k += *q == PAHR_SEPARATOR;
+    }
+    if (sum != checksum) {
+        return ILAHRS_ERR_BAD_CHECKSUM;
+    }
+    *at = PAHR_PREFIX_LENGTH;
+    if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
+        return ILAHRS_ERR_MALFORMED;
+    }
+    /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
+    q = p + PAHR_PREFIX_LENGTH;
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        const uint8_t *start = q;
+        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        if (field_error != ILAHRS_OK) {
+            *at = (size_t)(start - p);
+            *field = k;
+            return field_error;
+        }
+        q++; /* the separator, or past the star after the last field */
+    }
+    return ILAHRS_OK;
+#endif
 }
 
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
