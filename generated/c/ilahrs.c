@@ -2739,14 +2739,21 @@ static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, con
 }
 #endif
 
+/* pahr_body()'s answer to an error: its kind, its offset and its field index in one word, which
+ * the stream decoder only compares with 0 (ILAHRS_OK). */
+#define PAHR_ERROR(kind, at, field) ((uint32_t)(kind) | (uint32_t)(field) << 8 | (uint32_t)(at) << 16)
+#define PAHR_ERROR_KIND(answer) ((ilahrs_error_kind_t)((answer) & 0xFFu))
+#define PAHR_ERROR_FIELD(answer) (((answer) >> 8) & 0xFFu)
+#define PAHR_ERROR_AT(answer) ((size_t)((answer) >> 16))
+
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search, in one pass over the fields. `end` is the sentence length, CR LF its last two
- * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in the
- * order of spec/README.md, with its offset in *at and its field index in *field
- * (ILAHRS_PAHR_FIELD_COUNT for none).
+ * CR LF search. `end` is the sentence length, CR LF its last two characters, and
+ * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
+ * spec/README.md as PAHR_ERROR(kind, offset, field index), the index ILAHRS_PAHR_FIELD_COUNT for
+ * none.
  */
-static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field)
+static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
     const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
@@ -2758,19 +2765,16 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    *field = ILAHRS_PAHR_FIELD_COUNT;
-    *at = end - PAHR_TAIL;
     if (star < q || *star != PAHR_STAR) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, end - PAHR_TAIL, ILAHRS_PAHR_FIELD_COUNT);
     }
-    *at += 1;
     checksum = 0;
     for (k = 1; k <= 2u; k++) {
         OPAQUE(k);                                       /* a loop, not two copies */
         checksum = checksum << 4 | digit_value(star[k]); /* above 0xFF if either is no digit */
     }
     if (checksum > 0xFFu) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
@@ -2813,15 +2817,12 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
 counted:
     sum = pahr_xor(p + 1, star); /* the field paths leave it out */
     if (sum != checksum) {
-        return ILAHRS_ERR_BAD_CHECKSUM;
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
     }
-    *at = PAHR_PREFIX_LENGTH;
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, ILAHRS_PAHR_FIELD_COUNT);
     }
-    *at = error_at;
-    *field = error_field;
-    return field_error;
+    return field_error == ILAHRS_OK ? ILAHRS_OK : PAHR_ERROR(field_error, error_at, error_field);
 #else
     /* Compiled for size, the checksum and the field count first, in one pass over the characters
      * (the separators: the fields and their count), then the fields up to the first bad one. */
@@ -2831,11 +2832,10 @@ counted:
         k += *q == PAHR_SEPARATOR;
     }
     if (sum != checksum) {
-        return ILAHRS_ERR_BAD_CHECKSUM;
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
     }
-    *at = PAHR_PREFIX_LENGTH;
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, ILAHRS_PAHR_FIELD_COUNT);
     }
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
@@ -2843,9 +2843,7 @@ counted:
         const uint8_t *start = q;
         field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         if (field_error != ILAHRS_OK) {
-            *at = (size_t)(start - p);
-            *field = k;
-            return field_error;
+            return PAHR_ERROR(field_error, start - p, k);
         }
         q++; /* the separator, or past the star after the last field */
     }
@@ -2858,9 +2856,8 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     const uint8_t *p = (const uint8_t *)text;
     size_t i;
     size_t end;
-    size_t at;
     size_t field;
-    ilahrs_error_kind_t kind;
+    uint32_t answer;
     /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
     for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
@@ -2886,9 +2883,10 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     if (end < len) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
-    kind = pahr_body(p, end, out, &at, &field);
-    return kind == ILAHRS_OK
-           || fail(err, kind, at,
+    answer = pahr_body(p, end, out);
+    field = PAHR_ERROR_FIELD(answer);
+    return answer == ILAHRS_OK
+           || fail(err, PAHR_ERROR_KIND(answer), PAHR_ERROR_AT(answer),
                    field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
 }
 
@@ -3152,8 +3150,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
-    size_t at;
-    size_t field;
     for (i = 1; i < PAHR_PREFIX_LENGTH; i++) {
         if (i == n) {
             return NEED_MORE;
@@ -3168,10 +3164,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
     }
-#else
-    for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
-    }
-#endif
     if (i == limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {
@@ -3180,9 +3172,27 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
+#else
+    /* Compiled for size, one loop: a byte before the LF that no sentence holds decides it now, as
+     * pahr_body() would at the LF (only "*", the checksum digits and CR stand outside the fields,
+     * and a field holds no such byte). */
+    for (i = seen; i < limit; i++) {
+        if (!printable(p[i])) {
+            if (p[i] == PAHR_LF) {
+                break;
+            }
+            if (p[i] != PAHR_CR) {
+                return INVALID;
+            }
+        }
+    }
+    if (i == limit) {
+        return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
+    }
+#endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
      * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence, &at, &field) != ILAHRS_OK) {
+    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;
