@@ -2569,8 +2569,12 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
 #else
 /* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
  * the characters already (*sum is left alone), reads *at only after a good field, and reports any
- * bad one at its start, so a check may answer as soon as it fails. The digits are counted from
- * `part`: the whole ones, then those after a point. */
+ * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
+ * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
+ * than any sentence holds, are not limited), then after a point the fraction digits, which leave
+ * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
+ * hex field, which takes no point, the width is used up: then a point ends the number as a second
+ * point does, and either is malformed), and the value lacks the smaller of the two. */
 static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
                                       ilahrs_pahr_t *out, unsigned *sum)
 {
@@ -2578,8 +2582,7 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
     bool negative = base == 10u && *q == '-';
-    bool point = false;
-    size_t digits;
+    unsigned room = f->hex ? f->width : ~0u;
     uint32_t m = 0;
     int32_t value;
     (void)sum;
@@ -2589,27 +2592,30 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
         if (d > 9u) {
             d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
             if (d < 10u || d >= base) {
-                if (c != '.' || point || q == part) {
+                if (c != '.' || room <= f->decimals || q == part) {
                     if (c != PAHR_SEPARATOR) {
                         return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
                     }
                     break;
                 }
-                point = true; /* in a hex field, a point is followed by a fraction it cannot have */
-                part = q + 1;
+                part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
+                room = f->decimals;
                 continue;
             }
         }
+        if (room == 0) {
+            return ILAHRS_ERR_MALFORMED; /* a digit too many */
+        }
+        room--;
         if (m < SATURATED) {
             m = m * base + d;
         }
     }
-    digits = (size_t)(q - part);
-    if (digits == 0 || digits > (point ? f->decimals : f->hex ? f->width : ~0u)) {
-        return ILAHRS_ERR_MALFORMED;
+    if (q == part) {
+        return ILAHRS_ERR_MALFORMED; /* no digit */
     }
     *at = q;
-    for (digits = point ? digits : 0; digits < f->decimals; digits++) {
+    for (room = room < f->decimals ? room : f->decimals; room != 0; room--) {
         if (m < SATURATED) {
             m *= 10u;
         }
