@@ -2745,19 +2745,24 @@ static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, con
 }
 #endif
 
-/* pahr_body()'s answer to an error: its kind, its offset and its field index in one word, which
- * the stream decoder only compares with 0 (ILAHRS_OK). */
+/* pahr_body()'s answer to an error, in one word, which the stream decoder only compares with 0
+ * (ILAHRS_OK): its kind, and a field's index with the field's offset, or, for an error outside the
+ * fields, where it lies instead of an index: at the prefix's end (the field count), at the star, or
+ * at the checksum's first digit; ilahrs_pahr_parse() knows those offsets. */
 #define PAHR_ERROR(kind, at, field) ((uint32_t)(kind) | (uint32_t)(field) << 8 | (uint32_t)(at) << 16)
+#define PAHR_AT_PREFIX ILAHRS_PAHR_FIELD_COUNT
+#define PAHR_AT_STAR (ILAHRS_PAHR_FIELD_COUNT + 1u)
+#define PAHR_AT_CHECKSUM (ILAHRS_PAHR_FIELD_COUNT + 2u)
 #define PAHR_ERROR_KIND(answer) ((ilahrs_error_kind_t)((answer) & 0xFFu))
 #define PAHR_ERROR_FIELD(answer) (((answer) >> 8) & 0xFFu)
 #define PAHR_ERROR_AT(answer) ((size_t)((answer) >> 16))
+typedef char pahr_check_answer[PAHR_AT_CHECKSUM <= 0xFFu ? 1 : -1];
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
  * CR LF search. `end` is the sentence length, CR LF its last two characters, and
  * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, offset, field index), the index ILAHRS_PAHR_FIELD_COUNT for
- * none.
+ * spec/README.md as PAHR_ERROR(kind, offset, field index or PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
@@ -2772,7 +2777,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     unsigned checksum;
     unsigned sum = 0;
     if (star < q || *star != PAHR_STAR) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, end - PAHR_TAIL, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_STAR);
     }
     checksum = 0;
     for (k = 1; k <= 2u; k++) {
@@ -2780,7 +2785,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
         checksum = checksum << 4 | digit_value(star[k]); /* above 0xFF if either is no digit */
     }
     if (checksum > 0xFFu) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_CHECKSUM);
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
@@ -2823,10 +2828,10 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 counted:
     sum = pahr_xor(p + 1, star); /* the field paths leave it out */
     if (sum != checksum) {
-        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, 0u, PAHR_AT_CHECKSUM);
     }
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_PREFIX);
     }
     return field_error == ILAHRS_OK ? ILAHRS_OK : PAHR_ERROR(field_error, error_at, error_field);
 #else
@@ -2838,10 +2843,10 @@ counted:
         k += *q == PAHR_SEPARATOR;
     }
     if (sum != checksum) {
-        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, end - PAHR_TAIL + 1u, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, 0u, PAHR_AT_CHECKSUM);
     }
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_PREFIX_LENGTH, ILAHRS_PAHR_FIELD_COUNT);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_PREFIX);
     }
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
@@ -2863,6 +2868,7 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     size_t i;
     size_t end;
     size_t field;
+    size_t at;
     uint32_t answer;
     /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
     for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
@@ -2891,8 +2897,11 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     }
     answer = pahr_body(p, end, out);
     field = PAHR_ERROR_FIELD(answer);
+    at = field < ILAHRS_PAHR_FIELD_COUNT ? PAHR_ERROR_AT(answer)
+         : field == PAHR_AT_PREFIX       ? PAHR_PREFIX_LENGTH
+                                         : end - PAHR_TAIL + (field - PAHR_AT_STAR);
     return answer == ILAHRS_OK
-           || fail(err, PAHR_ERROR_KIND(answer), PAHR_ERROR_AT(answer),
+           || fail(err, PAHR_ERROR_KIND(answer), at,
                    field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
 }
 
