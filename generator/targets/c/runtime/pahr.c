@@ -364,11 +364,12 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     }
     checksum = 0;
     for (k = 1; k <= 2u; k++) {
-        OPAQUE(k);                                       /* a loop, not two copies */
-        checksum = checksum << 4 | digit_value(star[k]); /* above 0xFF if either is no digit */
-    }
-    if (checksum > 0xFFu) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_CHECKSUM);
+        unsigned d = digit_value(star[k]);
+        OPAQUE(k); /* a loop, not two copies */
+        if (d > 0xFu) {
+            return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_CHECKSUM);
+        }
+        checksum = checksum << 4 | d;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
