@@ -329,23 +329,25 @@ static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, con
 #endif
 
 /* pahr_body()'s answer to an error, in one word, which the stream decoder only compares with 0
- * (ILAHRS_OK): its kind, and a field's index with the field's offset, or, for an error outside the
- * fields, where it lies instead of an index: at the prefix's end (the field count), at the star, or
- * at the checksum's first digit; ilahrs_pahr_parse() knows those offsets. */
-#define PAHR_ERROR(kind, at, field) ((uint32_t)(kind) | (uint32_t)(field) << 8 | (uint32_t)(at) << 16)
+ * (ILAHRS_OK): its kind, and where it lies: the index of the field at fault (the error is at the
+ * field's first character, after as many separators as fields precede it), or for an error outside
+ * the fields, at the prefix's end (the field count), at the star, or at the checksum's first digit.
+ * ilahrs_pahr_parse() turns that into the offset. */
+#define PAHR_ERROR(kind, where) ((uint32_t)(kind) | (uint32_t)(where) << 4)
 #define PAHR_AT_PREFIX ILAHRS_PAHR_FIELD_COUNT
 #define PAHR_AT_STAR (ILAHRS_PAHR_FIELD_COUNT + 1u)
 #define PAHR_AT_CHECKSUM (ILAHRS_PAHR_FIELD_COUNT + 2u)
-#define PAHR_ERROR_KIND(answer) ((ilahrs_error_kind_t)((answer) & 0xFFu))
-#define PAHR_ERROR_FIELD(answer) (((answer) >> 8) & 0xFFu)
-#define PAHR_ERROR_AT(answer) ((size_t)((answer) >> 16))
-typedef char pahr_check_answer[PAHR_AT_CHECKSUM <= 0xFFu ? 1 : -1];
+#define PAHR_ERROR_KIND(answer) ((ilahrs_error_kind_t)((answer) & 0xFu))
+#define PAHR_ERROR_WHERE(answer) ((size_t)((answer) >> 4))
+/* (The kinds it answers fit in 4 bits: the answers before the fields fit in one byte.) */
+typedef char
+    pahr_check_kinds[(ILAHRS_ERR_MALFORMED | ILAHRS_ERR_OUT_OF_RANGE | ILAHRS_ERR_BAD_CHECKSUM) <= 0xF ? 1 : -1];
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
  * CR LF search. `end` is the sentence length, CR LF its last two characters, and
  * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, offset, field index or PAHR_AT_*).
+ * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
@@ -353,21 +355,20 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
 #if FAST
-    size_t error_at = 0;
     size_t error_field = 0;
 #endif
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
     if (star < q || *star != PAHR_STAR) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_STAR);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
     checksum = 0;
     for (k = 1; k <= 2u; k++) {
         unsigned d = digit_value(star[k]);
         OPAQUE(k); /* a loop, not two copies */
         if (d > 0xFu) {
-            return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_CHECKSUM);
+            return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_CHECKSUM);
         }
         checksum = checksum << 4 | d;
     }
@@ -384,10 +385,8 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 #endif
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         const pahr_field_t *f = &ilahrs_pahr_fields[k];
-        const uint8_t *start = q;
         field_error = f->hex ? pahr_hex(&q, star, f, out, &sum) : pahr_decimal(&q, star, f, out, &sum);
         if (field_error != ILAHRS_OK) {
-            error_at = (size_t)(start - p);
             error_field = k;
             break;
         }
@@ -398,7 +397,6 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     }
     for (;; k++) {
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
-            error_at = (size_t)(q - p);
             error_field = k;
             field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         }
@@ -412,12 +410,12 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 counted:
     sum = pahr_xor(p + 1, star); /* the field paths leave it out */
     if (sum != checksum) {
-        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, 0u, PAHR_AT_CHECKSUM);
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, PAHR_AT_CHECKSUM);
     }
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_PREFIX);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_PREFIX);
     }
-    return field_error == ILAHRS_OK ? ILAHRS_OK : PAHR_ERROR(field_error, error_at, error_field);
+    return field_error == ILAHRS_OK ? ILAHRS_OK : PAHR_ERROR(field_error, error_field);
 #else
     /* Compiled for size, the checksum and the field count first, in one pass over the characters
      * (the separators: the fields and their count), then the fields up to the first bad one. */
@@ -427,18 +425,17 @@ counted:
         k += *q == PAHR_SEPARATOR;
     }
     if (sum != checksum) {
-        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, 0u, PAHR_AT_CHECKSUM);
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, PAHR_AT_CHECKSUM);
     }
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, 0u, PAHR_AT_PREFIX);
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_PREFIX);
     }
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        const uint8_t *start = q;
         field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         if (field_error != ILAHRS_OK) {
-            return PAHR_ERROR(field_error, start - p, k);
+            return PAHR_ERROR(field_error, k);
         }
         q++; /* the separator, or past the star after the last field */
     }
@@ -451,7 +448,7 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     const uint8_t *p = (const uint8_t *)text;
     size_t i;
     size_t end;
-    size_t field;
+    size_t where;
     size_t at;
     uint32_t answer;
     /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
@@ -480,13 +477,17 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
     answer = pahr_body(p, end, out);
-    field = PAHR_ERROR_FIELD(answer);
-    at = field < ILAHRS_PAHR_FIELD_COUNT ? PAHR_ERROR_AT(answer)
-         : field == PAHR_AT_PREFIX       ? PAHR_PREFIX_LENGTH
-                                         : end - PAHR_TAIL + (field - PAHR_AT_STAR);
+    where = PAHR_ERROR_WHERE(answer);
+    at = PAHR_PREFIX_LENGTH;
+    for (i = where < ILAHRS_PAHR_FIELD_COUNT ? where : 0; i != 0 && at < end; at++) {
+        i -= p[at] == PAHR_SEPARATOR; /* the field's first character follows its i-th separator */
+    }
+    if (where > PAHR_AT_PREFIX) {
+        at = end - PAHR_TAIL + (where - PAHR_AT_STAR);
+    }
     return answer == ILAHRS_OK
            || fail(err, PAHR_ERROR_KIND(answer), at,
-                   field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
+                   where < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[where].name) : NULL);
 }
 
 static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7',
