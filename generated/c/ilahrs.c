@@ -3167,10 +3167,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
-    for (i = 1; i < PAHR_PREFIX_LENGTH; i++) {
-        if (i == n) {
-            return NEED_MORE;
-        }
+    /* The prefix, as far as it goes (cut short, nothing follows it below, and it waits). */
+    for (i = 1; i < PAHR_PREFIX_LENGTH && i < n; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
             return INVALID;
         }
@@ -3369,7 +3367,10 @@ bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
     /* Without a message handed out, the held bytes are a candidate waiting for input (frames only,
      * in less code: scanned again, it waits again). */
-    return (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
+    if (ILAHRS_STREAM_SENTENCES && s->start == 0) {
+        return false;
+    }
+    return scan_held(s, msg, 0); /* a tail call */
 }
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
