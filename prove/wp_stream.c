@@ -11,10 +11,9 @@
 
 /*@ requires \valid_read(p + (0 .. end - 1));
     requires 8 <= end; // PAHR_PREFIX_LENGTH + 2, as ilahrs_pahr_parse() calls it
-    requires \valid(out) && \valid(at) && \valid(field);
-    requires \separated(out, at, field);
-    assigns *out, *at, *field; */
-static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field);
+    requires \valid(out);
+    assigns *out; */
+static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out);
 
 /*@ requires \valid(dst + (0 .. n - 1)) && \valid_read(src + (0 .. n - 1));
     requires \separated(dst + (0 .. n - 1), src + (0 .. n - 1))

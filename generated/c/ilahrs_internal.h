@@ -1128,6 +1128,15 @@ static int32_t date_scaled(int year, int month, int day)
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
+/* The size every member of ilahrs_pahr_t has, if they all have the same (else 0: each row's). */
+#define PAHR_MEMBER_SIZE                                                                        \
+    (sizeof(((ilahrs_pahr_t *)0)->pitch) == sizeof(((ilahrs_pahr_t *)0)->roll)                  \
+             && sizeof(((ilahrs_pahr_t *)0)->heading) == sizeof(((ilahrs_pahr_t *)0)->roll)     \
+             && sizeof(((ilahrs_pahr_t *)0)->temperature) == sizeof(((ilahrs_pahr_t *)0)->roll) \
+             && sizeof(((ilahrs_pahr_t *)0)->vdd) == sizeof(((ilahrs_pahr_t *)0)->roll)         \
+             && sizeof(((ilahrs_pahr_t *)0)->usw) == sizeof(((ilahrs_pahr_t *)0)->roll) && 1    \
+         ? sizeof(((ilahrs_pahr_t *)0)->roll)                                                   \
+         : 0u)
 typedef struct {
     uint8_t name;
     uint8_t hex;

@@ -80,6 +80,7 @@ static unsigned digit_value(uint8_t c)
  * Magnitudes stop growing at SATURATED, above every range: m * 16 + 15 cannot overflow from below
  * it, so any number of digits reads without a wider type or a division.
  */
+#if FAST
 /* The digits of a number in base 10 or 16 from q, with at most one point among them: its
  * magnitude in *m (stopping at SATURATED), the point in *point (NULL without one), the characters
  * XORed into *sum. Returns where the number ends: at the star at the latest, which is no digit. */
@@ -125,12 +126,8 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     int32_t value;
     *sum ^= negative ? (unsigned)'-' : 0u;
     digits = q + negative;
-#if FAST
     /* The base as a constant: a multiplication by 10 or 16 is a shift and an add. */
     q = f->hex ? pahr_digits(digits, star, 16u, &m, &point, sum) : pahr_digits(digits, star, 10u, &m, &point, sum);
-#else
-    q = pahr_digits(digits, star, f->hex ? 16u : 10u, &m, &point, sum);
-#endif
     *at = q;
     whole = (size_t)((point != NULL ? point : q) - digits);
     if (point != NULL) {
@@ -152,6 +149,68 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     store_bits((uint8_t *)out + f->member, (uint32_t)value, f->size);
     return ILAHRS_OK;
 }
+#else
+/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
+ * the characters already (*sum is left alone), reads *at only after a good field, and reports any
+ * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
+ * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
+ * than any sentence holds, are not limited), then after a point the fraction digits, which leave
+ * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
+ * hex field, which takes no point, the width is used up: then a point ends the number as a second
+ * point does, and either is malformed), and the value lacks the smaller of the two. */
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
+                                      ilahrs_pahr_t *out, unsigned *sum)
+{
+    const uint8_t *q = *at;
+    const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
+    unsigned base = f->hex ? 16u : 10u;
+    bool negative = base == 10u && *q == '-';
+    unsigned room = f->hex ? f->width : ~0u;
+    uint32_t m = 0;
+    int32_t value;
+    (void)sum;
+    for (part = q += negative; q < star; q++) {
+        unsigned c = *q;
+        unsigned d = c - '0';
+        if (d > 9u) {
+            d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
+            if (d < 10u || d >= base) {
+                if (c != '.' || room <= f->decimals || q == part) {
+                    if (c != PAHR_SEPARATOR) {
+                        return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
+                    }
+                    break;
+                }
+                part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
+                room = f->decimals;
+                continue;
+            }
+        }
+        if (room == 0) {
+            return ILAHRS_ERR_MALFORMED; /* a digit too many */
+        }
+        room--;
+        if (m < SATURATED) {
+            m = m * base + d;
+        }
+    }
+    if (q == part) {
+        return ILAHRS_ERR_MALFORMED; /* no digit */
+    }
+    *at = q;
+    for (room = room < f->decimals ? room : f->decimals; room != 0; room--) {
+        if (m < SATURATED) {
+            m *= 10u;
+        }
+    }
+    value = negative ? -(int32_t)m : (int32_t)m;
+    if (value < f->min || value > f->max) {
+        return ILAHRS_ERR_OUT_OF_RANGE;
+    }
+    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    return ILAHRS_OK;
+}
+#endif
 
 #if FAST
 /* Compiled for speed, a decimal field has a path of its own, with the same answers as pahr_field():
@@ -269,39 +328,56 @@ static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, con
 }
 #endif
 
+/* pahr_body()'s answer to an error, in one word, which the stream decoder only compares with 0
+ * (ILAHRS_OK): its kind, and where it lies: the index of the field at fault (the error is at the
+ * field's first character, after as many separators as fields precede it), or for an error outside
+ * the fields, at the prefix's end (the field count), at the star, or at the checksum's first digit.
+ * ilahrs_pahr_parse() turns that into the offset. */
+#define PAHR_ERROR(kind, where) ((uint32_t)(kind) | (uint32_t)(where) << 4)
+#define PAHR_AT_PREFIX ILAHRS_PAHR_FIELD_COUNT
+#define PAHR_AT_STAR (ILAHRS_PAHR_FIELD_COUNT + 1u)
+#define PAHR_AT_CHECKSUM (ILAHRS_PAHR_FIELD_COUNT + 2u)
+#define PAHR_ERROR_KIND(answer) ((ilahrs_error_kind_t)((answer) & 0xFu))
+#define PAHR_ERROR_WHERE(answer) ((size_t)((answer) >> 4))
+/* (The kinds it answers fit in 4 bits: the answers before the fields fit in one byte.) */
+typedef char
+    pahr_check_kinds[(ILAHRS_ERR_MALFORMED | ILAHRS_ERR_OUT_OF_RANGE | ILAHRS_ERR_BAD_CHECKSUM) <= 0xF ? 1 : -1];
+
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search, in one pass over the fields. `end` is the sentence length, CR LF its last two
- * characters, and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK or the first error in the
- * order of spec/README.md, with its offset in *at and its field index in *field
- * (ILAHRS_PAHR_FIELD_COUNT for none).
+ * CR LF search. `end` is the sentence length, CR LF its last two characters, and
+ * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
+ * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
  */
-static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out, size_t *at, size_t *field)
+static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
     const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
-    size_t error_at = 0;
+#if FAST
     size_t error_field = 0;
+#endif
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    *field = ILAHRS_PAHR_FIELD_COUNT;
-    *at = end - PAHR_TAIL;
     if (star < q || *star != PAHR_STAR) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
-    *at += 1;
-    checksum = digit_value(star[1]) * 16u + digit_value(star[2]);
-    if (checksum > 0xFFu) {
-        return ILAHRS_ERR_MALFORMED;
+    checksum = 0;
+    for (k = 1; k <= 2u; k++) {
+        unsigned d = digit_value(star[k]);
+        OPAQUE(k); /* a loop, not two copies */
+        if (d > 0xFu) {
+            return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_CHECKSUM);
+        }
+        checksum = checksum << 4 | d;
     }
     for (k = 1; k < PAHR_PREFIX_LENGTH; k++) {
         sum ^= (uint8_t)PAHR_PREFIX[k]; /* p[k], which the callers checked */
     }
+#if FAST
     /* Fields, counted; the first bad one is remembered and reported after the checksum. */
     k = 0;
-#if FAST
     /* Compiled for speed, the fields go by while they are good, each ending at a separator or at
      * the star; the loop below takes over from the first bad one or from a field too many. */
 #if defined(__GNUC__)
@@ -309,10 +385,8 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
 #endif
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
         const pahr_field_t *f = &ilahrs_pahr_fields[k];
-        const uint8_t *start = q;
         field_error = f->hex ? pahr_hex(&q, star, f, out, &sum) : pahr_decimal(&q, star, f, out, &sum);
         if (field_error != ILAHRS_OK) {
-            error_at = (size_t)(start - p);
             error_field = k;
             break;
         }
@@ -321,35 +395,52 @@ static ilahrs_error_kind_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t
         }
         q++; /* the separator */
     }
-#endif
     for (;; k++) {
         if (k < ILAHRS_PAHR_FIELD_COUNT && field_error == ILAHRS_OK) {
-            error_at = (size_t)(q - p);
             error_field = k;
             field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
         }
         for (; q < star && *q != PAHR_SEPARATOR; q++) {
-            sum ^= *q;
         }
         if (q >= star) {
             break;
         }
-        sum ^= *q++; /* the separator */
+        q++; /* the separator */
     }
-#if FAST
 counted:
     sum = pahr_xor(p + 1, star); /* the field paths leave it out */
-#endif
     if (sum != checksum) {
-        return ILAHRS_ERR_BAD_CHECKSUM;
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, PAHR_AT_CHECKSUM);
     }
-    *at = PAHR_PREFIX_LENGTH;
     if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
-        return ILAHRS_ERR_MALFORMED;
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_PREFIX);
     }
-    *at = error_at;
-    *field = error_field;
-    return field_error;
+    return field_error == ILAHRS_OK ? ILAHRS_OK : PAHR_ERROR(field_error, error_field);
+#else
+    /* Compiled for size, the checksum and the field count first, in one pass over the characters
+     * (the separators: the fields and their count), then the fields up to the first bad one. */
+    k = 0;
+    for (; q < star; q++) {
+        sum ^= *q;
+        k += *q == PAHR_SEPARATOR;
+    }
+    if (sum != checksum) {
+        return PAHR_ERROR(ILAHRS_ERR_BAD_CHECKSUM, PAHR_AT_CHECKSUM);
+    }
+    if (k + 1 != ILAHRS_PAHR_FIELD_COUNT) {
+        return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_PREFIX);
+    }
+    /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
+    q = p + PAHR_PREFIX_LENGTH;
+    for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
+        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        if (field_error != ILAHRS_OK) {
+            return PAHR_ERROR(field_error, k);
+        }
+        q++; /* the separator, or past the star after the last field */
+    }
+    return ILAHRS_OK;
+#endif
 }
 
 bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_error_t *err)
@@ -357,9 +448,9 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     const uint8_t *p = (const uint8_t *)text;
     size_t i;
     size_t end;
+    size_t where;
     size_t at;
-    size_t field;
-    ilahrs_error_kind_t kind;
+    uint32_t answer;
     /* "$" (a wrong one at 0), then the identifier and "," (a wrong one at 1), as far as they go. */
     for (i = 0; i < PAHR_PREFIX_LENGTH && i < len; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
@@ -385,10 +476,18 @@ bool ilahrs_pahr_parse(const char *text, size_t len, ilahrs_pahr_t *out, ilahrs_
     if (end < len) {
         return fail(err, ILAHRS_ERR_TRAILING_DATA, end, NULL);
     }
-    kind = pahr_body(p, end, out, &at, &field);
-    return kind == ILAHRS_OK
-           || fail(err, kind, at,
-                   field < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[field].name) : NULL);
+    answer = pahr_body(p, end, out);
+    where = PAHR_ERROR_WHERE(answer);
+    at = PAHR_PREFIX_LENGTH;
+    for (i = where < ILAHRS_PAHR_FIELD_COUNT ? where : 0; i != 0 && at < end; at++) {
+        i -= p[at] == PAHR_SEPARATOR; /* the field's first character follows its i-th separator */
+    }
+    if (where > PAHR_AT_PREFIX) {
+        at = end - PAHR_TAIL + (where - PAHR_AT_STAR);
+    }
+    return answer == ILAHRS_OK
+           || fail(err, PAHR_ERROR_KIND(answer), at,
+                   where < ILAHRS_PAHR_FIELD_COUNT ? SENTENCE_NAME(ilahrs_pahr_fields[where].name) : NULL);
 }
 
 static const char ilahrs_hex_digits[16] = { '0', '1', '2', '3', '4', '5', '6', '7',

@@ -80,12 +80,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
-    size_t at;
-    size_t field;
-    for (i = 1; i < PAHR_PREFIX_LENGTH; i++) {
-        if (i == n) {
-            return NEED_MORE;
-        }
+    /* The prefix, as far as it goes (cut short, nothing follows it below, and it waits). */
+    for (i = 1; i < PAHR_PREFIX_LENGTH && i < n; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
             return INVALID;
         }
@@ -96,10 +92,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
     }
-#else
-    for (i = seen; i < limit && p[i] != PAHR_LF; i++) {
-    }
-#endif
     if (i == limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {
@@ -108,9 +100,27 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
+#else
+    /* Compiled for size, one loop: a byte before the LF that no sentence holds decides it now, as
+     * pahr_body() would at the LF (only "*", the checksum digits and CR stand outside the fields,
+     * and a field holds no such byte). */
+    for (i = seen; i < limit; i++) {
+        if (!printable(p[i])) {
+            if (p[i] == PAHR_LF) {
+                break;
+            }
+            if (p[i] != PAHR_CR) {
+                return INVALID;
+            }
+        }
+    }
+    if (i == limit) {
+        return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
+    }
+#endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
      * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence, &at, &field) != ILAHRS_OK) {
+    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;
@@ -277,7 +287,10 @@ bool ilahrs_stream_poll(ilahrs_stream_t *s, ilahrs_message_t *msg)
 {
     /* Without a message handed out, the held bytes are a candidate waiting for input (frames only,
      * in less code: scanned again, it waits again). */
-    return (!ILAHRS_STREAM_SENTENCES || s->start != 0) && scan_held(s, msg, 0);
+    if (ILAHRS_STREAM_SENTENCES && s->start == 0) {
+        return false;
+    }
+    return scan_held(s, msg, 0); /* a tail call */
 }
 
 bool ilahrs_stream_finish(ilahrs_stream_t *s, ilahrs_message_t *msg)
