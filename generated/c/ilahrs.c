@@ -1675,9 +1675,11 @@ static uint32_t sum_bytes(const uint8_t *data, size_t len)
             sum += (uint32_t)acc + (uint32_t)(acc >> 32);
         }
     }
-#endif
+#else
+    /* (The loop invariant is WP's, on this path: prove/wp_frame.c.) */
     /*@ loop invariant i <= len;
         loop assigns i, sum; */
+#endif
     for (; i < len; i++) {
         sum += data[i];
     }
@@ -3192,7 +3194,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
     }
-    if (i == limit) {
+    /* (i is at most limit; ">=" also holds an analysis that loses that bound to the bytes before it.) */
+    if (i >= limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {
                 return INVALID;
@@ -3214,7 +3217,7 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
             }
         }
     }
-    if (i == limit) {
+    if (i >= limit) { /* as above */
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
 #endif

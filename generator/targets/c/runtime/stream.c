@@ -92,7 +92,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
     }
-    if (i == limit) {
+    /* (i is at most limit; ">=" also holds an analysis that loses that bound to the bytes before it.) */
+    if (i >= limit) {
         for (i = seen; i < limit; i++) {
             if (!printable(p[i]) && p[i] != PAHR_CR) {
                 return INVALID;
@@ -114,7 +115,7 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
             }
         }
     }
-    if (i == limit) {
+    if (i >= limit) { /* as above */
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
 #endif
