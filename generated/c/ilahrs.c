@@ -2593,7 +2593,9 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     const uint8_t *q = *at;
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
-    bool negative = base == 10u && *q == '-';
+    /* Every read of the field below the star (pahr_body() never starts one past it, but Frama-C's
+     * EVA cannot tell: the separators it counted are what stop a field short of the star). */
+    bool negative = base == 10u && q < star && *q == '-';
     unsigned room = f->hex ? f->width : ~0u;
     uint32_t m = 0;
     int32_t value;
