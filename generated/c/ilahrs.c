@@ -2694,7 +2694,9 @@ static ilahrs_error_kind_t pahr_decimal(const uint8_t **at, const uint8_t *star,
     int64_t value;
     q += negative;
     digits = q;
-    for (; (d = (unsigned)*q - '0') <= 9u; q++) {
+    /* Each loop stops at the star, which is no digit, and says so in its condition too: every read
+     * is then below the star or at it, which Frama-C's EVA can tell (prove/README.md). */
+    for (; q < star && (d = (unsigned)*q - '0') <= 9u; q++) {
         v = v * 10u + d;
     }
     if (q - digits > 6) {
@@ -2706,7 +2708,7 @@ static ilahrs_error_kind_t pahr_decimal(const uint8_t **at, const uint8_t *star,
         unsigned i;
         /* At most the field's fraction digits (a loop the same length every time); a digit after
          * them is one too many. */
-        for (i = 0; i < scale && (d = (unsigned)*q - '0') <= 9u; i++, q++) {
+        for (i = 0; i < scale && q < star && (d = (unsigned)*q - '0') <= 9u; i++, q++) {
             v = v * 10u + d;
         }
         bad |= q == point + 1 || (unsigned)*q - '0' <= 9u;
@@ -2732,7 +2734,7 @@ static ilahrs_error_kind_t pahr_hex(const uint8_t **at, const uint8_t *star, con
     const uint8_t *q = *at;
     uint32_t v = 0;
     size_t whole;
-    for (;; q++) {
+    for (; q < star; q++) {
         unsigned c = *q;
         unsigned d = c - '0';
         if (d > 9u) {
