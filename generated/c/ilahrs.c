@@ -1118,27 +1118,44 @@ static int32_t date_scaled(int year, int month, int day)
 }
 
 /* $PAHR (Table 6.7, section 6.2): one row per field: name, hex or decimal, template width, fraction digits,
- * struct member and its size, range (scaled); the member is signed when the range is. Magnitudes
- * saturate at SATURATED, above every range. */
+ * struct member and its size (where the rows hold them, below), range (scaled); the member is
+ * signed when the range is. Magnitudes saturate at SATURATED, above every range. */
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
-/* The size every member of ilahrs_pahr_t has, if they all have the same (else 0: each row's). */
-#define PAHR_MEMBER_SIZE                                                                        \
-    (sizeof(((ilahrs_pahr_t *)0)->pitch) == sizeof(((ilahrs_pahr_t *)0)->roll)                  \
-             && sizeof(((ilahrs_pahr_t *)0)->heading) == sizeof(((ilahrs_pahr_t *)0)->roll)     \
-             && sizeof(((ilahrs_pahr_t *)0)->temperature) == sizeof(((ilahrs_pahr_t *)0)->roll) \
-             && sizeof(((ilahrs_pahr_t *)0)->vdd) == sizeof(((ilahrs_pahr_t *)0)->roll)         \
-             && sizeof(((ilahrs_pahr_t *)0)->usw) == sizeof(((ilahrs_pahr_t *)0)->roll) && 1    \
-         ? sizeof(((ilahrs_pahr_t *)0)->roll)                                                   \
-         : 0u)
+/* Every member of ilahrs_pahr_t has the same size, PAHR_MEMBER_SIZE, in the order of the fields:
+ * field k's lies at k times that size. Compiled for size (FAST 0, below), the rows then leave out
+ * member and size, which PAHR_MEMBER() and PAHR_SIZE() compute. */
+#define PAHR_MEMBER_SIZE sizeof(((ilahrs_pahr_t *)0)->roll)
+typedef char pahr_check_members[offsetof(ilahrs_pahr_t, pitch) == 1 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, heading) == 2 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, temperature) == 3 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, vdd) == 4 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, usw) == 5 * PAHR_MEMBER_SIZE
+                                        && sizeof(ilahrs_pahr_t) == 6 * PAHR_MEMBER_SIZE
+                                    ? 1
+                                    : -1];
+#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#define PAHR_ROW_MEMBERS 1
+#else
+#define PAHR_ROW_MEMBERS 0
+#endif
+#if PAHR_ROW_MEMBERS
+#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
+#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
+#else
+#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
+#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
+#endif
 typedef struct {
     uint8_t name;
     uint8_t hex;
     uint8_t width;
     uint8_t decimals;
+#if PAHR_ROW_MEMBERS
     uint8_t member;
     uint8_t size;
+#endif
     int16_t min;
     uint16_t max;
 } pahr_field_t;
@@ -1148,48 +1165,60 @@ static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
       .hex = 0,
       .width = 4,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, roll),
       .size = sizeof(((ilahrs_pahr_t *)0)->roll),
+#endif
       .min = (-18000),
       .max = 18000 },
     { .name = 5,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, pitch),
       .size = sizeof(((ilahrs_pahr_t *)0)->pitch),
+#endif
       .min = (-9000),
       .max = 9000 },
     { .name = 11,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, heading),
       .size = sizeof(((ilahrs_pahr_t *)0)->heading),
+#endif
       .min = 0,
       .max = 35999u },
     { .name = 19,
       .hex = 0,
       .width = 3,
       .decimals = 1,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, temperature),
       .size = sizeof(((ilahrs_pahr_t *)0)->temperature),
+#endif
       .min = (-999),
       .max = 9999 },
     { .name = 31,
       .hex = 0,
       .width = 1,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, vdd),
       .size = sizeof(((ilahrs_pahr_t *)0)->vdd),
+#endif
       .min = 0,
       .max = 999 },
     { .name = 35,
       .hex = 1,
       .width = 4,
       .decimals = 0,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, usw),
       .size = sizeof(((ilahrs_pahr_t *)0)->usw),
+#endif
       .min = 0,
       .max = 65535u },
 };
@@ -2479,8 +2508,8 @@ uint32_t ilahrs_pahr_field_divisor(size_t index)
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
 {
-    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+    uint32_t bits = load_bits((const uint8_t *)in + PAHR_MEMBER(k), PAHR_SIZE(k));
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, PAHR_SIZE(k)) : (int32_t)bits;
 }
 
 int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
@@ -2579,17 +2608,17 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 #else
-/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
- * the characters already (*sum is left alone), reads *at only after a good field, and reports any
- * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
+/* Compiled for size, the same checks with the same answers in less code, for field k: pahr_body()
+ * has summed the characters already, reads *at only after a good field, and reports any bad one
+ * at its start, so a check may answer as soon as it fails. `room` counts the digits the
  * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
  * than any sentence holds, are not limited), then after a point the fraction digits, which leave
  * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
  * hex field, which takes no point, the width is used up: then a point ends the number as a second
  * point does, and either is malformed), and the value lacks the smaller of the two. */
-static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
-                                      ilahrs_pahr_t *out, unsigned *sum)
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, size_t k, ilahrs_pahr_t *out)
 {
+    const pahr_field_t *f = &ilahrs_pahr_fields[k];
     const uint8_t *q = *at;
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
@@ -2599,7 +2628,6 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     unsigned room = f->hex ? f->width : ~0u;
     uint32_t m = 0;
     int32_t value;
-    (void)sum;
     for (part = q += negative; q < star; q++) {
         unsigned c = *q;
         unsigned d = c - '0';
@@ -2638,7 +2666,7 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     if (value < f->min || value > f->max) {
         return ILAHRS_ERR_OUT_OF_RANGE;
     }
-    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    store_bits((uint8_t *)out + PAHR_MEMBER(k), (uint32_t)value, PAHR_SIZE(k));
     return ILAHRS_OK;
 }
 #endif
@@ -2864,7 +2892,7 @@ counted:
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        field_error = pahr_field(&q, star, k, out);
         if (field_error != ILAHRS_OK) {
             return PAHR_ERROR(field_error, k);
         }
@@ -3072,7 +3100,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
             goto out_of_range;
         }
-        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)&sentence + PAHR_MEMBER(k), (uint32_t)scaled, PAHR_SIZE(k));
     }
     *out = sentence;
     return true;

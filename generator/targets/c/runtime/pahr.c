@@ -50,8 +50,8 @@ uint32_t ilahrs_pahr_field_divisor(size_t index)
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
 {
-    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+    uint32_t bits = load_bits((const uint8_t *)in + PAHR_MEMBER(k), PAHR_SIZE(k));
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, PAHR_SIZE(k)) : (int32_t)bits;
 }
 
 int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
@@ -150,17 +150,17 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 #else
-/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
- * the characters already (*sum is left alone), reads *at only after a good field, and reports any
- * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
+/* Compiled for size, the same checks with the same answers in less code, for field k: pahr_body()
+ * has summed the characters already, reads *at only after a good field, and reports any bad one
+ * at its start, so a check may answer as soon as it fails. `room` counts the digits the
  * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
  * than any sentence holds, are not limited), then after a point the fraction digits, which leave
  * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
  * hex field, which takes no point, the width is used up: then a point ends the number as a second
  * point does, and either is malformed), and the value lacks the smaller of the two. */
-static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
-                                      ilahrs_pahr_t *out, unsigned *sum)
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, size_t k, ilahrs_pahr_t *out)
 {
+    const pahr_field_t *f = &ilahrs_pahr_fields[k];
     const uint8_t *q = *at;
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
@@ -170,7 +170,6 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     unsigned room = f->hex ? f->width : ~0u;
     uint32_t m = 0;
     int32_t value;
-    (void)sum;
     for (part = q += negative; q < star; q++) {
         unsigned c = *q;
         unsigned d = c - '0';
@@ -209,7 +208,7 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     if (value < f->min || value > f->max) {
         return ILAHRS_ERR_OUT_OF_RANGE;
     }
-    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    store_bits((uint8_t *)out + PAHR_MEMBER(k), (uint32_t)value, PAHR_SIZE(k));
     return ILAHRS_OK;
 }
 #endif
@@ -435,7 +434,7 @@ counted:
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        field_error = pahr_field(&q, star, k, out);
         if (field_error != ILAHRS_OK) {
             return PAHR_ERROR(field_error, k);
         }
@@ -643,7 +642,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
             goto out_of_range;
         }
-        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)&sentence + PAHR_MEMBER(k), (uint32_t)scaled, PAHR_SIZE(k));
     }
     *out = sentence;
     return true;
