@@ -1128,6 +1128,7 @@ static int32_t date_scaled(int year, int month, int day)
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
+#define PAHR_MAX_DECIMALS 2
 /* Every member of ilahrs_pahr_t has the same size, PAHR_MEMBER_SIZE, in the order of the fields:
  * field k's lies at k times that size. Compiled for size (FAST 0, below), the rows then leave out
  * member and size, which PAHR_MEMBER() and PAHR_SIZE() compute. */

@@ -150,14 +150,17 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 #else
+/* (A field's digits leave room for more fraction digits than any field has.) */
+typedef char pahr_check_room[PAHR_MAX_DECIMALS < PAHR_PREFIX_LENGTH + PAHR_TAIL ? 1 : -1];
 /* Compiled for size, the same checks with the same answers in less code, for field k: pahr_body()
  * has summed the characters already, reads *at only after a good field, and reports any bad one
  * at its start, so a check may answer as soon as it fails. `room` counts the digits the
- * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
- * than any sentence holds, are not limited), then after a point the fraction digits, which leave
- * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
- * hex field, which takes no point, the width is used up: then a point ends the number as a second
- * point does, and either is malformed), and the value lacks the smaller of the two. */
+ * part being read may still take: a hex field's width of whole digits (a decimal field's, as many
+ * as a sentence has characters, are not limited: a field holds fewer, and room stays above the
+ * fraction digits), then after a point the fraction digits, which leave room of them missing. So
+ * a point has been read if room is at most the fraction digits (or, in a hex field, which takes no
+ * point, the width is used up: then a point ends the number as a second point does, and either is
+ * malformed), and the value lacks the smaller of the two: read as zero digits at the end. */
 static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, size_t k, ilahrs_pahr_t *out)
 {
     const pahr_field_t *f = &ilahrs_pahr_fields[k];
@@ -167,43 +170,42 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, s
     /* Every read of the field below the star (pahr_body() never starts one past it, but Frama-C's
      * EVA cannot tell: the separators it counted are what stop a field short of the star). */
     bool negative = base == 10u && q < star && *q == '-';
-    unsigned room = f->hex ? f->width : ~0u;
+    unsigned room = f->hex ? f->width : ILAHRS_PAHR_MAX_LENGTH;
     uint32_t m = 0;
     int32_t value;
-    for (part = q += negative; q < star; q++) {
-        unsigned c = *q;
+    for (part = q += negative;; q++) {
+        unsigned c = q < star ? *q : PAHR_SEPARATOR; /* the star ends the last field as a separator */
         unsigned d = c - '0';
         if (d > 9u) {
             d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
             if (d < 10u || d >= base) {
                 if (c != '.' || room <= f->decimals || q == part) {
-                    if (c != PAHR_SEPARATOR) {
+                    if (c != PAHR_SEPARATOR || q == part) {
                         return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
                     }
-                    break;
+                    /* The fraction digits missing, read as zeros (without a point, all of them),
+                     * the end read again after each. */
+                    room = room < f->decimals ? room : f->decimals;
+                    if (room == 0) {
+                        break;
+                    }
+                    d = 0;
+                    q--;
+                } else {
+                    part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
+                    room = f->decimals;
+                    continue;
                 }
-                part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
-                room = f->decimals;
-                continue;
             }
         }
-        if (room == 0) {
+        if (room-- == 0) {
             return ILAHRS_ERR_MALFORMED; /* a digit too many */
         }
-        room--;
         if (m < SATURATED) {
             m = m * base + d;
         }
     }
-    if (q == part) {
-        return ILAHRS_ERR_MALFORMED; /* no digit */
-    }
     *at = q;
-    for (room = room < f->decimals ? room : f->decimals; room != 0; room--) {
-        if (m < SATURATED) {
-            m *= 10u;
-        }
-    }
     value = negative ? -(int32_t)m : (int32_t)m;
     if (value < f->min || value > f->max) {
         return ILAHRS_ERR_OUT_OF_RANGE;
