@@ -2807,9 +2807,10 @@ typedef char
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search. `end` is the sentence length, CR LF its last two characters, and
- * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
+ * CR LF search. `end` is the sentence length, LF its last character (the stream decoder leaves the
+ * CR before it to this, with the star), and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK
+ * (0) or the first error in the order of spec/README.md as PAHR_ERROR(kind, field index or
+ * PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
@@ -2822,7 +2823,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    if (star < q || *star != PAHR_STAR) {
+    if (star < q || *star != PAHR_STAR || star[PAHR_TAIL - 2u] != PAHR_CR) {
         return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
     checksum = 0;
@@ -3221,8 +3222,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
             return INVALID;
         }
     }
-    seen = seen > i ? seen : i;
 #if FAST
+    seen = seen > i ? seen : i;
     {
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
@@ -3255,8 +3256,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
     }
 #endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
-     * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
+     * what ilahrs_pahr_parse() checks before pahr_body(), which checks the CR again. */
+    if (pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;

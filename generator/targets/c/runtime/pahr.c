@@ -348,9 +348,10 @@ typedef char
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search. `end` is the sentence length, CR LF its last two characters, and
- * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
+ * CR LF search. `end` is the sentence length, LF its last character (the stream decoder leaves the
+ * CR before it to this, with the star), and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK
+ * (0) or the first error in the order of spec/README.md as PAHR_ERROR(kind, field index or
+ * PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
@@ -363,7 +364,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    if (star < q || *star != PAHR_STAR) {
+    if (star < q || *star != PAHR_STAR || star[PAHR_TAIL - 2u] != PAHR_CR) {
         return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
     checksum = 0;

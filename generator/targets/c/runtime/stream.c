@@ -86,8 +86,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
             return INVALID;
         }
     }
-    seen = seen > i ? seen : i;
 #if FAST
+    seen = seen > i ? seen : i;
     {
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
@@ -120,8 +120,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
     }
 #endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
-     * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
+     * what ilahrs_pahr_parse() checks before pahr_body(), which checks the CR again. */
+    if (pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;
