@@ -3236,13 +3236,13 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
+#if FAST
     /* The prefix, as far as it goes (cut short, nothing follows it below, and it waits). */
     for (i = 1; i < PAHR_PREFIX_LENGTH && i < n; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
             return INVALID;
         }
     }
-#if FAST
     seen = seen > i ? seen : i;
     {
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
@@ -3258,11 +3258,16 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
 #else
-    /* Compiled for size, one loop: a byte before the LF that no sentence holds decides it now, as
-     * pahr_body() would at the LF (only "*", the checksum digits and CR stand outside the fields,
-     * and a field holds no such byte). */
-    for (i = seen; i < limit; i++) {
-        if (!printable(p[i])) {
+    /* Compiled for size, one loop, the prefix's bytes included (each examined again until the
+     * prefix is whole: ilahrs_stream_push() stores them unexamined): a byte before the LF that no
+     * sentence holds decides it now, as pahr_body() would at the LF (only "*", the checksum digits
+     * and CR stand outside the fields, and a field holds no such byte). */
+    for (i = seen < PAHR_PREFIX_LENGTH ? 1 : seen; i < limit; i++) {
+        if (i < PAHR_PREFIX_LENGTH) {
+            if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+                return INVALID;
+            }
+        } else if (!printable(p[i])) {
             if (p[i] == PAHR_LF) {
                 break;
             }
