@@ -2834,7 +2834,7 @@ typedef char
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
-    const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    const uint8_t *star = p + end - PAHR_TAIL; /* end > PAHR_PREFIX_LENGTH: an LF follows the prefix */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
 #if FAST
