@@ -1118,27 +1118,45 @@ static int32_t date_scaled(int year, int month, int day)
 }
 
 /* $PAHR (Table 6.7, section 6.2): one row per field: name, hex or decimal, template width, fraction digits,
- * struct member and its size, range (scaled); the member is signed when the range is. Magnitudes
- * saturate at SATURATED, above every range. */
+ * struct member and its size (where the rows hold them, below), range (scaled); the member is
+ * signed when the range is. Magnitudes saturate at SATURATED, above every range. */
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
-/* The size every member of ilahrs_pahr_t has, if they all have the same (else 0: each row's). */
-#define PAHR_MEMBER_SIZE                                                                        \
-    (sizeof(((ilahrs_pahr_t *)0)->pitch) == sizeof(((ilahrs_pahr_t *)0)->roll)                  \
-             && sizeof(((ilahrs_pahr_t *)0)->heading) == sizeof(((ilahrs_pahr_t *)0)->roll)     \
-             && sizeof(((ilahrs_pahr_t *)0)->temperature) == sizeof(((ilahrs_pahr_t *)0)->roll) \
-             && sizeof(((ilahrs_pahr_t *)0)->vdd) == sizeof(((ilahrs_pahr_t *)0)->roll)         \
-             && sizeof(((ilahrs_pahr_t *)0)->usw) == sizeof(((ilahrs_pahr_t *)0)->roll) && 1    \
-         ? sizeof(((ilahrs_pahr_t *)0)->roll)                                                   \
-         : 0u)
+#define PAHR_MAX_DECIMALS 2
+/* Every member of ilahrs_pahr_t has the same size, PAHR_MEMBER_SIZE, in the order of the fields:
+ * field k's lies at k times that size. Compiled for size (FAST 0, below), the rows then leave out
+ * member and size, which PAHR_MEMBER() and PAHR_SIZE() compute. */
+#define PAHR_MEMBER_SIZE sizeof(((ilahrs_pahr_t *)0)->roll)
+typedef char pahr_check_members[offsetof(ilahrs_pahr_t, pitch) == 1 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, heading) == 2 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, temperature) == 3 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, vdd) == 4 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, usw) == 5 * PAHR_MEMBER_SIZE
+                                        && sizeof(ilahrs_pahr_t) == 6 * PAHR_MEMBER_SIZE
+                                    ? 1
+                                    : -1];
+#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#define PAHR_ROW_MEMBERS 1
+#else
+#define PAHR_ROW_MEMBERS 0
+#endif
+#if PAHR_ROW_MEMBERS
+#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
+#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
+#else
+#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
+#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
+#endif
 typedef struct {
     uint8_t name;
     uint8_t hex;
     uint8_t width;
     uint8_t decimals;
+#if PAHR_ROW_MEMBERS
     uint8_t member;
     uint8_t size;
+#endif
     int16_t min;
     uint16_t max;
 } pahr_field_t;
@@ -1148,48 +1166,60 @@ static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
       .hex = 0,
       .width = 4,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, roll),
       .size = sizeof(((ilahrs_pahr_t *)0)->roll),
+#endif
       .min = (-18000),
       .max = 18000 },
     { .name = 5,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, pitch),
       .size = sizeof(((ilahrs_pahr_t *)0)->pitch),
+#endif
       .min = (-9000),
       .max = 9000 },
     { .name = 11,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, heading),
       .size = sizeof(((ilahrs_pahr_t *)0)->heading),
+#endif
       .min = 0,
       .max = 35999u },
     { .name = 19,
       .hex = 0,
       .width = 3,
       .decimals = 1,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, temperature),
       .size = sizeof(((ilahrs_pahr_t *)0)->temperature),
+#endif
       .min = (-999),
       .max = 9999 },
     { .name = 31,
       .hex = 0,
       .width = 1,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, vdd),
       .size = sizeof(((ilahrs_pahr_t *)0)->vdd),
+#endif
       .min = 0,
       .max = 999 },
     { .name = 35,
       .hex = 1,
       .width = 4,
       .decimals = 0,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, usw),
       .size = sizeof(((ilahrs_pahr_t *)0)->usw),
+#endif
       .min = 0,
       .max = 65535u },
 };
@@ -1691,6 +1721,18 @@ checksum_t ilahrs_checksum(const uint8_t *data, size_t len)
     return (checksum_t)sum_bytes(data, len);
 }
 
+/* frame_check()'s answer to an error: minus its kind. Compiled for size, each error's path only sets
+ * the kind, and one negation serves them all. */
+#if FAST
+#define FRAME_ERROR(k) return -(k)
+#else
+#define FRAME_ERROR(k) \
+    do {               \
+        kind = (k);    \
+        goto fail;     \
+    } while (0)
+#endif
+
 /*
  * The frame at the start of p[0..n): its size, with *frame filled; or minus the kind of the first
  * error (ilahrs_frame_parse() finds its offset). The checks of ilahrs_frame_parse(), in its order:
@@ -1700,37 +1742,45 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
     size_t at;
     size_t size;
+#if !FAST
+    int kind; /* of the error */
+#endif
     /*@ loop invariant at <= ILAHRS_FRAME_HEADER_SIZE && (at <= n || n == 0);
         loop assigns at; */
     for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
         if (p[at] != ilahrs_frame_header[at]) {
-            return -ILAHRS_ERR_BAD_HEADER;
+            FRAME_ERROR(ILAHRS_ERR_BAD_HEADER);
         }
     }
     if (n < ILAHRS_FRAME_PAYLOAD_OFFSET) {
-        return -ILAHRS_ERR_TRUNCATED;
+        FRAME_ERROR(ILAHRS_ERR_TRUNCATED);
     }
     if (!MESSAGE_TYPE_VALID(LE(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
-        return -ILAHRS_ERR_BAD_MESSAGE_TYPE;
+        FRAME_ERROR(ILAHRS_ERR_BAD_MESSAGE_TYPE);
     }
     size = LE(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
     //@ assert size + ILAHRS_FRAME_HEADER_SIZE == ilahrs_frame_size(p);
     if (size < ILAHRS_FRAME_MIN_LENGTH || size > ILAHRS_FRAME_MAX_LENGTH) {
-        return -ILAHRS_ERR_BAD_LENGTH;
+        FRAME_ERROR(ILAHRS_ERR_BAD_LENGTH);
     }
     size += ILAHRS_FRAME_HEADER_SIZE;
     if (n < size) {
-        return -ILAHRS_ERR_TRUNCATED;
+        FRAME_ERROR(ILAHRS_ERR_TRUNCATED);
     }
     at = size - ILAHRS_FRAME_CHECKSUM_SIZE;
     if ((checksum_t)sum_bytes(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
         != LE(p + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
-        return -ILAHRS_ERR_BAD_CHECKSUM;
+        FRAME_ERROR(ILAHRS_ERR_BAD_CHECKSUM);
     }
     frame_get_fields(frame, p);
     frame->payload = p + ILAHRS_FRAME_PAYLOAD_OFFSET;
     frame->payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
     return (int)size;
+#if !FAST
+fail:
+    OPAQUE(kind);
+    return -kind;
+#endif
 }
 
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)
@@ -2479,8 +2529,8 @@ uint32_t ilahrs_pahr_field_divisor(size_t index)
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
 {
-    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+    uint32_t bits = load_bits((const uint8_t *)in + PAHR_MEMBER(k), PAHR_SIZE(k));
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, PAHR_SIZE(k)) : (int32_t)bits;
 }
 
 int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
@@ -2579,66 +2629,67 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 #else
-/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
- * the characters already (*sum is left alone), reads *at only after a good field, and reports any
- * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
- * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
- * than any sentence holds, are not limited), then after a point the fraction digits, which leave
- * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
- * hex field, which takes no point, the width is used up: then a point ends the number as a second
- * point does, and either is malformed), and the value lacks the smaller of the two. */
-static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
-                                      ilahrs_pahr_t *out, unsigned *sum)
+/* (A field's digits leave room for more fraction digits than any field has.) */
+typedef char pahr_check_room[PAHR_MAX_DECIMALS < PAHR_PREFIX_LENGTH + PAHR_TAIL ? 1 : -1];
+/* Compiled for size, the same checks with the same answers in less code, for field k: pahr_body()
+ * has summed the characters already, reads *at only after a good field, and reports any bad one
+ * at its start, so a check may answer as soon as it fails. `room` counts the digits the
+ * part being read may still take: a hex field's width of whole digits (a decimal field's, as many
+ * as a sentence has characters, are not limited: a field holds fewer, and room stays above the
+ * fraction digits), then after a point the fraction digits, which leave room of them missing. So
+ * a point has been read if room is at most the fraction digits (or, in a hex field, which takes no
+ * point, the width is used up: then a point ends the number as a second point does, and either is
+ * malformed), and the value lacks the smaller of the two: read as zero digits at the end. */
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, size_t k, ilahrs_pahr_t *out)
 {
+    const pahr_field_t *f = &ilahrs_pahr_fields[k];
     const uint8_t *q = *at;
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
     /* Every read of the field below the star (pahr_body() never starts one past it, but Frama-C's
      * EVA cannot tell: the separators it counted are what stop a field short of the star). */
     bool negative = base == 10u && q < star && *q == '-';
-    unsigned room = f->hex ? f->width : ~0u;
+    unsigned room = f->hex ? f->width : ILAHRS_PAHR_MAX_LENGTH;
     uint32_t m = 0;
     int32_t value;
-    (void)sum;
-    for (part = q += negative; q < star; q++) {
-        unsigned c = *q;
+    for (part = q += negative;; q++) {
+        unsigned c = q < star ? *q : PAHR_SEPARATOR; /* the star ends the last field as a separator */
         unsigned d = c - '0';
         if (d > 9u) {
             d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
             if (d < 10u || d >= base) {
                 if (c != '.' || room <= f->decimals || q == part) {
-                    if (c != PAHR_SEPARATOR) {
+                    if (c != PAHR_SEPARATOR || q == part) {
                         return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
                     }
-                    break;
+                    /* The fraction digits missing, read as zeros (without a point, all of them),
+                     * the end read again after each. */
+                    room = room < f->decimals ? room : f->decimals;
+                    if (room == 0) {
+                        break;
+                    }
+                    d = 0;
+                    q--;
+                } else {
+                    part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
+                    room = f->decimals;
+                    continue;
                 }
-                part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
-                room = f->decimals;
-                continue;
             }
         }
-        if (room == 0) {
+        if (room-- == 0) {
             return ILAHRS_ERR_MALFORMED; /* a digit too many */
         }
-        room--;
         if (m < SATURATED) {
             m = m * base + d;
         }
     }
-    if (q == part) {
-        return ILAHRS_ERR_MALFORMED; /* no digit */
-    }
     *at = q;
-    for (room = room < f->decimals ? room : f->decimals; room != 0; room--) {
-        if (m < SATURATED) {
-            m *= 10u;
-        }
-    }
     value = negative ? -(int32_t)m : (int32_t)m;
     if (value < f->min || value > f->max) {
         return ILAHRS_ERR_OUT_OF_RANGE;
     }
-    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    store_bits((uint8_t *)out + PAHR_MEMBER(k), (uint32_t)value, PAHR_SIZE(k));
     return ILAHRS_OK;
 }
 #endif
@@ -2778,13 +2829,14 @@ typedef char
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search. `end` is the sentence length, CR LF its last two characters, and
- * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
+ * CR LF search. `end` is the sentence length, LF its last character (the stream decoder leaves the
+ * CR before it to this, with the star), and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK
+ * (0) or the first error in the order of spec/README.md as PAHR_ERROR(kind, field index or
+ * PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
-    const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    const uint8_t *star = p + end - PAHR_TAIL; /* end > PAHR_PREFIX_LENGTH: an LF follows the prefix */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
 #if FAST
@@ -2793,7 +2845,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    if (star < q || *star != PAHR_STAR) {
+    if (star < q || *star != PAHR_STAR || star[PAHR_TAIL - 2u] != PAHR_CR) {
         return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
     checksum = 0;
@@ -2866,7 +2918,7 @@ counted:
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        field_error = pahr_field(&q, star, k, out);
         if (field_error != ILAHRS_OK) {
             return PAHR_ERROR(field_error, k);
         }
@@ -3074,7 +3126,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
             goto out_of_range;
         }
-        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)&sentence + PAHR_MEMBER(k), (uint32_t)scaled, PAHR_SIZE(k));
     }
     *out = sentence;
     return true;
@@ -3186,6 +3238,7 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
+#if FAST
     /* The prefix, as far as it goes (cut short, nothing follows it below, and it waits). */
     for (i = 1; i < PAHR_PREFIX_LENGTH && i < n; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
@@ -3193,7 +3246,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
     }
     seen = seen > i ? seen : i;
-#if FAST
     {
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
@@ -3208,11 +3260,16 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
 #else
-    /* Compiled for size, one loop: a byte before the LF that no sentence holds decides it now, as
-     * pahr_body() would at the LF (only "*", the checksum digits and CR stand outside the fields,
-     * and a field holds no such byte). */
-    for (i = seen; i < limit; i++) {
-        if (!printable(p[i])) {
+    /* Compiled for size, one loop, the prefix's bytes included (each examined again until the
+     * prefix is whole: ilahrs_stream_push() stores them unexamined): a byte before the LF that no
+     * sentence holds decides it now, as pahr_body() would at the LF (only "*", the checksum digits
+     * and CR stand outside the fields, and a field holds no such byte). */
+    for (i = seen < PAHR_PREFIX_LENGTH ? 1 : seen; i < limit; i++) {
+        if (i < PAHR_PREFIX_LENGTH) {
+            if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+                return INVALID;
+            }
+        } else if (!printable(p[i])) {
             if (p[i] == PAHR_LF) {
                 break;
             }
@@ -3226,8 +3283,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
     }
 #endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
-     * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
+     * what ilahrs_pahr_parse() checks before pahr_body(), which checks the CR again. */
+    if (pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;

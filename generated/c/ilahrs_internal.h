@@ -1123,27 +1123,45 @@ static int32_t date_scaled(int year, int month, int day)
 }
 
 /* $PAHR (Table 6.7, section 6.2): one row per field: name, hex or decimal, template width, fraction digits,
- * struct member and its size, range (scaled); the member is signed when the range is. Magnitudes
- * saturate at SATURATED, above every range. */
+ * struct member and its size (where the rows hold them, below), range (scaled); the member is
+ * signed when the range is. Magnitudes saturate at SATURATED, above every range. */
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
-/* The size every member of ilahrs_pahr_t has, if they all have the same (else 0: each row's). */
-#define PAHR_MEMBER_SIZE                                                                        \
-    (sizeof(((ilahrs_pahr_t *)0)->pitch) == sizeof(((ilahrs_pahr_t *)0)->roll)                  \
-             && sizeof(((ilahrs_pahr_t *)0)->heading) == sizeof(((ilahrs_pahr_t *)0)->roll)     \
-             && sizeof(((ilahrs_pahr_t *)0)->temperature) == sizeof(((ilahrs_pahr_t *)0)->roll) \
-             && sizeof(((ilahrs_pahr_t *)0)->vdd) == sizeof(((ilahrs_pahr_t *)0)->roll)         \
-             && sizeof(((ilahrs_pahr_t *)0)->usw) == sizeof(((ilahrs_pahr_t *)0)->roll) && 1    \
-         ? sizeof(((ilahrs_pahr_t *)0)->roll)                                                   \
-         : 0u)
+#define PAHR_MAX_DECIMALS 2
+/* Every member of ilahrs_pahr_t has the same size, PAHR_MEMBER_SIZE, in the order of the fields:
+ * field k's lies at k times that size. Compiled for size (FAST 0, below), the rows then leave out
+ * member and size, which PAHR_MEMBER() and PAHR_SIZE() compute. */
+#define PAHR_MEMBER_SIZE sizeof(((ilahrs_pahr_t *)0)->roll)
+typedef char pahr_check_members[offsetof(ilahrs_pahr_t, pitch) == 1 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, heading) == 2 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, temperature) == 3 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, vdd) == 4 * PAHR_MEMBER_SIZE
+                                        && offsetof(ilahrs_pahr_t, usw) == 5 * PAHR_MEMBER_SIZE
+                                        && sizeof(ilahrs_pahr_t) == 6 * PAHR_MEMBER_SIZE
+                                    ? 1
+                                    : -1];
+#if defined(__OPTIMIZE__) && !defined(__OPTIMIZE_SIZE__)
+#define PAHR_ROW_MEMBERS 1
+#else
+#define PAHR_ROW_MEMBERS 0
+#endif
+#if PAHR_ROW_MEMBERS
+#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
+#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
+#else
+#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
+#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
+#endif
 typedef struct {
     uint8_t name;
     uint8_t hex;
     uint8_t width;
     uint8_t decimals;
+#if PAHR_ROW_MEMBERS
     uint8_t member;
     uint8_t size;
+#endif
     int16_t min;
     uint16_t max;
 } pahr_field_t;
@@ -1153,48 +1171,60 @@ static const pahr_field_t ilahrs_pahr_fields[ILAHRS_PAHR_FIELD_COUNT] = {
       .hex = 0,
       .width = 4,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, roll),
       .size = sizeof(((ilahrs_pahr_t *)0)->roll),
+#endif
       .min = (-18000),
       .max = 18000 },
     { .name = 5,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, pitch),
       .size = sizeof(((ilahrs_pahr_t *)0)->pitch),
+#endif
       .min = (-9000),
       .max = 9000 },
     { .name = 11,
       .hex = 0,
       .width = 3,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, heading),
       .size = sizeof(((ilahrs_pahr_t *)0)->heading),
+#endif
       .min = 0,
       .max = 35999u },
     { .name = 19,
       .hex = 0,
       .width = 3,
       .decimals = 1,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, temperature),
       .size = sizeof(((ilahrs_pahr_t *)0)->temperature),
+#endif
       .min = (-999),
       .max = 9999 },
     { .name = 31,
       .hex = 0,
       .width = 1,
       .decimals = 2,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, vdd),
       .size = sizeof(((ilahrs_pahr_t *)0)->vdd),
+#endif
       .min = 0,
       .max = 999 },
     { .name = 35,
       .hex = 1,
       .width = 4,
       .decimals = 0,
+#if PAHR_ROW_MEMBERS
       .member = offsetof(ilahrs_pahr_t, usw),
       .size = sizeof(((ilahrs_pahr_t *)0)->usw),
+#endif
       .min = 0,
       .max = 65535u },
 };

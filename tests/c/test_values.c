@@ -132,7 +132,7 @@ static bool ref_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], il
         }
     }
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        store_bits((uint8_t *)out + ilahrs_pahr_fields[k].member, (uint32_t)(int32_t)scaled[k], ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)out + PAHR_MEMBER(k), (uint32_t)(int32_t)scaled[k], PAHR_SIZE(k));
     }
     return true;
 }

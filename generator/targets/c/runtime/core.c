@@ -265,6 +265,18 @@ checksum_t ilahrs_checksum(const uint8_t *data, size_t len)
     return (checksum_t)sum_bytes(data, len);
 }
 
+/* frame_check()'s answer to an error: minus its kind. Compiled for size, each error's path only sets
+ * the kind, and one negation serves them all. */
+#if FAST
+#define FRAME_ERROR(k) return -(k)
+#else
+#define FRAME_ERROR(k) \
+    do {               \
+        kind = (k);    \
+        goto fail;     \
+    } while (0)
+#endif
+
 /*
  * The frame at the start of p[0..n): its size, with *frame filled; or minus the kind of the first
  * error (ilahrs_frame_parse() finds its offset). The checks of ilahrs_frame_parse(), in its order:
@@ -274,37 +286,45 @@ static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame)
 {
     size_t at;
     size_t size;
+#if !FAST
+    int kind; /* of the error */
+#endif
     /*@ loop invariant at <= ILAHRS_FRAME_HEADER_SIZE && (at <= n || n == 0);
         loop assigns at; */
     for (at = 0; at < ILAHRS_FRAME_HEADER_SIZE && at < n; at++) {
         if (p[at] != ilahrs_frame_header[at]) {
-            return -ILAHRS_ERR_BAD_HEADER;
+            FRAME_ERROR(ILAHRS_ERR_BAD_HEADER);
         }
     }
     if (n < ILAHRS_FRAME_PAYLOAD_OFFSET) {
-        return -ILAHRS_ERR_TRUNCATED;
+        FRAME_ERROR(ILAHRS_ERR_TRUNCATED);
     }
     if (!MESSAGE_TYPE_VALID(LE(p + ILAHRS_FRAME_MESSAGE_TYPE_OFFSET, ILAHRS_FRAME_MESSAGE_TYPE_SIZE))) {
-        return -ILAHRS_ERR_BAD_MESSAGE_TYPE;
+        FRAME_ERROR(ILAHRS_ERR_BAD_MESSAGE_TYPE);
     }
     size = LE(p + ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET, ILAHRS_FRAME_MESSAGE_LENGTH_SIZE);
     //@ assert size + ILAHRS_FRAME_HEADER_SIZE == ilahrs_frame_size(p);
     if (size < ILAHRS_FRAME_MIN_LENGTH || size > ILAHRS_FRAME_MAX_LENGTH) {
-        return -ILAHRS_ERR_BAD_LENGTH;
+        FRAME_ERROR(ILAHRS_ERR_BAD_LENGTH);
     }
     size += ILAHRS_FRAME_HEADER_SIZE;
     if (n < size) {
-        return -ILAHRS_ERR_TRUNCATED;
+        FRAME_ERROR(ILAHRS_ERR_TRUNCATED);
     }
     at = size - ILAHRS_FRAME_CHECKSUM_SIZE;
     if ((checksum_t)sum_bytes(p + ILAHRS_FRAME_HEADER_SIZE, at - ILAHRS_FRAME_HEADER_SIZE)
         != LE(p + at, ILAHRS_FRAME_CHECKSUM_SIZE)) {
-        return -ILAHRS_ERR_BAD_CHECKSUM;
+        FRAME_ERROR(ILAHRS_ERR_BAD_CHECKSUM);
     }
     frame_get_fields(frame, p);
     frame->payload = p + ILAHRS_FRAME_PAYLOAD_OFFSET;
     frame->payload_size = at - ILAHRS_FRAME_PAYLOAD_OFFSET;
     return (int)size;
+#if !FAST
+fail:
+    OPAQUE(kind);
+    return -kind;
+#endif
 }
 
 bool ilahrs_frame_parse(const uint8_t *data, size_t len, ilahrs_frame_t *frame, ilahrs_error_t *err)

@@ -50,8 +50,8 @@ uint32_t ilahrs_pahr_field_divisor(size_t index)
 
 static int32_t pahr_get(const ilahrs_pahr_t *in, size_t k)
 {
-    uint32_t bits = load_bits((const uint8_t *)in + ilahrs_pahr_fields[k].member, ilahrs_pahr_fields[k].size);
-    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, ilahrs_pahr_fields[k].size) : (int32_t)bits;
+    uint32_t bits = load_bits((const uint8_t *)in + PAHR_MEMBER(k), PAHR_SIZE(k));
+    return ilahrs_pahr_fields[k].min < 0 ? sign_extend(bits, PAHR_SIZE(k)) : (int32_t)bits;
 }
 
 int32_t ilahrs_pahr_field_get(const ilahrs_pahr_t *sentence, size_t index)
@@ -150,66 +150,67 @@ static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, c
     return ILAHRS_OK;
 }
 #else
-/* Compiled for size, the same checks with the same answers in less code: pahr_body() has summed
- * the characters already (*sum is left alone), reads *at only after a good field, and reports any
- * bad one at its start, so a check may answer as soon as it fails. `room` counts the digits the
- * part being read may still take: a hex field's width of whole digits (a decimal field's, far more
- * than any sentence holds, are not limited), then after a point the fraction digits, which leave
- * room of them missing. So a point has been read if room is at most the fraction digits (or, in a
- * hex field, which takes no point, the width is used up: then a point ends the number as a second
- * point does, and either is malformed), and the value lacks the smaller of the two. */
-static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, const pahr_field_t *f,
-                                      ilahrs_pahr_t *out, unsigned *sum)
+/* (A field's digits leave room for more fraction digits than any field has.) */
+typedef char pahr_check_room[PAHR_MAX_DECIMALS < PAHR_PREFIX_LENGTH + PAHR_TAIL ? 1 : -1];
+/* Compiled for size, the same checks with the same answers in less code, for field k: pahr_body()
+ * has summed the characters already, reads *at only after a good field, and reports any bad one
+ * at its start, so a check may answer as soon as it fails. `room` counts the digits the
+ * part being read may still take: a hex field's width of whole digits (a decimal field's, as many
+ * as a sentence has characters, are not limited: a field holds fewer, and room stays above the
+ * fraction digits), then after a point the fraction digits, which leave room of them missing. So
+ * a point has been read if room is at most the fraction digits (or, in a hex field, which takes no
+ * point, the width is used up: then a point ends the number as a second point does, and either is
+ * malformed), and the value lacks the smaller of the two: read as zero digits at the end. */
+static ilahrs_error_kind_t pahr_field(const uint8_t **at, const uint8_t *star, size_t k, ilahrs_pahr_t *out)
 {
+    const pahr_field_t *f = &ilahrs_pahr_fields[k];
     const uint8_t *q = *at;
     const uint8_t *part; /* the first digit of the part being read: whole, then fraction */
     unsigned base = f->hex ? 16u : 10u;
     /* Every read of the field below the star (pahr_body() never starts one past it, but Frama-C's
      * EVA cannot tell: the separators it counted are what stop a field short of the star). */
     bool negative = base == 10u && q < star && *q == '-';
-    unsigned room = f->hex ? f->width : ~0u;
+    unsigned room = f->hex ? f->width : ILAHRS_PAHR_MAX_LENGTH;
     uint32_t m = 0;
     int32_t value;
-    (void)sum;
-    for (part = q += negative; q < star; q++) {
-        unsigned c = *q;
+    for (part = q += negative;; q++) {
+        unsigned c = q < star ? *q : PAHR_SEPARATOR; /* the star ends the last field as a separator */
         unsigned d = c - '0';
         if (d > 9u) {
             d = (c | 0x20u) - ('a' - 10u); /* a hex letter, either case: 10..15 */
             if (d < 10u || d >= base) {
                 if (c != '.' || room <= f->decimals || q == part) {
-                    if (c != PAHR_SEPARATOR) {
+                    if (c != PAHR_SEPARATOR || q == part) {
                         return ILAHRS_ERR_MALFORMED; /* the number ends at a separator or at the star */
                     }
-                    break;
+                    /* The fraction digits missing, read as zeros (without a point, all of them),
+                     * the end read again after each. */
+                    room = room < f->decimals ? room : f->decimals;
+                    if (room == 0) {
+                        break;
+                    }
+                    d = 0;
+                    q--;
+                } else {
+                    part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
+                    room = f->decimals;
+                    continue;
                 }
-                part = q + 1; /* in a hex field, a point is followed by a fraction it cannot have */
-                room = f->decimals;
-                continue;
             }
         }
-        if (room == 0) {
+        if (room-- == 0) {
             return ILAHRS_ERR_MALFORMED; /* a digit too many */
         }
-        room--;
         if (m < SATURATED) {
             m = m * base + d;
         }
     }
-    if (q == part) {
-        return ILAHRS_ERR_MALFORMED; /* no digit */
-    }
     *at = q;
-    for (room = room < f->decimals ? room : f->decimals; room != 0; room--) {
-        if (m < SATURATED) {
-            m *= 10u;
-        }
-    }
     value = negative ? -(int32_t)m : (int32_t)m;
     if (value < f->min || value > f->max) {
         return ILAHRS_ERR_OUT_OF_RANGE;
     }
-    store_bits((uint8_t *)out + f->member, (uint32_t)value, PAHR_MEMBER_SIZE != 0 ? PAHR_MEMBER_SIZE : f->size);
+    store_bits((uint8_t *)out + PAHR_MEMBER(k), (uint32_t)value, PAHR_SIZE(k));
     return ILAHRS_OK;
 }
 #endif
@@ -349,13 +350,14 @@ typedef char
 
 /*
  * The sentence scanner, for ilahrs_pahr_parse() and the stream decoder alike: everything after the
- * CR LF search. `end` is the sentence length, CR LF its last two characters, and
- * p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK (0) or the first error in the order of
- * spec/README.md as PAHR_ERROR(kind, field index or PAHR_AT_*).
+ * CR LF search. `end` is the sentence length, LF its last character (the stream decoder leaves the
+ * CR before it to this, with the star), and p[0..PAHR_PREFIX_LENGTH) the prefix. Returns ILAHRS_OK
+ * (0) or the first error in the order of spec/README.md as PAHR_ERROR(kind, field index or
+ * PAHR_AT_*).
  */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
 {
-    const uint8_t *star = p + end - PAHR_TAIL; /* end >= PAHR_PREFIX_LENGTH + 2 */
+    const uint8_t *star = p + end - PAHR_TAIL; /* end > PAHR_PREFIX_LENGTH: an LF follows the prefix */
     const uint8_t *q = p + PAHR_PREFIX_LENGTH;
     size_t k = 0;
 #if FAST
@@ -364,7 +366,7 @@ static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out)
     ilahrs_error_kind_t field_error = ILAHRS_OK;
     unsigned checksum;
     unsigned sum = 0;
-    if (star < q || *star != PAHR_STAR) {
+    if (star < q || *star != PAHR_STAR || star[PAHR_TAIL - 2u] != PAHR_CR) {
         return PAHR_ERROR(ILAHRS_ERR_MALFORMED, PAHR_AT_STAR);
     }
     checksum = 0;
@@ -437,7 +439,7 @@ counted:
     /* Each field but the last ends at a separator (as many as fields follow it), or is bad. */
     q = p + PAHR_PREFIX_LENGTH;
     for (k = 0; k < ILAHRS_PAHR_FIELD_COUNT; k++) {
-        field_error = pahr_field(&q, star, &ilahrs_pahr_fields[k], out, &sum);
+        field_error = pahr_field(&q, star, k, out);
         if (field_error != ILAHRS_OK) {
             return PAHR_ERROR(field_error, k);
         }
@@ -645,7 +647,7 @@ bool ilahrs_pahr_from_array(const double values[ILAHRS_PAHR_FIELD_COUNT], ilahrs
         if (scaled < ilahrs_pahr_fields[k].min || scaled > ilahrs_pahr_fields[k].max) {
             goto out_of_range;
         }
-        store_bits((uint8_t *)&sentence + ilahrs_pahr_fields[k].member, (uint32_t)scaled, ilahrs_pahr_fields[k].size);
+        store_bits((uint8_t *)&sentence + PAHR_MEMBER(k), (uint32_t)scaled, PAHR_SIZE(k));
     }
     *out = sentence;
     return true;

@@ -80,6 +80,7 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
 {
     size_t limit = n < ILAHRS_PAHR_MAX_LENGTH ? n : ILAHRS_PAHR_MAX_LENGTH;
     size_t i;
+#if FAST
     /* The prefix, as far as it goes (cut short, nothing follows it below, and it waits). */
     for (i = 1; i < PAHR_PREFIX_LENGTH && i < n; i++) {
         if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
@@ -87,7 +88,6 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         }
     }
     seen = seen > i ? seen : i;
-#if FAST
     {
         const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
@@ -102,11 +102,16 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
         return n < ILAHRS_PAHR_MAX_LENGTH ? NEED_MORE : INVALID;
     }
 #else
-    /* Compiled for size, one loop: a byte before the LF that no sentence holds decides it now, as
-     * pahr_body() would at the LF (only "*", the checksum digits and CR stand outside the fields,
-     * and a field holds no such byte). */
-    for (i = seen; i < limit; i++) {
-        if (!printable(p[i])) {
+    /* Compiled for size, one loop, the prefix's bytes included (each examined again until the
+     * prefix is whole: ilahrs_stream_push() stores them unexamined): a byte before the LF that no
+     * sentence holds decides it now, as pahr_body() would at the LF (only "*", the checksum digits
+     * and CR stand outside the fields, and a field holds no such byte). */
+    for (i = seen < PAHR_PREFIX_LENGTH ? 1 : seen; i < limit; i++) {
+        if (i < PAHR_PREFIX_LENGTH) {
+            if (p[i] != (uint8_t)PAHR_PREFIX[i]) {
+                return INVALID;
+            }
+        } else if (!printable(p[i])) {
             if (p[i] == PAHR_LF) {
                 break;
             }
@@ -120,8 +125,8 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
     }
 #endif
     /* The first LF ends the candidate, so the only CR LF it can hold is its last two characters:
-     * what ilahrs_pahr_parse() checks before pahr_body(). */
-    if (p[i - 1] != PAHR_CR || pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
+     * what ilahrs_pahr_parse() checks before pahr_body(), which checks the CR again. */
+    if (pahr_body(p, i + 1, &msg->sentence) != ILAHRS_OK) {
         return INVALID;
     }
     msg->kind = ILAHRS_MESSAGE_SENTENCE;
