@@ -89,7 +89,10 @@ static int sentence_candidate(const uint8_t *p, size_t n, size_t seen, ilahrs_me
     }
     seen = seen > i ? seen : i;
     {
-        const uint8_t *lf = seen < limit ? (const uint8_t *)memchr(p + seen, PAHR_LF, limit - seen) : NULL;
+        /* The LF searched for from the prefix's end, bytes examined before too (they hold none):
+         * a few steps of memchr(), and where the search starts is then known from n alone, which
+         * Frama-C's EVA needs to bound it. */
+        const uint8_t *lf = i < limit ? (const uint8_t *)memchr(p + i, PAHR_LF, limit - i) : NULL;
         i = lf != NULL ? (size_t)(lf - p) : limit;
     }
     /* (i is at most limit; ">=" also holds an analysis that loses that bound to the bytes before it.) */
