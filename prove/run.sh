@@ -55,14 +55,20 @@ export -f run_one
 export out here root FRAMA_C
 export eva_s="${eva[*]}" wp_s="${wp[*]}"
 
-# WP's provers are registered with Why3 once (`why3 config detect`).
-if grep -q '^[^#]*\bwp\b' "$here/drivers" && [ ! -f "$HOME/.why3.conf" ]; then
-  why3 config detect >/dev/null
-fi
 lines=$(grep -v '^\s*\(#\|$\)' "$here/drivers")
 if [ "$#" -gt 0 ]; then
   pick=$(printf '%s\n' "$@")
   lines=$(printf '%s\n' "$lines" | awk 'NR==FNR { want[$1]; next } $1 in want' <(echo "$pick") -)
+  for name in "$@"; do
+    if ! printf '%s\n' "$lines" | awk -v n="$name" '$1 == n { found = 1 } END { exit !found }'; then
+      echo "prove/run.sh: no analysis named $name in prove/drivers" >&2
+      exit 2
+    fi
+  done
+fi
+# WP's provers are registered with Why3 once (`why3 config detect`).
+if printf '%s\n' "$lines" | awk '$2 == "wp" { found = 1 } END { exit !found }' && [ ! -f "$HOME/.why3.conf" ]; then
+  why3 config detect >/dev/null
 fi
 all_start=$(date +%s)
 printf '%s\n' "$lines" | xargs -P "${PROVE_JOBS:-2}" -L 1 bash -c \
