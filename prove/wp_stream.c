@@ -10,7 +10,7 @@
 #include "contracts.h"
 
 /*@ requires \valid_read(p + (0 .. end - 1));
-    requires 8 <= end; // PAHR_PREFIX_LENGTH + 2, as ilahrs_pahr_parse() calls it
+    requires 7 <= end; // PAHR_PREFIX_LENGTH + 1: the prefix and an LF, as the stream decoder calls it
     requires \valid(out);
     assigns *out; */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out);
