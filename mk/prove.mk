@@ -22,7 +22,7 @@ TEST_TARGETS += test-prove
 
 # Frama-C alone (EVA), for the quick lines; setup-prove adds WP's provers.
 setup-frama-c:
-	@command -v frama-c >/dev/null || tools/need --tool frama-c frama-c-base
+	@command -v frama-c >/dev/null || tools/need --tool frama-c --no-recommends frama-c-base
 
 setup-prove: setup-frama-c
 	@command -v why3 >/dev/null && command -v z3 >/dev/null && command -v cvc4 >/dev/null \
