@@ -1118,15 +1118,14 @@ static int32_t date_scaled(int year, int month, int day)
 }
 
 /* $PAHR (Table 6.7, section 6.2): one row per field: name, hex or decimal, template width, fraction digits,
- * struct member and its size (where the rows hold them, below), range (scaled); the member is
- * signed when the range is. Magnitudes saturate at SATURATED, above every range. */
+ * struct member and its size (PAHR_ROW_MEMBERS), range (scaled); the member is signed when the range
+ * is. Magnitudes saturate at SATURATED, above every range. */
 #define PAHR_PREFIX "$PAHR,"
 #define SATURATED 0x01000000u
 #define PAHR_HEX_FIELDS 1
 #define PAHR_MAX_DECIMALS 2
-/* Every member of ilahrs_pahr_t has the same size, PAHR_MEMBER_SIZE, in the order of the fields:
- * field k's lies at k times that size. Compiled for size (FAST 0, below), the rows then leave out
- * member and size, which PAHR_MEMBER() and PAHR_SIZE() compute. */
+/* Every member of ilahrs_pahr_t has the same size, in the order of the fields: compiled for size,
+ * the rows leave out member and size (pahr.c: PAHR_MEMBER()). */
 #define PAHR_MEMBER_SIZE sizeof(((ilahrs_pahr_t *)0)->roll)
 typedef char pahr_check_members[offsetof(ilahrs_pahr_t, pitch) == 1 * PAHR_MEMBER_SIZE
                                         && offsetof(ilahrs_pahr_t, heading) == 2 * PAHR_MEMBER_SIZE
@@ -1140,13 +1139,6 @@ typedef char pahr_check_members[offsetof(ilahrs_pahr_t, pitch) == 1 * PAHR_MEMBE
 #define PAHR_ROW_MEMBERS 1
 #else
 #define PAHR_ROW_MEMBERS 0
-#endif
-#if PAHR_ROW_MEMBERS
-#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
-#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
-#else
-#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
-#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
 #endif
 typedef struct {
     uint8_t name;
@@ -2493,6 +2485,17 @@ bool ilahrs_field_check(const ilahrs_field_info_t *field, double value, ilahrs_e
 #define PAHR_PREFIX_LENGTH (sizeof PAHR_PREFIX - 1u)
 #define PAHR_TAIL 5u                /* "*", two checksum digits, CR, LF */
 #define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
+
+/* Field k's struct member (its offset) and its size: from its row, or, where the rows leave them
+ * out (every member the same size, PAHR_MEMBER_SIZE, in the order of the fields; compiled for
+ * size), from k. */
+#if PAHR_ROW_MEMBERS
+#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
+#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
+#else
+#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
+#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
+#endif
 
 /* 10^decimals of field k. */
 static uint32_t pahr_divisor(size_t k)

@@ -15,6 +15,17 @@
 #define PAHR_TAIL 5u                /* "*", two checksum digits, CR, LF */
 #define PAHR_HUGE 10000000000000ull /* magnitudes saturate here: above every 32-bit range */
 
+/* Field k's struct member (its offset) and its size: from its row, or, where the rows leave them
+ * out (every member the same size, PAHR_MEMBER_SIZE, in the order of the fields; compiled for
+ * size), from k. */
+#if PAHR_ROW_MEMBERS
+#define PAHR_MEMBER(k) ilahrs_pahr_fields[k].member
+#define PAHR_SIZE(k) ilahrs_pahr_fields[k].size
+#else
+#define PAHR_MEMBER(k) ((size_t)(k) * PAHR_MEMBER_SIZE)
+#define PAHR_SIZE(k) PAHR_MEMBER_SIZE
+#endif
+
 /* 10^decimals of field k. */
 static uint32_t pahr_divisor(size_t k)
 {
