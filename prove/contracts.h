@@ -1,6 +1,7 @@
-/* ACSL shared by the WP proofs: the frame check's contract (proved by prove/wp_frame.c, used by
- * prove/wp_stream.c for the stream decoder's calls), and where the stream decoder's bytes lie (its
- * invariant, ilahrs_held_ok(), is in ilahrs.h). */
+/* ACSL shared by the proofs: the frame check's contract (proved by prove/wp_frame.c, used by
+ * prove/wp_stream.c for the stream decoder's calls), pahr_body()'s (met by the stream decoder's
+ * calls: prove/stream_sentence.c), and where the stream decoder's bytes lie (its invariant,
+ * ilahrs_held_ok(), is in ilahrs.h). */
 #ifndef PROVE_CONTRACTS_H
 #define PROVE_CONTRACTS_H
 #include <stdint.h>
@@ -22,4 +23,13 @@
     ensures \result == -ILAHRS_ERR_TRUNCATED && n >= ILAHRS_FRAME_PAYLOAD_OFFSET
             ==> n < ilahrs_frame_size(p) <= ILAHRS_FRAME_MAX_SIZE; */
 static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame);
+
+/* What the stream decoder's calls of pahr_body() meet (prove/stream_sentence.c shows it, and
+ * stream_sentence-quick takes the body from this contract). */
+/*@ requires \valid_read(p + (0 .. end - 1));
+    requires 7 <= end; // PAHR_PREFIX_LENGTH + 1: the prefix and an LF, as the stream decoder calls it
+    requires \valid(out);
+    assigns *out \from p[0 .. end - 1];
+    assigns \result \from p[0 .. end - 1]; */
+static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out);
 #endif

@@ -2,18 +2,12 @@
  * input, for any input cut anywhere, strict or lenient, and keeps the invariant of its state
  * (held_ok below), with every runtime error ruled out (-wp-rte). The contracts are on prototypes of
  * ilahrs.c's static functions, which this file then includes; the loop invariants are in the runtime
- * sources. frame_check() is proved against its contract by prove/wp_frame.c; pahr_body() is free of
- * runtime errors by EVA (prove/pahr_parse.c, called as ilahrs_pahr_parse() calls it). Run by
- * `make prove-wp`. */
+ * sources. frame_check() is proved against its contract by prove/wp_frame.c; pahr_body() (in
+ * contracts.h too) is free of runtime errors by EVA as the stream decoder calls it
+ * (prove/stream_sentence.c). Run by `make prove-wp`. */
 #include <stdint.h>
 #include "ilahrs.h"
 #include "contracts.h"
-
-/*@ requires \valid_read(p + (0 .. end - 1));
-    requires 7 <= end; // PAHR_PREFIX_LENGTH + 1: the prefix and an LF, as the stream decoder calls it
-    requires \valid(out);
-    assigns *out; */
-static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out);
 
 /*@ requires \valid(dst + (0 .. n - 1)) && \valid_read(src + (0 .. n - 1));
     requires \separated(dst + (0 .. n - 1), src + (0 .. n - 1))
