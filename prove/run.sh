@@ -11,10 +11,18 @@
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
+if [ "$#" -eq 0 ]; then
+  echo "usage: prove/run.sh OUT [NAME...]   (the names: the first column of prove/drivers)" >&2
+  exit 2
+fi
 out=$1
 shift
-mkdir -p "$out"
 FRAMA_C=${FRAMA_C:-frama-c}
+if ! command -v "$FRAMA_C" >/dev/null; then
+  echo "prove/run.sh: $FRAMA_C is not installed; \`make prove\` installs it (README.md: prerequisites)" >&2
+  exit 2
+fi
+mkdir -p "$out"
 # The options every EVA analysis shares, and every WP proof (prove/README.md says why).
 eva=(-eva -eva-precision 3 -eva-split-return auto -eva-split-limit 1000 -eva-warn-undefined-pointer-comparison none -eva-no-print -eva-no-show-progress)
 wp=(-wp -wp-rte -wp-prover qed,z3,cvc4 -wp-timeout "${PROVE_WP_TIMEOUT:-60}" -wp-par 2 -wp-auto wp:bitshift)

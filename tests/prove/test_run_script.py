@@ -18,8 +18,9 @@ RUN = ROOT / "prove" / "run.sh"
 # Answers as Frama-C: EVA's summary line, or WP's with the goals PROVED of 3 proved, each of
 # RESULTS (name=verdict) written to the -wp-cache-dir when the mode writes (rebuild).
 FAKE = r"""#!/usr/bin/env bash
-printf '%s\n' "$@" > "$FAKE_ARGS.$$"
-{ cat "$FAKE_ARGS.$$"; echo --; } >> "$FAKE_ARGS"
+call="$FAKE_ARGS/$(date +%s%N)-$$"
+mkdir -p "$FAKE_ARGS"
+printf '%s\n' "$@" > "$call"
 mode= dir=
 while [ "$#" -gt 0 ]; do
   case "$1" in
@@ -28,7 +29,7 @@ while [ "$#" -gt 0 ]; do
   esac
   shift
 done
-if grep -qx -- -wp "$FAKE_ARGS.$$"; then
+if grep -qx -- -wp "$call"; then
   if [ "$mode" = rebuild ]; then
     for r in $RESULTS; do
       printf '{ "prover": "Z3:4.8.12", "verdict": "%s", "time": %s }\n' "${r#*=}" "$RANDOM" > "$dir/${r%%=*}.json"
@@ -67,9 +68,11 @@ def run(env: dict[str, str], tmp_path: Path, *args: str) -> subprocess.Completed
 
 def calls(tmp_path: Path) -> list[list[str]]:
     """The options of each call to Frama-C since the last, oldest first."""
-    text = (tmp_path / "args").read_text()
-    (tmp_path / "args").unlink()
-    return [c.strip("\n").split("\n") for c in text.split("--\n") if c.strip()]
+    files = sorted((tmp_path / "args").iterdir())
+    found = [f.read_text().splitlines() for f in files]
+    for f in files:
+        f.unlink()
+    return found
 
 
 def args(tmp_path: Path) -> list[str]:
@@ -158,6 +161,11 @@ def test_a_line_s_options_go_to_the_preprocessor_or_to_frama_c(env: dict[str, st
     [
         ({}, ["nosuch"], "prove/run.sh: no analysis named nosuch in prove/drivers"),
         (
+            {"FRAMA_C": "no-such-frama-c"},
+            ["wp_frame"],
+            "prove/run.sh: no-such-frama-c is not installed; `make prove` installs it (README.md: prerequisites)",
+        ),
+        (
             {"PROVE_WP_CACHE": "bogus"},
             ["wp_frame"],
             "prove/run.sh: PROVE_WP_CACHE is record, replay or none, not bogus",
@@ -182,3 +190,9 @@ def test_the_kept_results_are_results() -> None:
         for f in files:
             # Frama-C writes a time as "60.", which JSON does not read: the verdict is what counts.
             assert re.search(r'"verdict": "(valid|unknown|timeout|stepout|failed)"', f.read_text()), f
+
+
+def test_without_arguments_it_says_how_to_call_it() -> None:
+    result = subprocess.run([str(RUN)], check=False, capture_output=True, text=True, timeout=60)
+    assert result.returncode == 2
+    assert result.stderr == "usage: prove/run.sh OUT [NAME...]   (the names: the first column of prove/drivers)\n"
