@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import os
 import re
+import signal
 import subprocess
+import time
 from pathlib import Path
 
 import pytest
@@ -21,6 +23,10 @@ FAKE = r"""#!/usr/bin/env bash
 call="$FAKE_ARGS/$(date +%s%N)-$$"
 mkdir -p "$FAKE_ARGS"
 printf '%s\n' "$@" > "$call"
+if [ -n "${FAKE_SLEEP:-}" ]; then
+  echo $$ > "$call.pid"
+  exec sleep "$FAKE_SLEEP"
+fi
 mode= dir=
 while [ "$#" -gt 0 ]; do
   case "$1" in
@@ -68,7 +74,7 @@ def run(env: dict[str, str], tmp_path: Path, *args: str) -> subprocess.Completed
 
 def calls(tmp_path: Path) -> list[list[str]]:
     """The options of each call to Frama-C since the last, oldest first."""
-    files = sorted((tmp_path / "args").iterdir())
+    files = sorted(f for f in (tmp_path / "args").iterdir() if f.suffix != ".pid")
     found = [f.read_text().splitlines() for f in files]
     for f in files:
         f.unlink()
@@ -196,3 +202,34 @@ def test_without_arguments_it_says_how_to_call_it() -> None:
     result = subprocess.run([str(RUN)], check=False, capture_output=True, text=True, timeout=60)
     assert result.returncode == 2
     assert result.stderr == "usage: prove/run.sh OUT [NAME...]   (the names: the first column of prove/drivers)\n"
+
+
+def test_term_stops_every_analysis_and_starts_no_other(env: dict[str, str], tmp_path: Path) -> None:
+    """Frama-C runs under timeout(1), in a process group of its own that a Ctrl-C or a TERM to the
+    script does not reach: the script stops each one itself, and xargs starts no further line."""
+    env["FAKE_SLEEP"] = "60"
+    (tmp_path / ".why3.conf").touch()
+    run_sh = subprocess.Popen(
+        [str(RUN), str(tmp_path / "out"), "frame_parse", "payload_parse", "command_decode"],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    deadline = time.monotonic() + 30
+    while len(list(tmp_path.glob("args/*.pid"))) < 2:
+        assert time.monotonic() < deadline, "the two first analyses did not start"
+        time.sleep(0.1)
+    run_sh.send_signal(signal.SIGTERM)
+    _out, err = run_sh.communicate(timeout=30)
+    assert run_sh.returncode == 130
+    assert err.strip() == "prove: stopped"
+    started = list((tmp_path / "args").glob("*.pid"))
+    assert len(started) == 2  # the third line never started
+    for pid_file in started:
+        pid = int(pid_file.read_text())
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            continue
+        raise AssertionError(f"Frama-C's stand-in {pid} still runs")
