@@ -13,7 +13,7 @@
         && p + n <= &s->held[0] + ILAHRS_MAX_MESSAGE_SIZE;
 */
 
-/*@ requires \valid_read(p + (0 .. n - 1));
+/*@ requires \valid_read(p + (0 .. n - 1)) && ilahrs_written(p, n);
     requires \valid(frame);
     requires \separated(frame, p + (0 .. n - 1));
     assigns *frame;

@@ -25,7 +25,7 @@ fi
 mkdir -p "$out"
 # The options every EVA analysis shares, and every WP proof (prove/README.md says why).
 eva=(-eva -eva-precision 3 -eva-split-return auto -eva-split-limit 1000 -eva-warn-undefined-pointer-comparison none -eva-no-print -eva-no-show-progress)
-wp=(-wp -wp-rte -wp-prover qed,z3,cvc4 -wp-timeout "${PROVE_WP_TIMEOUT:-60}" -wp-par 2 -wp-auto wp:bitshift)
+wp=(-wp -wp-rte -wp-no-filter-init -wp-prover qed,z3,cvc4 -wp-timeout "${PROVE_WP_TIMEOUT:-60}" -wp-par 2 -wp-auto wp:bitshift,wp:split)
 
 # frama_c LOG ARGS...: Frama-C with ARGS, its output in LOG, stopped after PROVE_TIMEOUT seconds.
 # timeout(1) runs it in a process group of its own, which a Ctrl-C at the terminal does not reach:
@@ -55,7 +55,7 @@ run_one() {
       replay) cache=(-wp-cache offline -wp-cache-dir "$keep/$name") ;;
       none) ;;
     esac
-    frama_c "$log" -cpp-extra-args="$defines" "$here/$driver" "${wp[@]}" -wp-fct "$1" "${cache[@]}"
+    frama_c "$log" -cpp-extra-args="$defines" "$here/$driver" "${wp[@]}" -wp-fct "$1" -rte-initialized "$1" "${cache[@]}"
     status=$?
     count=$(sed -n 's/^\[wp\] Proved goals: *\([0-9]*\) *\/ *\([0-9]*\).*/\2 \1/p' "$log" | tail -1)
     [ -n "$count" ] && count=$(( ${count% *} - ${count#* } ))

@@ -162,6 +162,18 @@ def test_a_line_s_options_go_to_the_preprocessor_or_to_frama_c(env: dict[str, st
     assert any(x.endswith("generated/c/ilahrs.c") for x in frame)
 
 
+def test_a_wp_line_checks_that_its_functions_read_only_written_bytes(env: dict[str, str], tmp_path: Path) -> None:
+    """Each function a WP line proves gets a goal per read that the byte read was written, and WP
+    keeps the hypotheses that say which were (without them, such goals fail)."""
+    result = run(env, tmp_path, "wp_stream")
+    assert result.returncode == 0, result.stdout + result.stderr
+    a = args(tmp_path)
+    functions = a[a.index("-wp-fct") + 1]
+    assert "ilahrs_stream_next" in functions.split(",")
+    assert a[a.index("-rte-initialized") + 1] == functions
+    assert "-wp-no-filter-init" in a and "-wp-rte" in a
+
+
 @pytest.mark.parametrize(
     ("extra", "args_", "message"),
     [

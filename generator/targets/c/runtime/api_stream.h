@@ -51,7 +51,9 @@ typedef struct ilahrs_stream {
     // bytes held[start .. start + count) lie within the buffer, and those waiting at its front
     // (start 0) are an undecided candidate: shorter than the buffer, a sentence shorter than the
     // longest, a frame whose length field is read shorter than that length, itself within the
-    // longest frame. frame_size() reads the length field as the decoder does.
+    // longest frame (held_ok); and they have been written, as have the other fields, so that no
+    // byte of the state is read before it is written (held_written). frame_size() reads the
+    // length field as the decoder does.
     logic integer ilahrs_frame_size(uint8_t *p) = ILAHRS_FRAME_HEADER_SIZE
         + p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET] + 256 * p[ILAHRS_FRAME_MESSAGE_LENGTH_OFFSET + 1];
     predicate ilahrs_waiting(uint8_t *p, integer n) =
@@ -62,6 +64,14 @@ typedef struct ilahrs_stream {
     predicate ilahrs_held_ok(ilahrs_stream_t *s) =
         s->start + s->count <= ILAHRS_MAX_MESSAGE_SIZE
         && (s->start == 0 && s->count != 0 ==> ilahrs_waiting(&s->held[0], s->count));
+    predicate ilahrs_input_written(uint8_t *p, uint8_t *end) =
+        \forall uint8_t *q; \base_addr(q) == \base_addr(p) && p <= q < end ==> \initialized(q);
+    predicate ilahrs_written(uint8_t *p, integer n) = ilahrs_input_written(p, p + n);
+    predicate ilahrs_state_written(ilahrs_stream_t *s) =
+        \initialized(&s->discarded) && \initialized(&s->strict)
+        && \initialized(&s->start) && \initialized(&s->count);
+    predicate ilahrs_held_written(ilahrs_stream_t *s) =
+        ilahrs_state_written(s) && (s->count != 0 ==> ilahrs_written(&s->held[s->start], s->count));
 */
 
 /** Empty the decoder (`discarded` back to 0, `strict` off). Same as zero-initialising it. */

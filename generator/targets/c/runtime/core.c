@@ -36,6 +36,8 @@ static void copy_forward(uint8_t *dst, const uint8_t *src, size_t n)
     /*@ loop invariant i <= n;
         loop invariant \forall integer k; 0 <= k < i ==> dst[k] == \at(src[k], Pre);
         loop invariant \forall integer k; i <= k < n ==> src[k] == \at(src[k], Pre);
+        loop invariant ilahrs_written(dst, i);
+        loop invariant \forall integer k; i <= k < n ==> \initialized(src + k);
         loop assigns i, dst[0 .. n - 1]; */
     for (i = 0; i < n; i++) {
         OPAQUE(i);
