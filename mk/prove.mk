@@ -18,7 +18,8 @@
 # when missing (tools/need).
 
 PROVE_OUT := $(BUILD)/prove
-PROVE_QUICK ?= pahr_parse wp_stream pahr_build frame_build payload_build wp_frame command_decode frame_parse \
+# (They run in the order of prove/drivers, the longest first.)
+PROVE_QUICK ?= wp_stream wp_frame pahr_parse frame_build payload_build pahr_build command_decode frame_parse \
 	stream_sentence-quick stream_sentence-speed-quick payload_parse
 
 TEST_TARGETS += test-prove
