@@ -1,26 +1,19 @@
 # Proofs over the C binding with Frama-C: EVA, one analysis per decoding and building entry point
 # and per code path, and WP for the frame check and the stream decoder (prove/drivers,
-# prove/README.md).
+# prove/README.md). Every line of prove/drivers, two at a time:
 #
-#   make prove        every line of prove/drivers, two at a time; fails if an analysis has an alarm
-#                     or an unproved goal, or does not finish
+#   make prove        runs the provers and records their results in prove/wp-cache (one per goal,
+#                     named by the digest of the goal as WP generates it from the code as it is),
+#                     to be committed with the change that altered the goals; fails if an
+#                     analysis has an alarm or an unproved goal, or does not finish
 #   make prove-wp     the WP lines alone
-#   make test-prove   PROVE_QUICK, part of `make test`: every decoding and building entry point on
-#                     the size path, the stream decoder's sentence recognition on both, and the two WP
-#                     proofs replayed from prove/wp-cache (the provers' recorded results for the goals
-#                     WP generates from the code as it is; a goal without one fails)
+#   make test-prove   part of `make test`: the same lines, each WP goal left to Z3 or CVC4 taking
+#                     its result from prove/wp-cache (a goal without one fails)
 #
-# `make test` runs the quick lines only: it is within a few minutes of its 30-minute bound, and the
-# whole of `make prove` runs for longer than that (the $PAHR parse and the stream decoder set the
-# pace: prove/README.md). `make prove` and `make prove-wp` run the provers and record their results
-# in prove/wp-cache, to be committed with the change that altered the goals. Frama-C (frama-c-base)
-# and the provers WP uses (z3, cvc4, why3) come from the system's packages, installed with apt
-# when missing (tools/need).
+# Frama-C (frama-c-base) and the provers WP uses (z3, cvc4, why3) come from the system's packages,
+# installed with apt when missing (tools/need).
 
 PROVE_OUT := $(BUILD)/prove
-# (They run in the order of prove/drivers, the longest first.)
-PROVE_QUICK ?= wp_stream wp_frame pahr_parse frame_build payload_build pahr_build command_decode frame_parse \
-	stream_sentence-quick stream_sentence-speed-quick payload_parse
 
 TEST_TARGETS += test-prove
 
@@ -38,7 +31,7 @@ prove: setup-prove generated/c/ilahrs.c generated/c/ilahrs.h
 	prove/run.sh $(PROVE_OUT)
 
 test-prove: setup-prove generated/c/ilahrs.c generated/c/ilahrs.h
-	PROVE_WP_CACHE=replay prove/run.sh $(PROVE_OUT)/quick $(PROVE_QUICK)
+	PROVE_WP_CACHE=replay prove/run.sh $(PROVE_OUT)/test
 
 # The WP proofs alone (prove/drivers: wp_frame, the frame check; wp_stream, the stream decoder).
 .PHONY: prove-wp

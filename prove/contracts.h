@@ -1,6 +1,5 @@
 /* ACSL shared by the proofs: the frame check's contract (proved by prove/wp_frame.c, used by
- * prove/wp_stream.c for the stream decoder's calls), pahr_body()'s (met by the stream decoder's
- * calls: prove/stream_sentence.c), and where the stream decoder's bytes lie (its invariant,
+ * prove/wp_stream.c for the stream decoder's calls), pahr_body()'s (prove/pahr_body.c), and where the stream decoder's bytes lie (its invariant,
  * ilahrs_held_ok(), is in ilahrs.h). */
 #ifndef PROVE_CONTRACTS_H
 #define PROVE_CONTRACTS_H
@@ -24,12 +23,19 @@
             ==> n < ilahrs_frame_size(p) <= ILAHRS_FRAME_MAX_SIZE; */
 static int frame_check(const uint8_t *p, size_t n, ilahrs_frame_t *frame);
 
-/* What the stream decoder's calls of pahr_body() meet (prove/stream_sentence.c shows it, and
- * stream_sentence-quick takes the body from this contract). */
+/* pahr_body(), as ilahrs_pahr_parse() and the stream decoder call it: a sentence of `end` bytes,
+ * the prefix and at least an LF after it, at most the longest. prove/pahr_body.c analyses the body
+ * for every such call, and checks its answer: ILAHRS_OK, or an error kind it reports with a place
+ * (a field, or PAHR_AT_PREFIX, _STAR, _CHECKSUM: at most the field count + 2). The lines of its
+ * callers take the body from this contract (-eva-use-spec pahr_body) and check that each call
+ * meets it. */
 /*@ requires \valid_read(p + (0 .. end - 1));
-    requires 7 <= end; // PAHR_PREFIX_LENGTH + 1: the prefix and an LF, as the stream decoder calls it
+    requires 7 <= end <= ILAHRS_PAHR_MAX_LENGTH; // PAHR_PREFIX_LENGTH + 1: the prefix and an LF
     requires \valid(out);
     assigns *out \from p[0 .. end - 1];
-    assigns \result \from p[0 .. end - 1]; */
+    assigns \result \from p[0 .. end - 1];
+    ensures \result == ILAHRS_OK
+            || ((\result & 0xF) \in {ILAHRS_ERR_MALFORMED, ILAHRS_ERR_OUT_OF_RANGE, ILAHRS_ERR_BAD_CHECKSUM}
+                && \result >> 4 <= ILAHRS_PAHR_FIELD_COUNT + 2); */
 static uint32_t pahr_body(const uint8_t *p, size_t end, ilahrs_pahr_t *out);
 #endif

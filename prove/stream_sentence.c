@@ -1,16 +1,14 @@
 /* The stream decoder's sentence recognition, sentence_candidate() (the part of candidate() that
  * prove/wp_stream.c takes from its contract there): a candidate starting with "$" of any length n
  * and any count `seen` of bytes examined before (0, or up to the longest undecided sentence), its
- * bytes unknown. EVA shows no runtime error in it or in pahr_body() on both code paths, and the
- * assertions check its contract: the answer is NEED_MORE, INVALID or a size within n, and NEED_MORE
- * only for a sentence shorter than the longest. This driver includes ilahrs.c (the helper is
- * static). */
+ * bytes unknown. EVA shows no runtime error in it, and that each call of pahr_body() meets that
+ * function's contract (prove/contracts.h; the body is taken from it, -eva-use-spec pahr_body, and
+ * prove/pahr_body.c analyses it for every call that does), and the assertions check
+ * sentence_candidate()'s own contract: the answer is NEED_MORE, INVALID or a size within n, and
+ * NEED_MORE only for a sentence shorter than the longest. This driver includes ilahrs.c (the
+ * helper is static). */
 #include "input.h"
-#ifdef PROVE_BODY_CONTRACT
-/* stream_sentence-quick (make test): pahr_body() by its contract (-eva-use-spec pahr_body), the
- * body left to pahr_parse and to the full lines. */
 #include "contracts.h"
-#endif
 #include "ilahrs.c"
 
 #ifndef MAX

@@ -4,8 +4,8 @@
  * written (held_written, written; every read checked by -rte-initialized), with every runtime error
  * ruled out (-wp-rte). The contracts are on prototypes of ilahrs.c's static functions, which this
  * file then includes; the loop invariants are in the runtime sources. frame_check() is proved
- * against its contract by prove/wp_frame.c; pahr_body() (in contracts.h too) is free of runtime
- * errors by EVA as the stream decoder calls it (prove/stream_sentence.c). Run by `make prove-wp`. */
+ * against its contract by prove/wp_frame.c; sentence_candidate() by EVA (prove/stream_sentence.c,
+ * prove/pahr_body.c for the pahr_body() it calls). Run by `make prove` (prove/drivers). */
 #include <stdint.h>
 #include "ilahrs.h"
 #include "contracts.h"

@@ -142,16 +142,25 @@ def test_replay_reads_the_kept_results_and_says_what_to_do_without_them(env: dic
 
 
 def test_a_line_s_options_go_to_the_preprocessor_or_to_frama_c(env: dict[str, str], tmp_path: Path) -> None:
-    result = run(env, tmp_path, "stream_sentence-quick")
+    drivers = tmp_path / "drivers"
+    drivers.write_text(
+        "# a comment\n"
+        "defined size  stream_sentence.c 0 -DPROVE_X=1 -Iextra -eva-use-spec pahr_body\n"
+        "defined-speed speed stream_sentence.c 0 -eva-use-spec pahr_body\n"
+        "frame_parse size frame_parse.c 0\n"
+    )
+    env["PROVE_DRIVERS"] = str(drivers)
+    result = run(env, tmp_path, "defined")
     assert result.returncode == 0, result.stdout + result.stderr
     a = args(tmp_path)
     cpp = next(x for x in a if x.startswith("-cpp-extra-args="))
-    assert "-DPROVE_BODY_CONTRACT" in cpp and "__OPTIMIZE__" not in cpp
+    assert "-DPROVE_X=1" in cpp and "-Iextra" in cpp and "__OPTIMIZE__" not in cpp
     assert a[a.index("-eva-use-spec") + 1] == "pahr_body"
+    assert not any(x.startswith("-D") or x == "-Iextra" for x in a)
     # The driver includes ilahrs.c: it is not given a second time.
     assert not any(x.endswith("generated/c/ilahrs.c") for x in a)
 
-    two = run(env, tmp_path, "stream_sentence-speed-quick", "frame_parse")
+    two = run(env, tmp_path, "defined-speed", "frame_parse")
     assert two.returncode == 0
     assert len(two.stdout.splitlines()) == 3  # a line each, then the total
     by_driver = {
@@ -162,6 +171,10 @@ def test_a_line_s_options_go_to_the_preprocessor_or_to_frama_c(env: dict[str, st
     assert "-eva-use-spec" in speed and "-eva-use-spec" not in frame
     assert any(x.endswith("generated/c/ilahrs.c") for x in frame)
 
+    missing = run(env, tmp_path, "pahr_body")
+    assert missing.returncode == 2
+    assert missing.stderr.strip() == f"prove/run.sh: no analysis named pahr_body in {drivers}"
+
 
 def test_a_property_eva_leaves_unproved_counts_as_an_alarm(env: dict[str, str], tmp_path: Path) -> None:
     """A driver's check or a contract's pre- or postcondition that EVA did not prove fails the line
@@ -170,6 +183,7 @@ def test_a_property_eva_leaves_unproved_counts_as_an_alarm(env: dict[str, str], 
     wp_only = (
         "[eva:alarm] generated/c/ilahrs.c:1494: Warning: \n  loop invariant got status unknown.\n"
         "[eva:alarm] /somewhere/generated/c/ilahrs.c:1762: Warning: assertion got status unknown.\n"
+        "[inout] Out (external) for function pahr_body:\n    out\n"
     )
     env["FAKE_EVA"] = wp_only
     ok = run(env, tmp_path, "frame_parse")
@@ -188,6 +202,34 @@ def test_a_property_eva_leaves_unproved_counts_as_an_alarm(env: dict[str, str], 
         "[eva:alarm] prove/contracts.h:37: Warning:   function pahr_body: postcondition got status unknown.",
         "[eva:alarm] prove/stream_sentence.c:31: Warning: check got status invalid.",
     ]
+
+
+def test_what_a_function_taken_by_contract_writes_is_checked(env: dict[str, str], tmp_path: Path) -> None:
+    """writes=F:LOCATIONS in a line (pahr_body's, whose callers' lines take it by its contract and
+    so by its assigns clause, which EVA does not check): the inout analysis runs, and any other
+    location F writes, or no report for F, fails the line."""
+    env["FAKE_EVA"] = "[inout] Out (external) for function pahr_body:\n    out\n"
+    ok = run(env, tmp_path, "pahr_body-speed")
+    assert ok.returncode == 0, ok.stdout + ok.stderr
+    a = args(tmp_path)
+    assert "-out" in a and "-out-external" in a
+    assert not any(x.startswith("writes=") for x in a)
+
+    env["FAKE_EVA"] = "[inout] Out (external) for function pahr_body:\n    out; prove_bytes[0..4095]\n"
+    more = run(env, tmp_path, "pahr_body-speed")
+    assert more.returncode != 0
+    assert "  1 alarms" in more.stdout.splitlines()[0]
+    assert more.stdout.splitlines()[1].strip() == "pahr_body writes out; prove_bytes[0..4095], not only out"
+
+    env["FAKE_EVA"] = ""
+    none = run(env, tmp_path, "pahr_body-speed")
+    assert none.returncode != 0
+    assert none.stdout.splitlines()[1].strip() == "pahr_body writes (not analysed), not only out"
+
+    # A line without writes= runs no inout analysis.
+    calls(tmp_path)
+    run(env, tmp_path, "frame_parse")
+    assert "-out" not in args(tmp_path)
 
 
 def test_a_wp_line_checks_that_its_functions_read_only_written_bytes(env: dict[str, str], tmp_path: Path) -> None:
