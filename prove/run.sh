@@ -3,12 +3,14 @@
 # time: Frama-C EVA for a driver and a build, or WP for the contracts of a file. Writes OUT/NAME.log
 # and prints one line per analysis: its alarms (EVA) or unproved goals (WP), the most it may have
 # (prove/drivers), its time. Fails if an analysis has more than that or did not finish. NAMEs pick
-# lines (default: every one). PROVE_WP_CACHE, for the WP lines: record (the default) runs the
-# provers and, when the line passes, keeps their results in prove/wp-cache/NAME; replay runs none
-# and takes each goal's result from there, failing on a goal it has none for (make test-prove);
-# none runs the provers and keeps nothing. PROVE_WP_CACHE_DIR: where the results are kept
-# (default prove/wp-cache). PROVE_DRIVERS: the file of lines (default prove/drivers; the drivers
-# they name are in prove/).
+# lines (default: every one). PROVE_WP_CACHE, for the WP lines: update (the default, make prove)
+# takes each goal's result from prove/wp-cache/NAME and runs the provers only on the goals it has
+# none for, adding their results there when the line passes; record (make prove-wp) runs the
+# provers on every goal and, when the line passes, makes prove/wp-cache/NAME hold their results and
+# no others; replay runs none, failing on a goal without a result (make test-prove); none runs the
+# provers and keeps nothing. PROVE_WP_CACHE_DIR: where the results are kept (default
+# prove/wp-cache). PROVE_DRIVERS: the file of lines (default prove/drivers; the drivers they name
+# are in prove/).
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
@@ -52,6 +54,11 @@ run_one() {
       # when the line passes (sync_cache).
       record) rm -rf "$out/wp-cache/$name" && mkdir -p "$out/wp-cache/$name"
         cache=(-wp-cache rebuild -wp-cache-dir "$out/wp-cache/$name") ;;
+      # The kept results taken as they are (a goal's file is named by its digest: a result is
+      # only ever found for the very goal it was recorded for), the provers run on the others.
+      update) rm -rf "$out/wp-cache/$name" && mkdir -p "$out/wp-cache/$name"
+        if [ -d "$keep/$name" ]; then cp -Rp "$keep/$name"/. "$out/wp-cache/$name"/; fi
+        cache=(-wp-cache update -wp-cache-dir "$out/wp-cache/$name") ;;
       # The goals WP generates now, looked up in prove/wp-cache; the provers are not run.
       replay) cache=(-wp-cache offline -wp-cache-dir "$keep/$name") ;;
       none) ;;
@@ -96,10 +103,10 @@ run_one() {
       grep '^\[wp\] \[[A-Za-z]*\] Goal .* : \(Unknown\|Failed\|Timeout\)' "$log"; } | sed 's/^/    /'
     if [ "$mode" = replay ] && [ "$count" -gt "$max" ]; then
       echo "    $keep/$name has no proof of these goals: the code or a contract changed since it was recorded; run \`make prove-wp\` and commit prove/wp-cache"
-    elif [ "$mode" = record ] && grep -q 'can not update cache' "$log"; then
+    elif [ "$mode" != replay ] && [ "$mode" != none ] && grep -q 'can not update cache' "$log"; then
       echo "    the provers' results could not be written to $out/wp-cache/$name: $log says why"
       return 1
-    elif [ "$mode" = record ] && [ "$count" -le "$max" ]; then
+    elif [ "$mode" != replay ] && [ "$mode" != none ] && [ "$count" -le "$max" ]; then
       sync_cache "$out/wp-cache/$name" "$keep/$name"
     fi
   else
@@ -124,14 +131,15 @@ writes_check() {
     [ "$found" = "${w#*:}" ] || echo "${w%%:*} writes ${found:-(not analysed)}, not only ${w#*:}"
   done
 }
-# prove/wp-cache/NAME made to hold the results of a passing run (NEW): the goals it no longer has
-# removed, the new ones added, a result kept unless its verdict changed (their times differ from
-# run to run), so that the directory changes only when the proofs do.
+# prove/wp-cache/NAME made to hold the results of a passing run (NEW): the new ones added, a
+# result kept unless its verdict changed (their times differ from run to run), so that the
+# directory changes only when the proofs do; after a record, which ran every goal, the goals it no
+# longer has removed (update cannot tell a result it did not need from one it took).
 sync_cache() {
   local new=$1 old=$2 f g changed=0
   mkdir -p "$old"
   for g in "$old"/*.json; do
-    [ -e "$g" ] && [ ! -e "$new/${g##*/}" ] && rm -f "$g" && changed=1
+    [ "$mode" = record ] && [ -e "$g" ] && [ ! -e "$new/${g##*/}" ] && rm -f "$g" && changed=1
   done
   for f in "$new"/*.json; do
     [ -e "$f" ] || continue
@@ -145,13 +153,13 @@ sync_cache() {
 verdict() { sed -n 's/.*"verdict": *"\([a-z]*\)".*/\1/p' "$1"; }
 export -f frama_c run_one eva_alarms writes_check sync_cache verdict
 keep=${PROVE_WP_CACHE_DIR:-$here/wp-cache}
-mode=${PROVE_WP_CACHE:-record}
+mode=${PROVE_WP_CACHE:-update}
 export out here root FRAMA_C keep mode
 export eva_s="${eva[*]}" wp_s="${wp[*]}"
 
 case "$mode" in
-  record | replay | none) ;;
-  *) echo "prove/run.sh: PROVE_WP_CACHE is record, replay or none, not $mode" >&2; exit 2 ;;
+  update | record | replay | none) ;;
+  *) echo "prove/run.sh: PROVE_WP_CACHE is update, record, replay or none, not $mode" >&2; exit 2 ;;
 esac
 drivers=${PROVE_DRIVERS:-$here/drivers}
 lines=$(grep -v '^\s*\(#\|$\)' "$drivers")

@@ -18,7 +18,8 @@ ROOT = Path(__file__).resolve().parents[2]
 RUN = ROOT / "prove" / "run.sh"
 
 # Answers as Frama-C: EVA's summary line, or WP's with the goals PROVED of 3 proved, each of
-# RESULTS (name=verdict) written to the -wp-cache-dir when the mode writes (rebuild).
+# RESULTS (name=verdict) written to the -wp-cache-dir when the mode writes (rebuild: every one;
+# update: those it does not hold), the names of those it ran the prover for in $FAKE_ARGS/ran.
 FAKE = r"""#!/usr/bin/env bash
 call="$FAKE_ARGS/$(date +%s%N)-$$"
 mkdir -p "$FAKE_ARGS"
@@ -36,8 +37,11 @@ while [ "$#" -gt 0 ]; do
   shift
 done
 if grep -qx -- -wp "$call"; then
-  if [ "$mode" = rebuild ]; then
+  if [ "$mode" = rebuild ] || [ "$mode" = update ]; then
+    : > "$FAKE_ARGS/ran"
     for r in $RESULTS; do
+      [ "$mode" = update ] && [ -e "$dir/${r%%=*}.json" ] && continue
+      echo "${r%%=*}" >> "$FAKE_ARGS/ran"
       printf '{ "prover": "Z3:4.8.12", "verdict": "%s", "time": %s }\n' "${r#*=}" "$RANDOM" > "$dir/${r%%=*}.json"
     done
   fi
@@ -75,7 +79,7 @@ def run(env: dict[str, str], tmp_path: Path, *args: str) -> subprocess.Completed
 
 def calls(tmp_path: Path) -> list[list[str]]:
     """The options of each call to Frama-C since the last, oldest first."""
-    files = sorted(f for f in (tmp_path / "args").iterdir() if f.suffix != ".pid")
+    files = sorted(f for f in (tmp_path / "args").iterdir() if f.suffix != ".pid" and f.name != "ran")
     found = [f.read_text().splitlines() for f in files]
     for f in files:
         f.unlink()
@@ -91,7 +95,13 @@ def kept(tmp_path: Path) -> dict[str, str]:
     return {p.stem: p.read_text() for p in sorted((tmp_path / "kept" / "wp_frame").glob("*.json"))}
 
 
+def ran(tmp_path: Path) -> list[str]:
+    """The goals the last WP call ran a prover for."""
+    return (tmp_path / "args" / "ran").read_text().split()
+
+
 def test_record_keeps_the_results_and_changes_only_what_the_proofs_changed(env: dict[str, str], tmp_path: Path) -> None:
+    env["PROVE_WP_CACHE"] = "record"
     env["RESULTS"] = "a=valid b=valid c=timeout"
     first = run(env, tmp_path, "wp_frame")
     assert first.returncode == 0, first.stdout + first.stderr
@@ -116,7 +126,35 @@ def test_record_keeps_the_results_and_changes_only_what_the_proofs_changed(env: 
     assert '"valid"' in after["c"]
 
 
+def test_update_runs_the_provers_only_on_goals_without_a_kept_result(env: dict[str, str], tmp_path: Path) -> None:
+    """make prove: the kept results stand for their goals; a new goal's is added, none removed
+    (a result update did not look up may still be another goal's: make prove-wp records anew)."""
+    env["PROVE_WP_CACHE"] = "record"
+    env["RESULTS"] = "a=valid b=valid"
+    assert run(env, tmp_path, "wp_frame").returncode == 0
+    calls(tmp_path)
+    before = kept(tmp_path)
+
+    del env["PROVE_WP_CACHE"]  # update, the default
+    env["RESULTS"] = "b=valid c=valid"
+    result = run(env, tmp_path, "wp_frame")
+    assert result.returncode == 0, result.stdout + result.stderr
+    a = args(tmp_path)
+    assert a[a.index("-wp-cache") + 1] == "update"
+    assert a[a.index("-wp-cache-dir") + 1] == str(tmp_path / "out" / "wp-cache" / "wp_frame")
+    assert ran(tmp_path) == ["c"]
+    assert "recorded anew" in result.stdout
+    after = kept(tmp_path)
+    assert sorted(after) == ["a", "b", "c"] and after["b"] == before["b"]
+
+    # Nothing new: the provers run on no goal, and there is nothing to commit.
+    again = run(env, tmp_path, "wp_frame")
+    assert again.returncode == 0 and "recorded anew" not in again.stdout
+    assert ran(tmp_path) == [] and kept(tmp_path) == after
+
+
 def test_a_failing_record_keeps_nothing(env: dict[str, str], tmp_path: Path) -> None:
+    env["PROVE_WP_CACHE"] = "record"
     env["RESULTS"] = "a=valid"
     env["PROVED"] = "2"
     result = run(env, tmp_path, "wp_frame")
@@ -256,7 +294,7 @@ def test_a_wp_line_checks_that_its_functions_read_only_written_bytes(env: dict[s
         (
             {"PROVE_WP_CACHE": "bogus"},
             ["wp_frame"],
-            "prove/run.sh: PROVE_WP_CACHE is record, replay or none, not bogus",
+            "prove/run.sh: PROVE_WP_CACHE is update, record, replay or none, not bogus",
         ),
     ],
 )
