@@ -102,7 +102,7 @@ run_one() {
     { grep -A3 '^\[wp\] \[\(Failed\|Unknown\|Timeout\)\]' "$log"
       grep '^\[wp\] \[[A-Za-z]*\] Goal .* : \(Unknown\|Failed\|Timeout\)' "$log"; } | sed 's/^/    /'
     if [ "$mode" = replay ] && [ "$count" -gt "$max" ]; then
-      echo "    $keep/$name has no proof of these goals: the code or a contract changed since it was recorded; run \`make prove-wp\` and commit prove/wp-cache"
+      echo "    $keep/$name has no proof of these goals: the code or a contract changed since it was recorded; run \`make prove\` (the provers for the goals without a result) and commit prove/wp-cache"
     elif [ "$mode" != replay ] && [ "$mode" != none ] && grep -q 'can not update cache' "$log"; then
       echo "    the provers' results could not be written to $out/wp-cache/$name: $log says why"
       return 1

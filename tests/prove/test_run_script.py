@@ -176,7 +176,10 @@ def test_replay_reads_the_kept_results_and_says_what_to_do_without_them(env: dic
     missing = run(env, tmp_path, "wp_frame")
     assert missing.returncode != 0
     assert "typed_frame_check_assert_rte_mem_access : Unknown" in missing.stdout
-    assert "has no proof of these goals" in missing.stdout and "make prove-wp" in missing.stdout
+    assert (
+        "has no proof of these goals" in missing.stdout
+        and "run `make prove` (the provers for the goals without a result)" in missing.stdout
+    )
 
 
 def test_a_line_s_options_go_to_the_preprocessor_or_to_frama_c(env: dict[str, str], tmp_path: Path) -> None:
