@@ -194,5 +194,7 @@ stop() {
 trap stop INT TERM
 wait "$xargs_pid"
 status=$?
+# xargs answers 123 when a command failed: an analysis over its bound, or one that did not finish.
+[ "$status" -eq 123 ] && status=1
 echo "prove: $(printf '%s\n' "$lines" | wc -l) analyses in $(( $(date +%s) - all_start ))s"
 exit $status
