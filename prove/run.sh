@@ -162,6 +162,10 @@ case "$mode" in
   *) echo "prove/run.sh: PROVE_WP_CACHE is update, record, replay or none, not $mode" >&2; exit 2 ;;
 esac
 drivers=${PROVE_DRIVERS:-$here/drivers}
+if [ ! -f "$drivers" ] || [ ! -r "$drivers" ]; then
+  echo "prove/run.sh: cannot read the lines in $drivers (PROVE_DRIVERS)" >&2
+  exit 2
+fi
 lines=$(grep -v '^\s*\(#\|$\)' "$drivers")
 if [ "$#" -gt 0 ]; then
   pick=$(printf '%s\n' "$@")

@@ -295,6 +295,11 @@ def test_a_wp_line_checks_that_its_functions_read_only_written_bytes(env: dict[s
             "prove/run.sh: no-such-frama-c is not installed; `make prove` installs it (README.md: prerequisites)",
         ),
         (
+            {"PROVE_DRIVERS": "/no/such/drivers"},
+            [],
+            "prove/run.sh: cannot read the lines in /no/such/drivers (PROVE_DRIVERS)",
+        ),
+        (
             {"PROVE_WP_CACHE": "bogus"},
             ["wp_frame"],
             "prove/run.sh: PROVE_WP_CACHE is update, record, replay or none, not bogus",
