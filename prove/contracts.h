@@ -1,5 +1,6 @@
 /* ACSL shared by the proofs: the frame check's contract (proved by prove/wp_frame.c, used by
- * prove/wp_stream.c for the stream decoder's calls), pahr_body()'s (prove/pahr_body.c), and where the stream decoder's bytes lie (its invariant,
+ * prove/wp_stream.c for the stream decoder's calls), pahr_body()'s (analysed by prove/pahr_body.c,
+ * used by the lines of its callers), and where the stream decoder's bytes lie (its invariant,
  * ilahrs_held_ok(), is in ilahrs.h). */
 #ifndef PROVE_CONTRACTS_H
 #define PROVE_CONTRACTS_H
