@@ -8,14 +8,10 @@
 #include "contracts.h"
 #include "ilahrs.c"
 
-#ifndef PROVE_BODY_MAX
-#define PROVE_BODY_MAX ILAHRS_PAHR_MAX_LENGTH
-#endif
-
 int main(void)
 {
     ilahrs_pahr_t out;
-    size_t end = prove_length(PROVE_BODY_MAX);
+    size_t end = prove_length(ILAHRS_PAHR_MAX_LENGTH);
     if (end < PAHR_PREFIX_LENGTH + 1u) {
         return 0;
     }
